@@ -1,0 +1,208 @@
+// The beam model shared by every formulation, the continuum reference solver and the case loader.
+//
+// A model is plain data: named points, members between points (with a reference line, twist and
+// sections), constraints, loads, the analysis and the discretization/solver options. The case loader
+// (cases/loader) builds it from YAML and validates it; formulations read it and never change it.
+//
+// Conventions (DESIGN.md): section matrices are 6×6 in the order [F1, F2, F3, M1, M2, M3] against
+// [ε11, 2ε12, 2ε13, κ1, κ2, κ3], in material axes (e1 along the reference line tangent). The
+// reference frame R^r(s) = [e1 e2 e3] maps material to inertial components.
+//
+// Default material axes: e1 = tangent; e2 = normalize(ẑ × e1) (or ŷ projected when e1 ∥ ẑ),
+// e3 = e1 × e2 — for a beam along +x that is e2 = +y, e3 = +z. A circular arc uses its plane
+// normal as e3 (e2 points toward the centre). `twist` rotates e2, e3 about e1.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace rotbeam {
+
+struct Point {
+    std::string name;
+    Vec3 position = Vec3::Zero();
+};
+
+enum class LineKind { straight, arc, keypoints };
+
+struct ReferenceLine {
+    LineKind kind = LineKind::straight;
+    // arc: the circle's centre; the arc runs from the member's start to its end point the short
+    // way round (< π) unless `normal` fixes the plane/sense (right-handed about normal).
+    Vec3 center = Vec3::Zero();
+    std::optional<Vec3> normal;
+    // keypoints: interior points between start and end, in order (the curve is a natural cubic
+    // spline through start, keypoints, end, re-parameterized by arc length).
+    std::vector<Vec3> keypoints;
+    // Optional hint for e2 (projected onto the plane normal to the tangent); overrides the default.
+    std::optional<Vec3> e2_hint;
+};
+
+struct Section {
+    // Material-axis 6×6 matrices. `compliance` is always set; `stiffness` is set when the
+    // compliance is invertible (it may have zero rows: rigid modes).
+    Mat6 compliance = Mat6::Zero();
+    std::optional<Mat6> stiffness;
+    std::optional<Mat6> mass;  // [m I, m η̃ᵀ; m η̃, ρ] in material axes
+    // Stiffness-proportional damping coefficients μ (seed 000 Eq. 10), zero = undamped.
+    Vec6 damping = Vec6::Zero();
+    bool has_damping() const { return damping.cwiseAbs().maxCoeff() > 0.0; }
+};
+
+struct SectionStation {
+    double s_fraction = 0.0;  // position along the member, s/L in [0, 1]
+    Section section;
+};
+
+struct Member {
+    std::string name;
+    int start_point = -1;  // index into Model::points
+    int end_point = -1;
+    ReferenceLine line;
+    // Twist of the material axes about e1, radians, linear from start to end.
+    double twist_start = 0.0;
+    double twist_end = 0.0;
+    // One station = constant section; several = linear interpolation in s/L.
+    std::vector<SectionStation> sections;
+    int elements = 1;
+};
+
+// Scalar function of time (dynamics) multiplying a load or prescribed motion.
+struct TimeFunction {
+    enum class Kind { constant, ramp, sine, table };
+    Kind kind = Kind::constant;
+    double value = 1.0;          // constant value; amplitude of sine; final value of ramp
+    double start = 0.0;          // ramp start time; sine start time (0 before)
+    double duration = 0.0;       // ramp duration
+    double omega = 0.0;          // sine circular frequency [rad/time]
+    double phase = 0.0;          // sine phase
+    std::vector<double> times;   // table abscissae (increasing)
+    std::vector<double> values;  // table ordinates
+    double operator()(double t) const;
+};
+
+enum class LoadFrame { dead, follower };
+
+struct PointLoad {
+    int point = -1;
+    Vec3 force = Vec3::Zero();
+    Vec3 moment = Vec3::Zero();
+    // dead: fixed inertial direction; follower: the given vector is the load in the reference
+    // configuration and turns with the point's rotation, f = R f0 (R relative to reference).
+    LoadFrame frame = LoadFrame::dead;
+    TimeFunction time;
+};
+
+struct DistributedLoad {
+    int member = -1;
+    Vec3 force = Vec3::Zero();   // per unit reference length, constant along the member
+    Vec3 moment = Vec3::Zero();
+    LoadFrame frame = LoadFrame::dead;
+    TimeFunction time;
+};
+
+struct Constraint {
+    enum class Kind { clamped, prescribed };
+    int point = -1;
+    Kind kind = Kind::clamped;
+    Vec3 displacement = Vec3::Zero();  // prescribed: u = load/time factor × displacement
+    Vec3 rotation = Vec3::Zero();      // prescribed: rotation vector (relative to reference)
+    TimeFunction time;
+};
+
+enum class AnalysisKind { static_, dynamic, modal };
+
+struct StaticSettings {
+    std::vector<double> load_factors;  // reported steps; loads are multiplied by the factor
+    int substeps = 1;                  // initial equal sub-steps between reported factors
+    int max_step_cuts = 12;            // bisections allowed per reported step
+};
+
+struct DynamicSettings {
+    double time_step = 0.0;
+    double end_time = 0.0;
+    double output_interval = 0.0;  // 0 = every step
+    double rho_infinity = 1.0;     // generalized-α spectral radius at infinity
+    std::string integrator;        // formulation-specific name; empty = default
+    Vec3 initial_velocity = Vec3::Zero();
+};
+
+struct ModalSettings {
+    int modes = 5;
+    bool about_static_state = true;  // linearize about the static solution of the loads
+};
+
+struct Analysis {
+    AnalysisKind kind = AnalysisKind::static_;
+    StaticSettings statics;
+    DynamicSettings dynamics;
+    ModalSettings modal;
+};
+
+enum class Quadrature { automatic, reduced, full, gll };
+
+struct Discretization {
+    std::string formulation = "displacement";  // displacement | mixed
+    std::string rotation = "quaternion";       // registry name of the parameterization
+    int order = 1;                             // displacement: element polynomial order p
+    Quadrature quadrature = Quadrature::automatic;
+    int quadrature_points = 0;   // > 0 overrides the rule's point count
+    std::string interpolation = "relative";    // relative | direct
+    std::string update = "multiplicative";     // multiplicative | additive
+    bool rescale = true;
+    std::string mass_rule = "consistent";      // consistent | midpoint | lumped
+};
+
+struct SolverSettings {
+    double residual_tolerance = 1e-12;   // on the scaled residual (force/moment scales below)
+    double increment_tolerance = 1e-12;  // on the scaled Newton increment
+    int max_iterations = 50;
+    bool line_search = true;
+    std::string driver = "newton";       // newton | kinsol
+    double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
+    double length_scale = 0.0;           // 0 = derive from the model (total length)
+};
+
+struct ReferenceValue {
+    std::string id;         // unique within the case
+    std::string quantity;   // displacement | rotation_angle | frequency | ...
+    std::string point;      // for point quantities
+    std::optional<double> load_factor;
+    std::optional<double> time;
+    int mode = 0;           // for frequencies (1-based)
+    std::vector<double> value;
+    std::vector<int> components;  // which components `value` lists (empty: all)
+    double tolerance = 0.0;
+    bool relative = false;  // tolerance relative to |value| (else absolute, case units)
+    bool gated = true;      // false: recorded, not gated (benchmarks.md §1)
+    std::string justification;
+    std::string source;
+    std::map<std::string, std::string> applies_to;  // formulation, elements, order, quadrature, ...
+};
+
+struct Model {
+    std::string name;
+    std::string description;
+    std::string units;  // e.g. "in, lbf" — documentation only
+    std::vector<Point> points;
+    std::vector<Member> members;
+    std::vector<Constraint> constraints;
+    std::vector<PointLoad> point_loads;
+    std::vector<DistributedLoad> distributed_loads;
+    Vec3 gravity = Vec3::Zero();
+    Analysis analysis;
+    Discretization discretization;
+    SolverSettings solver;
+    std::vector<ReferenceValue> references;
+
+    int point_index(const std::string& name) const;  // −1 when absent
+    bool has_follower_loads() const;
+    bool has_damping() const;
+    bool needs_inertia() const { return analysis.kind != AnalysisKind::static_; }
+};
+
+}  // namespace rotbeam

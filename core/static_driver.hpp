@@ -1,0 +1,64 @@
+// The shared static driver: load stepping with automatic step cutting around a damped Newton
+// method whose update is a retraction x ⊕ δ (rotations are composed, not added). Used by both
+// formulations (through StaticProblem only).
+//
+// Convergence (both must hold): max_i |r_i| / residual_scale_i ≤ residual_tolerance and
+// max_i |δ_i| / increment_scale_i ≤ increment_tolerance — or the scaled residual alone falls
+// below residual_tolerance × 1e-3. A step whose Newton fails (max iterations, a non-finite residual,
+// a singular factorization or a parameterization refusing the state) is halved, up to
+// `max_step_cuts` times, starting again from the last converged state.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/model.hpp"
+#include "core/nonlinear_system.hpp"
+
+namespace rotbeam {
+
+enum class SolveStatus { converged, diverged, singular, error };
+const char* to_string(SolveStatus s);
+
+struct NewtonSettings {
+    double residual_tolerance = 1e-12;
+    double increment_tolerance = 1e-12;
+    int max_iterations = 50;
+    bool line_search = true;
+    int max_step_cuts = 12;
+    int substeps = 1;
+};
+
+NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics);
+
+struct NewtonOutcome {
+    bool converged = false;
+    int iterations = 0;
+    double scaled_residual = 0.0;
+    std::string failure;  // why it failed
+    bool singular = false;
+};
+
+// One Newton solve at the current load: the in-house damped Newton along the retraction.
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings);
+
+struct StepRecord {
+    double load_factor = 0.0;
+    int newton_iterations = 0;  // summed over sub-steps and cut attempts that converged
+    int substeps = 0;
+};
+
+struct StaticOutcome {
+    SolveStatus status = SolveStatus::converged;
+    std::string message;
+    std::vector<StepRecord> steps;  // reported (converged) steps
+};
+
+// Follow the load factors; after each reported step converges, `on_step` is called (the problem is
+// at that state).
+StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
+                         const NewtonSettings& settings,
+                         const std::function<void(const StepRecord&)>& on_step);
+
+}  // namespace rotbeam
