@@ -40,9 +40,13 @@ public:
     virtual void evaluate(VecX& residual, SparseMatrix* jacobian) = 0;
     // state ← state ⊕ dx. May throw SingularityError (the state is then unchanged).
     virtual void retract(const Eigen::Ref<const VecX>& dx) = 0;
-    // One checkpoint slot: used by the line search and step cutting.
-    virtual void save_state() = 0;
-    virtual void restore_state() = 0;
+    // Checkpoints: slot kLineSearchSlot is used by the Newton line search, kStepSlot by the
+    // load-step cutting (the last converged state). A system keeps kCheckpointSlots copies.
+    static constexpr int kLineSearchSlot = 0;
+    static constexpr int kStepSlot = 1;
+    static constexpr int kCheckpointSlots = 2;
+    virtual void save_state(int slot) = 0;
+    virtual void restore_state(int slot) = 0;
     // Characteristic scales: r_i / residual_scale_i and dx_i / increment_scale_i are O(1)
     // (forces by a force scale, moments by force × length, displacements by a length, rotations
     // and dimensionless parameters by 1).
