@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ namespace rotbeam {
 
 enum class SolveStatus { converged, diverged, singular, error };
 const char* to_string(SolveStatus s);
+std::ostream& operator<<(std::ostream& os, SolveStatus s);
 
 struct NewtonSettings {
     double residual_tolerance = 1e-12;
@@ -53,6 +55,7 @@ struct StaticOutcome {
     SolveStatus status = SolveStatus::converged;
     std::string message;
     std::vector<StepRecord> steps;  // reported (converged) steps
+    double last_converged_load_factor = 0.0;  // the state the problem is left in
 };
 
 // Follow the load factors; after each reported step converges, `on_step` is called (the problem is

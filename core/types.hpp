@@ -1,7 +1,7 @@
 // Fixed-size Eigen aliases used throughout rotbeam.
 #pragma once
 
-#include <Eigen/Core>
+#include <Eigen/Dense>  // Core + Geometry (cross) + LU (determinant, inverse) + SVD
 
 namespace rotbeam {
 

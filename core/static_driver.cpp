@@ -1,0 +1,239 @@
+#include "core/static_driver.hpp"
+
+#include <Eigen/SparseLU>
+#include <cmath>
+#include <ostream>
+#include <limits>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace rotbeam {
+
+const char* to_string(SolveStatus s) {
+    switch (s) {
+        case SolveStatus::converged: return "converged";
+        case SolveStatus::diverged: return "diverged";
+        case SolveStatus::singular: return "singular";
+        case SolveStatus::error: return "error";
+    }
+    return "error";
+}
+
+std::ostream& operator<<(std::ostream& os, SolveStatus s) { return os << to_string(s); }
+
+NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics) {
+    NewtonSettings s;
+    s.residual_tolerance = solver.residual_tolerance;
+    s.increment_tolerance = solver.increment_tolerance;
+    s.max_iterations = solver.max_iterations;
+    s.line_search = solver.line_search;
+    s.max_step_cuts = statics.max_step_cuts;
+    s.substeps = std::max(1, statics.substeps);
+    return s;
+}
+
+namespace {
+
+// max_i |v_i| / scale_i; +∞ when any entry is not finite.
+double scaled_max_norm(const VecX& v, const VecX& scale) {
+    double m = 0.0;
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+        const double a = std::abs(v[i]) / scale[i];
+        if (!std::isfinite(a)) return std::numeric_limits<double>::infinity();
+        m = std::max(m, a);
+    }
+    return m;
+}
+
+double scaled_merit(const VecX& r, const VecX& scale) {
+    return 0.5 * (r.array() / scale.array()).matrix().squaredNorm();
+}
+
+// Backtracking (Armijo) along the retraction: x ⊕ α δ with α = 1, ½, ¼, … For a Newton direction
+// the directional derivative of the merit ½‖r̂‖² is −‖r̂‖², so sufficient decrease reads
+// m(α) ≤ (1 − 2 c α) m(0). A parameterization refusing x ⊕ α δ counts as a failed trial.
+// Returns the accepted α, or 0 when no trial was accepted (state restored).
+double line_search(NonlinearSystem& system, const VecX& dx, double merit0, const VecX& rscale,
+                   VecX& r_trial, bool& saw_singular) {
+    constexpr double kArmijo = 1e-4;
+    constexpr int kMaxHalvings = 12;
+    system.save_state(NonlinearSystem::kLineSearchSlot);
+    double alpha = 1.0;
+    for (int k = 0; k <= kMaxHalvings; ++k, alpha *= 0.5) {
+        try {
+            system.retract(alpha * dx);
+            system.evaluate(r_trial, nullptr);
+        } catch (const SingularityError&) {
+            saw_singular = true;
+            system.restore_state(NonlinearSystem::kLineSearchSlot);
+            continue;
+        }
+        const double m = scaled_merit(r_trial, rscale);
+        if (std::isfinite(m) && m <= (1.0 - 2.0 * kArmijo * alpha) * merit0) return alpha;
+        system.restore_state(NonlinearSystem::kLineSearchSlot);
+    }
+    return 0.0;
+}
+
+}  // namespace
+
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
+    const int n = system.size();
+    NewtonOutcome out;
+    VecX r(n), r_trial(n), dx(n);
+    SparseMatrix J(n, n);
+    Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+    bool analyzed = false;
+    const VecX& rscale = system.residual_scale();
+    const VecX& xscale = system.increment_scale();
+    double last_increment = std::numeric_limits<double>::infinity();
+    double previous_residual = std::numeric_limits<double>::infinity();
+
+    for (int it = 0;; ++it) {
+        try {
+            system.evaluate(r, &J);
+        } catch (const SingularityError& e) {
+            out.failure = e.what();
+            out.singular = true;
+            return out;
+        }
+        const double rnorm = scaled_max_norm(r, rscale);
+        out.scaled_residual = rnorm;
+        out.iterations = it;
+        if (!std::isfinite(rnorm)) {
+            out.failure = "non-finite residual";
+            return out;
+        }
+        // (a) residual and increment both small; (b) residual far below its tolerance;
+        // (c) round-off floor: the increment is negligible and the residual stopped decreasing.
+        const bool small_increment = last_increment <= settings.increment_tolerance;
+        if ((rnorm <= settings.residual_tolerance && (it == 0 || small_increment)) ||
+            rnorm <= 1e-3 * settings.residual_tolerance ||
+            (small_increment && rnorm >= 0.5 * previous_residual &&
+             rnorm <= 1e4 * settings.residual_tolerance)) {
+            out.converged = true;
+            return out;
+        }
+        if (it >= settings.max_iterations) {
+            std::ostringstream s;
+            s << "no convergence in " << settings.max_iterations
+              << " Newton iterations (scaled residual " << rnorm << ")";
+            out.failure = s.str();
+            return out;
+        }
+        if (!analyzed) {
+            lu.analyzePattern(J);
+            analyzed = true;
+        }
+        lu.factorize(J);
+        if (lu.info() != Eigen::Success) {
+            out.failure = "singular tangent matrix";
+            return out;
+        }
+        dx = -lu.solve(r);
+        if (!dx.allFinite()) {
+            out.failure = "non-finite Newton increment";
+            return out;
+        }
+        double alpha = 1.0;
+        if (settings.line_search) {
+            bool saw_singular = false;
+            alpha = line_search(system, dx, scaled_merit(r, rscale), rscale, r_trial, saw_singular);
+            if (alpha == 0.0) {
+                out.failure = saw_singular ? "every line-search trial was refused by the "
+                                             "parameterization (singular)"
+                                           : "line search found no decrease";
+                out.singular = saw_singular;
+                out.iterations = it + 1;
+                return out;
+            }
+        } else {
+            try {
+                system.retract(dx);
+            } catch (const SingularityError& e) {
+                out.failure = e.what();
+                out.singular = true;
+                return out;
+            }
+        }
+        previous_residual = rnorm;
+        last_increment = alpha * scaled_max_norm(dx, xscale);
+    }
+}
+
+namespace {
+
+std::string failure_message(const char* what, size_t step, double target, double lambda,
+                            double converged, int cuts, const NewtonOutcome& last,
+                            const StaticProblem& problem) {
+    std::ostringstream s;
+    s.precision(6);
+    s << what << " at load step " << step + 1 << " (target load factor " << target
+      << "): Newton failed at load factor " << lambda << " after " << cuts
+      << " step cuts (" << last.failure << "); last converged load factor " << converged;
+    const std::string state = problem.describe_state();
+    if (!state.empty()) s << "; " << state;
+    return s.str();
+}
+
+}  // namespace
+
+StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
+                         const NewtonSettings& settings,
+                         const std::function<void(const StepRecord&)>& on_step) {
+    StaticOutcome outcome;
+    double lambda = 0.0;
+    problem.set_load_factor(lambda);
+    for (size_t step = 0; step < load_factors.size(); ++step) {
+        const double target = load_factors[step];
+        const double span = target - lambda;
+        const double h_max = span / settings.substeps;
+        double h = h_max;
+        StepRecord record;
+        record.load_factor = target;
+        int cuts = 0;
+        int successes_since_cut = 0;
+        NewtonOutcome last;
+        problem.save_state(NonlinearSystem::kStepSlot);
+        while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
+            const double trial = (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12))
+                                     ? target
+                                     : lambda + h;
+            problem.set_load_factor(trial);
+            last = solve_newton(problem, settings);
+            if (last.converged) {
+                lambda = trial;
+                record.newton_iterations += last.iterations;
+                ++record.substeps;
+                problem.save_state(NonlinearSystem::kStepSlot);
+                // After two clean sub-steps, try a longer one again (never beyond the
+                // initial sub-step).
+                if (++successes_since_cut >= 2 && std::abs(2.0 * h) <= std::abs(h_max)) {
+                    h *= 2.0;
+                    successes_since_cut = 0;
+                }
+                continue;
+            }
+            problem.restore_state(NonlinearSystem::kStepSlot);
+            problem.set_load_factor(lambda);
+            if (++cuts > settings.max_step_cuts) {
+                const bool singular = last.singular;
+                outcome.status = singular ? SolveStatus::singular : SolveStatus::diverged;
+                outcome.last_converged_load_factor = lambda;
+                outcome.message = failure_message(singular ? "singular" : "diverged", step,
+                                                  target, trial, lambda, cuts - 1, last, problem);
+                return outcome;
+            }
+            h *= 0.5;
+            successes_since_cut = 0;
+        }
+        outcome.steps.push_back(record);
+        if (on_step) on_step(record);
+    }
+    outcome.last_converged_load_factor = lambda;
+    outcome.message = "all load steps converged";
+    return outcome;
+}
+
+}  // namespace rotbeam

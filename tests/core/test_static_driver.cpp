@@ -1,0 +1,131 @@
+// The shared static driver on small problems whose behaviour is known in closed form: convergence
+// rate, step cutting, and truthful statuses (diverged, singular) with the step in the message.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <functional>
+
+#include "core/errors.hpp"
+#include "core/static_driver.hpp"
+
+using namespace rotbeam;
+
+namespace {
+
+// Two unknowns (x, y): r = (g(x) − λ, y − x²), with g chosen per test. The retraction is additive
+// but refuses |x| ≥ x_limit (a stand-in for a parameterization's singular angle).
+class ToyProblem : public StaticProblem {
+public:
+    ToyProblem(std::function<double(double)> g, std::function<double(double)> dg,
+               double x_limit = 1e300)
+        : g_(std::move(g)), dg_(std::move(dg)), x_limit_(x_limit) {
+        scale_ = VecX::Ones(2);
+        pattern_.resize(2, 2);
+        pattern_.insert(0, 0) = 1.0;
+        pattern_.insert(1, 0) = 1.0;
+        pattern_.insert(1, 1) = 1.0;
+        pattern_.makeCompressed();
+    }
+    int size() const override { return 2; }
+    void set_load_factor(double lambda) override { lambda_ = lambda; }
+    void evaluate(VecX& r, SparseMatrix* J) override {
+        r.resize(2);
+        r << g_(x_[0]) - lambda_, x_[1] - x_[0] * x_[0];
+        if (J) {
+            *J = pattern_;
+            J->coeffRef(0, 0) = dg_(x_[0]);
+            J->coeffRef(1, 0) = -2.0 * x_[0];
+            J->coeffRef(1, 1) = 1.0;
+        }
+    }
+    void retract(const Eigen::Ref<const VecX>& dx) override {
+        const double x = x_[0] + dx[0];
+        if (std::abs(x) >= x_limit_) throw SingularityError("toy", "retract", x);
+        x_ += dx;
+    }
+    void save_state(int slot) override { saved_[slot] = x_; }
+    void restore_state(int slot) override { x_ = saved_[slot]; }
+    const VecX& residual_scale() const override { return scale_; }
+    const VecX& increment_scale() const override { return scale_; }
+    PointState point_state(int) const override { return {}; }
+    AssemblyCounters counters() const override { return {}; }
+    std::string describe_state() const override { return "x = " + std::to_string(x_[0]); }
+
+    Eigen::Vector2d x_ = Eigen::Vector2d::Zero();
+
+private:
+    std::function<double(double)> g_, dg_;
+    double x_limit_;
+    double lambda_ = 0.0;
+    VecX scale_;
+    SparseMatrix pattern_;
+    Eigen::Vector2d saved_[kCheckpointSlots];
+};
+
+NewtonSettings tight() {
+    NewtonSettings s;
+    s.residual_tolerance = 1e-12;
+    s.increment_tolerance = 1e-12;
+    return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(static_driver)
+
+BOOST_AUTO_TEST_CASE(newton_converges_quadratically_on_a_smooth_problem) {
+    // g = x + x³: Newton from 0 to λ = 2 (root x = 1) takes a handful of iterations.
+    ToyProblem p([](double x) { return x + x * x * x; }, [](double x) { return 1 + 3 * x * x; });
+    p.set_load_factor(2.0);
+    const NewtonOutcome o = solve_newton(p, tight());
+    BOOST_TEST(o.converged);
+    BOOST_TEST(std::abs(p.x_[0] - 1.0) < 1e-14);
+    BOOST_TEST(std::abs(p.x_[1] - 1.0) < 1e-14);
+    BOOST_TEST(o.iterations <= 8);
+}
+
+BOOST_AUTO_TEST_CASE(step_cutting_rescues_a_step_newton_cannot_take_at_once) {
+    // g = atan(x − 5) + atan 5 (g(0) = 0): from x = 0 the tangent is nearly flat (1/26), so a
+    // full Newton step to x = 10 overshoots and diverges; small sub-steps converge.
+    ToyProblem p([](double x) { return std::atan(x - 5.0) + std::atan(5.0); },
+                 [](double x) { return 1.0 / (1.0 + (x - 5.0) * (x - 5.0)); });
+    NewtonSettings s = tight();
+    s.line_search = false;
+    s.max_iterations = 30;
+    const double target = 2.0 * std::atan(5.0);
+    int calls = 0;
+    const StaticOutcome o = run_static(p, {target}, s, [&](const StepRecord&) { ++calls; });
+    BOOST_TEST(o.status == SolveStatus::converged);
+    BOOST_TEST(calls == 1);
+    BOOST_TEST(o.steps.at(0).substeps > 1);
+    BOOST_TEST(std::abs(p.x_[0] - 10.0) < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(no_solution_gives_diverged_with_step_and_load_factor) {
+    // g = sin: no root beyond λ = 1. Steps 0.5 and 0.9 converge, 1.5 cannot.
+    ToyProblem p([](double x) { return std::sin(x); }, [](double x) { return std::cos(x); });
+    NewtonSettings s = tight();
+    s.max_step_cuts = 6;
+    const StaticOutcome o = run_static(p, {0.5, 0.9, 1.5}, s, nullptr);
+    BOOST_TEST(o.status == SolveStatus::diverged);
+    BOOST_TEST(o.steps.size() == 2u);
+    BOOST_TEST(o.message.find("load step 3") != std::string::npos, o.message);
+    BOOST_TEST(o.message.find("x = ") != std::string::npos, o.message);
+    // The state is the last converged sub-step (between 0.9 and the fold at 1), not garbage.
+    BOOST_TEST(o.last_converged_load_factor > 0.9);
+    BOOST_TEST(o.last_converged_load_factor <= 1.0);
+    BOOST_TEST(std::abs(std::sin(p.x_[0]) - o.last_converged_load_factor) < 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(a_refusing_retraction_gives_status_singular) {
+    // g = x, but the retraction refuses |x| ≥ 1.2: λ = 1.5 cannot be reached.
+    ToyProblem p([](double x) { return x; }, [](double) { return 1.0; }, 1.2);
+    NewtonSettings s = tight();
+    s.max_step_cuts = 5;
+    const StaticOutcome o = run_static(p, {1.0, 1.5}, s, nullptr);
+    BOOST_TEST(o.status == SolveStatus::singular);
+    BOOST_TEST(o.steps.size() == 1u);
+    BOOST_TEST(o.message.find("singular at load step 2") != std::string::npos, o.message);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
