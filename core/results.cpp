@@ -1,0 +1,95 @@
+#include "core/results.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "core/errors.hpp"
+#include "core/so3.hpp"
+
+namespace rotbeam {
+
+Vec3 RotationUnwrapper::update(size_t i, const Mat3& R) {
+    previous_.at(i) = so3::unwrap_rotation_vector(so3::log_map(R), previous_[i]);
+    return previous_[i];
+}
+
+namespace {
+nlohmann::json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+}  // namespace
+
+nlohmann::json point_json(const PointState& state, const Vec3& unwrapped_rotation_vector) {
+    nlohmann::json R = nlohmann::json::array();
+    for (int r = 0; r < 3; ++r) {
+        R.push_back({state.rotation(r, 0), state.rotation(r, 1), state.rotation(r, 2)});
+    }
+    return {{"displacement", vec_json(state.displacement)},
+            {"rotation_matrix", R},
+            {"rotation_vector", vec_json(so3::log_map(state.rotation))},
+            {"rotation_angle", unwrapped_rotation_vector.norm()}};
+}
+
+nlohmann::json step_json(const Model& model, std::optional<double> load_factor,
+                         std::optional<double> time, int newton_iterations,
+                         const std::vector<PointState>& states, RotationUnwrapper& unwrapper) {
+    nlohmann::json step;
+    if (load_factor) step["load_factor"] = *load_factor;
+    if (time) step["time"] = *time;
+    step["newton_iterations"] = newton_iterations;
+    nlohmann::json points = nlohmann::json::object();
+    for (size_t i = 0; i < model.points.size() && i < states.size(); ++i) {
+        points[model.points[i].name] = point_json(states[i], unwrapper.update(i, states[i].rotation));
+    }
+    step["points"] = points;
+    return step;
+}
+
+nlohmann::json counters_json(const AssemblyCounters& c) {
+    return {{"residual_evaluations", c.residual_evaluations},
+            {"jacobian_evaluations", c.jacobian_evaluations},
+            {"elastic_terms", c.elastic_terms},
+            {"inertial_terms", c.inertial_terms},
+            {"damping_terms", c.damping_terms},
+            {"follower_stiffness", c.follower_stiffness},
+            {"distributed_load_terms", c.distributed_load_terms},
+            {"gravity_terms", c.gravity_terms}};
+}
+
+bool all_finite(const nlohmann::json& j) {
+    if (j.is_number_float()) return std::isfinite(j.get<double>());
+    if (j.is_array() || j.is_object()) {
+        for (const auto& item : j) {
+            if (!all_finite(item)) return false;
+        }
+    }
+    return true;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    if (target.has_parent_path()) {
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) throw InputError(path + ": cannot create directory: " + ec.message());
+    }
+    const fs::path temporary =
+        target.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) throw InputError(path + ": cannot write result file");
+        out << text;
+        out.flush();
+        if (!out) throw InputError(path + ": write failed");
+    }
+    std::error_code ec;
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        throw InputError(path + ": cannot move result file into place");
+    }
+}
+
+}  // namespace rotbeam

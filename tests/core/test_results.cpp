@@ -1,0 +1,60 @@
+// Result schema helpers: unwrapped angles, NaN detection, atomic files.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "core/results.hpp"
+#include "core/so3.hpp"
+
+using namespace rotbeam;
+
+BOOST_AUTO_TEST_SUITE(results)
+
+BOOST_AUTO_TEST_CASE(a_full_roll_up_reports_two_pi_not_zero) {
+    Model model;
+    model.points = {{"root", Vec3::Zero()}, {"tip", Vec3(12, 0, 0)}};
+    RotationUnwrapper unwrapper(2);
+    nlohmann::json last;
+    for (int k = 1; k <= 10; ++k) {
+        const double phi = 2.0 * kPi * k / 10.0;
+        std::vector<PointState> states(2);
+        states[1].rotation = so3::exp_map(Vec3(0, -phi, 0));
+        last = step_json(model, phi / kPi, std::nullopt, 3, states, unwrapper);
+    }
+    BOOST_TEST(std::abs(last["points"]["tip"]["rotation_angle"].get<double>() - 2.0 * kPi) < 1e-12);
+    // The principal rotation vector of a full turn is the identity (round-off of sin 2π).
+    BOOST_TEST(std::abs(last["points"]["tip"]["rotation_vector"][1].get<double>()) < 1e-15);
+    BOOST_TEST(last["points"]["root"]["rotation_angle"].get<double>() == 0.0);
+    BOOST_TEST(last["load_factor"].get<double>() == 2.0);
+}
+
+BOOST_AUTO_TEST_CASE(all_finite_detects_nan_anywhere) {
+    nlohmann::json j = {{"a", 1.0}, {"b", {1.0, 2.0, {{"c", 3.0}}}}};
+    BOOST_TEST(all_finite(j));
+    j["b"][2]["c"] = std::nan("");
+    BOOST_TEST(!all_finite(j));
+}
+
+BOOST_AUTO_TEST_CASE(atomic_write_replaces_the_file_and_leaves_no_temporary) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "rotbeam_results_test";
+    fs::remove_all(dir);
+    const std::string path = (dir / "sub" / "r.json").string();
+    write_file_atomically(path, "first");
+    write_file_atomically(path, "second");
+    std::ifstream in(path);
+    std::string text;
+    in >> text;
+    BOOST_TEST(text == "second");
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir / "sub")) {
+        (void)e;
+        ++files;
+    }
+    BOOST_TEST(files == 1);
+    fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
