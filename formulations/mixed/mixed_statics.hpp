@@ -1,0 +1,83 @@
+// The mixed GEBT formulation for statics (seed 002 §III, Eqs. 16–56; Yu & Blair, Wang & Yu,
+// GXBeam), generic over a three-parameter rotation parameterization. Unknowns, equations and
+// numbering: formulations/mixed/mixed_layout.hpp; element equations: mixed_element.hpp; theory
+// note: docs/mixed-formulation.md.
+//
+// The update is additive (retract(dx) = x + dx): the rotation unknowns are the parameters of the
+// rotation relative to the reference configuration, used in one chart throughout. The Jacobian's
+// sparsity pattern is fixed at construction; evaluate() allocates nothing after its first call.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/model.hpp"
+#include "core/nonlinear_system.hpp"
+#include "formulations/mixed/mixed_element.hpp"
+#include "formulations/mixed/mixed_layout.hpp"
+#include "parameterizations/concept.hpp"
+
+namespace rotbeam::form {
+
+// Section resultants of one element in inertial components (A F, A M) at its mid-length.
+struct MixedElementResultants {
+    int member = -1;
+    double s_mid = 0.0;
+    Vec3 force = Vec3::Zero();
+    Vec3 moment = Vec3::Zero();
+};
+
+template <param::RotationParameterization P>
+class MixedStatics : public StaticProblem {
+public:
+    explicit MixedStatics(const Model& model);
+
+    int size() const override { return layout_.size(); }
+    void evaluate(VecX& residual, SparseMatrix* jacobian) override;
+    void retract(const Eigen::Ref<const VecX>& dx) override { x_ += dx; }
+    void save_state(int slot) override { saved_[static_cast<std::size_t>(slot)] = x_; }
+    void restore_state(int slot) override { x_ = saved_[static_cast<std::size_t>(slot)]; }
+    const VecX& residual_scale() const override { return residual_scale_; }
+    const VecX& increment_scale() const override { return increment_scale_; }
+    bool additive() const override { return true; }
+    VecX state_vector() const override { return x_; }
+    void set_state_vector(const Eigen::Ref<const VecX>& x) override { x_ = x; }
+    std::string describe_state() const override;
+
+    void set_load_factor(double lambda) override { lambda_ = lambda; }
+    PointState point_state(int point_index) const override;
+    AssemblyCounters counters() const override { return counters_; }
+    double max_rotation_angle() const override;
+
+    const MixedLayout& layout() const { return layout_; }
+    MixedElementState element_state(int e) const;
+    std::vector<MixedElementResultants> resultants() const;
+
+private:
+    // Given û, ĉ of a supported node at the current load factor.
+    void supported_motion(int node, Vec3& u_hat, Vec3& c_hat) const;
+    void node_motion(int node, Vec3& u_hat, Vec3& c_hat) const;
+    void add_point_loads(VecX& residual, SparseMatrix* jacobian) const;
+    // J(r0:, c0:) += b for a block inside the fixed pattern (binary search, no allocation).
+    template <class Derived>
+    static void add_block(SparseMatrix& J, int r0, int c0, const Eigen::MatrixBase<Derived>& b) {
+        for (Eigen::Index j = 0; j < b.cols(); ++j) {
+            for (Eigen::Index i = 0; i < b.rows(); ++i) {
+                J.coeffRef(r0 + static_cast<int>(i), c0 + static_cast<int>(j)) += b(i, j);
+            }
+        }
+    }
+
+    Model model_;  // a copy: the caller's model may go out of scope
+    MixedLayout layout_;
+    VecX x_;
+    std::array<VecX, kCheckpointSlots> saved_;
+    VecX residual_scale_;
+    VecX increment_scale_;
+    SparseMatrix pattern_;
+    double lambda_ = 0.0;
+    AssemblyCounters counters_;
+    MixedElementResult element_result_;
+};
+
+}  // namespace rotbeam::form
