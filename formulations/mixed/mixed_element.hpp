@@ -69,10 +69,10 @@ void mixed_element_statics(const MixedElement& el, const MixedElementState& x, d
     const Vec3 stretch = h * (A * e) - 0.5 * el.chord;
     const Vec3 twist = h * (Hinv * Cab_kappa);
 
-    out.fu_minus = AF - f_load;
-    out.fu_plus = -AF - f_load;
-    out.fpsi_minus = AM - moment_arm - m_load;
-    out.fpsi_plus = -AM - moment_arm - m_load;
+    out.fu_minus = -AF - f_load;
+    out.fu_plus = AF - f_load;
+    out.fpsi_minus = -AM - moment_arm - m_load;
+    out.fpsi_plus = AM - moment_arm - m_load;
     out.kinematic << x.u - stretch, x.c - twist, -x.u - stretch, -x.c - twist;
     if (!with_jacobian) return;
 
@@ -92,7 +92,7 @@ void mixed_element_statics(const MixedElement& el, const MixedElementState& x, d
     const Mat3 darm_dM = h * A * Ftil * S12;
 
     for (int side = 0; side < 2; ++side) {
-        const double s = side == 0 ? 1.0 : -1.0;  // f^− carries +A F, f^+ carries −A F
+        const double s = side == 0 ? -1.0 : 1.0;  // f^− carries −A F, f^+ carries +A F
         Eigen::Matrix<double, 6, 9>& J = side == 0 ? out.J_minus : out.J_plus;
         J.block<3, 3>(0, 0) = s * dAF_dc + dload_dc;
         J.block<3, 3>(0, 3) = s * A;
