@@ -1,0 +1,111 @@
+// Static analysis with the displacement-based GEBT formulation (seed 000; Kynema, BeamDyn):
+// Legendre spectral finite elements (mesh.hpp), nodal rotations stored in the parameterization P
+// and updated by composing the spatial increment, p ← exp(δψ) ⊗ p (the retraction), `direct`
+// rotation interpolation (interpolate_rotation.hpp), and the exact consistent Jacobian of the
+// residual through that retraction.
+//
+// Unknowns: per unconstrained node [δu; δψ] (6). Residual rows per node: [force; moment],
+//   r_a = Σ_q w_q (N_a′ F^E1 + N_a F^E2 − N_a f_ext) − (point loads at the node),
+// (seed 000 Eq. 9 in weak form, statics: no F^I, no damping). Loads: dead or follower point and
+// distributed loads, gravity (with the centre-of-mass offset moment); all multiplied by the load
+// factor λ. Follower loads f = R f0 turn with the (interpolated) relative rotation and add the
+// load stiffness (f0 × ...) — assembled only when such loads exist (AssemblyCounters).
+//
+// Evaluation allocates nothing after the first call: every buffer is sized in the constructor and
+// the Jacobian's sparsity pattern is fixed (the value positions of every element block are
+// precomputed).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/model.hpp"
+#include "core/nonlinear_system.hpp"
+#include "formulations/displacement/interpolate_rotation.hpp"
+#include "formulations/displacement/mesh.hpp"
+#include "parameterizations/concept.hpp"
+#include "parameterizations/quaternion.hpp"
+
+namespace rotbeam::form {
+
+template <param::RotationParameterization P>
+class DisplacementStatics : public StaticProblem {
+public:
+    using Params = param::Params<P::kSize>;
+
+    explicit DisplacementStatics(const Model& model);
+
+    int size() const override { return mesh_.unknowns; }
+    void evaluate(VecX& residual, SparseMatrix* jacobian) override;
+    void retract(const Eigen::Ref<const VecX>& dx) override;
+    void save_state(int slot) override;
+    void restore_state(int slot) override;
+    const VecX& residual_scale() const override { return residual_scale_; }
+    const VecX& increment_scale() const override { return increment_scale_; }
+    std::string describe_state() const override;
+
+    void set_load_factor(double lambda) override;
+    PointState point_state(int point_index) const override;
+    AssemblyCounters counters() const override { return counters_; }
+    double max_rotation_angle() const override;
+
+    const Mesh& mesh() const { return mesh_; }
+    // Nodal state (relative to the reference configuration), for tests and output.
+    const Vec3& node_displacement(int node) const { return u_[node]; }
+    const Params& node_rotation(int node) const { return p_[node]; }
+    double force_scale() const { return force_scale_; }
+    double length_scale() const { return length_scale_; }
+
+private:
+    struct NodeLoad {
+        int node = -1;
+        Vec3 force = Vec3::Zero();
+        Vec3 moment = Vec3::Zero();
+        bool follower = false;
+    };
+
+    void build_pattern();
+    void compute_scales(const Model& model);
+    void gather_element(const MeshElement& e, bool jacobian);
+    void assemble_element(int element, VecX& r, SparseMatrix* J);
+    // External distributed loads and gravity at one quadrature point: the force/moment density
+    // and its derivative with respect to the point's δψ.
+    void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
+                          bool jacobian, Vec6& f, Eigen::Matrix<double, 6, 3>& df_dpsi);
+    void assemble_point_loads(VecX& r, SparseMatrix* J);
+    void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
+
+    Model model_;
+    Mesh mesh_;
+    std::vector<NodeLoad> point_loads_;
+    double lambda_ = 0.0;
+    double force_scale_ = 1.0;
+    double length_scale_ = 1.0;
+    VecX residual_scale_;
+    VecX increment_scale_;
+
+    std::vector<Vec3> u_;
+    std::vector<Params> p_;
+    std::array<std::vector<Vec3>, kCheckpointSlots> saved_u_;
+    std::array<std::vector<Params>, kCheckpointSlots> saved_p_;
+    std::vector<Params> p_trial_;
+
+    SparseMatrix pattern_;
+    std::vector<std::vector<int>> block_index_;  // per element: (a·nn + b)·6 + c → value index
+    std::vector<int> diagonal_index_;            // per node: 6 value indices of its diagonal block
+
+    // Per-element workspace (sized for p+1 nodes).
+    std::vector<Params> pe_;
+    std::vector<Vec3> ue_;
+    std::vector<param::TangentInverse<P::kSize>> Me_;
+    std::vector<Mat3> A_;
+    std::vector<Mat6> D_;
+    std::vector<Eigen::Matrix<double, 3, 6>> E_;
+
+    AssemblyCounters counters_;
+};
+
+// Instantiated in displacement_statics.cpp.
+extern template class DisplacementStatics<param::Quaternion>;
+
+}  // namespace rotbeam::form

@@ -1,0 +1,182 @@
+// DisplacementStatics<P>: residual and exact Jacobian assembly. Included only by
+// displacement_statics.cpp. The quadrature-point work is the kernel chain
+// interpolate_rotation → calculate_strain → rotate_section → calculate_elastic_forces →
+// calculate_stiffness_blocks; this file only scatters the results with the nodal maps.
+#pragma once
+
+#include <algorithm>
+
+#include "core/so3.hpp"
+#include "formulations/displacement/calculate_elastic_forces.hpp"
+#include "formulations/displacement/calculate_stiffness_blocks.hpp"
+#include "formulations/displacement/calculate_strain.hpp"
+#include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/displacement/rotate_section.hpp"
+
+namespace rotbeam::form {
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::evaluate(VecX& r, SparseMatrix* J) {
+    const int n = mesh_.unknowns;
+    if (r.size() != n) r.resize(n);
+    r.setZero();
+    ++counters_.residual_evaluations;
+    if (J != nullptr) {
+        ++counters_.jacobian_evaluations;
+        if (J->rows() != n || J->cols() != n || J->nonZeros() != pattern_.nonZeros() ||
+            !J->isCompressed()) {
+            *J = pattern_;
+        }
+        std::fill(J->valuePtr(), J->valuePtr() + J->nonZeros(), 0.0);
+    }
+    for (int k = 0; k < static_cast<int>(mesh_.elements.size()); ++k) assemble_element(k, r, J);
+    assemble_point_loads(r, J);
+}
+
+// Nodal parameters aligned to the element's first node (σ_j), displacements, and M_j = σ_j H_s⁺.
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::gather_element(const MeshElement& e, bool jacobian) {
+    const Params& p0 = p_[e.nodes[0]];
+    for (size_t j = 0; j < e.nodes.size(); ++j) {
+        const Params& p = p_[e.nodes[j]];
+        const double sigma = chart_sign<P>(p, p0);
+        pe_[j] = sigma * p;
+        ue_[j] = u_[e.nodes[j]];
+        if (jacobian) Me_[j] = sigma * P::spatial_tangent_inverse(p);
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::distributed_load(const MeshElement& e, const QuadraturePoint& qp,
+                                              const Mat3& R, bool jacobian, Vec6& f,
+                                              Eigen::Matrix<double, 6, 3>& df_dpsi) {
+    f.setZero();
+    df_dpsi.setZero();
+    for (const DistributedLoad& l : model_.distributed_loads) {
+        if (l.member != e.member) continue;
+        ++counters_.distributed_load_terms;
+        if (l.frame == LoadFrame::dead) {
+            f.head<3>() += lambda_ * l.force;
+            f.tail<3>() += lambda_ * l.moment;
+            continue;
+        }
+        // f = λ R f0: δf = δψ × f = −f̃ δψ.
+        const Vec3 fr = lambda_ * (R * l.force);
+        const Vec3 mr = lambda_ * (R * l.moment);
+        f.head<3>() += fr;
+        f.tail<3>() += mr;
+        if (jacobian) {
+            ++counters_.follower_stiffness;
+            df_dpsi.topRows<3>() -= so3::skew(fr);
+            df_dpsi.bottomRows<3>() -= so3::skew(mr);
+        }
+    }
+    if (model_.gravity.squaredNorm() > 0.0) {
+        ++counters_.gravity_terms;
+        // Weight m g at the centre of mass η = R R^r η*: moment m η × g, δ(η × g) = g̃ η̃ δψ.
+        const Vec3 eta = R * (qp.Rr * qp.eta_star);
+        f.head<3>() += lambda_ * qp.mass * model_.gravity;
+        f.tail<3>() += lambda_ * qp.mass * eta.cross(model_.gravity);
+        if (jacobian) {
+            df_dpsi.bottomRows<3>() +=
+                lambda_ * qp.mass * so3::skew(model_.gravity) * so3::skew(eta);
+        }
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
+    const MeshElement& e = mesh_.elements[k];
+    const int nn = static_cast<int>(e.nodes.size());
+    const bool jac = J != nullptr;
+    const bool loads = !model_.distributed_loads.empty() || model_.gravity.squaredNorm() > 0.0;
+    gather_element(e, jac);
+    InterpolatedRotation<P> rot;
+    Vec6 f_ext = Vec6::Zero();
+    Eigen::Matrix<double, 6, 3> df_ext = Eigen::Matrix<double, 6, 3>::Zero();
+    for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
+        const QuadraturePoint& qp = e.qp[q];
+        const double* N = e.N.col(q).data();
+        const double* dN = e.dN.col(q).data();
+        interpolate_rotation<P>(pe_.data(), N, dN, nn, rot);
+        Vec3 up = Vec3::Zero();
+        for (int j = 0; j < nn; ++j) up += dN[j] * ue_[j];
+        const Vec3 xp = qp.x0_prime + up;
+        const Vec6 strain = calculate_strain(qp.x0_prime, up, rot.R, rot.kappa);
+        const Mat6 C = rotate_section(qp.C_star, rot.R * qp.Rr);
+        const ElasticForces F = calculate_elastic_forces(C, strain, xp);
+        ++counters_.elastic_terms;
+        if (loads) distributed_load(e, qp, rot.R, jac, f_ext, df_ext);
+        for (int a = 0; a < nn; ++a) {
+            const int d = mesh_.nodes[e.nodes[a]].dof;
+            if (d < 0) continue;
+            r.segment<6>(d) += qp.weight * (dN[a] * F.FE1 - N[a] * f_ext);
+            r.segment<3>(d + 3) += qp.weight * N[a] * F.FE2;
+        }
+        if (!jac) continue;
+        const StiffnessBlocks B = calculate_stiffness_blocks(C, F.FE1, xp, rot.kappa);
+        const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
+        Mat3 K;
+        for (int b = 0; b < nn; ++b) {
+            rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K);
+            D_[b].leftCols<3>() = C.leftCols<3>() * dN[b];
+            D_[b].rightCols<3>() = C.rightCols<3>() * K + B.O * A_[b];
+            E_[b].leftCols<3>() = B.Pu * dN[b];
+            E_[b].rightCols<3>() = B.Pk * K + B.Qp * A_[b];
+        }
+        for (int a = 0; a < nn; ++a) {
+            if (mesh_.nodes[e.nodes[a]].dof < 0) continue;
+            for (int b = 0; b < nn; ++b) {
+                if (mesh_.nodes[e.nodes[b]].dof < 0) continue;
+                Mat6 blk = qp.weight * dN[a] * D_[b];
+                blk.bottomRows<3>() += qp.weight * N[a] * E_[b];
+                if (loads) blk.rightCols<3>() -= qp.weight * N[a] * df_ext * A_[b];
+                add_block(*J, k, a, b, blk);
+            }
+        }
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::add_block(SparseMatrix& J, int element, int a, int b,
+                                       const Mat6& block) const {
+    const int nn = static_cast<int>(mesh_.elements[element].nodes.size());
+    const int* idx = &block_index_[element][(a * nn + b) * 6];
+    double* v = J.valuePtr();
+    for (int c = 0; c < 6; ++c) {
+        for (int i = 0; i < 6; ++i) v[idx[c] + i] += block(i, c);
+    }
+}
+
+// Point loads: r_a −= λ f (dead) or λ R f0 (follower, with the load stiffness +λ (R f0)~).
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::assemble_point_loads(VecX& r, SparseMatrix* J) {
+    for (const NodeLoad& l : point_loads_) {
+        const int d = mesh_.nodes[l.node].dof;
+        if (d < 0) continue;
+        if (!l.follower) {
+            r.segment<3>(d) -= lambda_ * l.force;
+            r.segment<3>(d + 3) -= lambda_ * l.moment;
+            continue;
+        }
+        const Mat3 R = P::matrix(p_[l.node]);
+        const Vec3 f = lambda_ * (R * l.force);
+        const Vec3 m = lambda_ * (R * l.moment);
+        r.segment<3>(d) -= f;
+        r.segment<3>(d + 3) -= m;
+        if (J == nullptr) continue;
+        ++counters_.follower_stiffness;
+        const Mat3 ft = so3::skew(f);
+        const Mat3 mt = so3::skew(m);
+        double* v = J->valuePtr();
+        const int* idx = &diagonal_index_[static_cast<size_t>(l.node) * 6];
+        for (int c = 0; c < 3; ++c) {
+            for (int i = 0; i < 3; ++i) {
+                v[idx[3 + c] + i] += ft(i, c);
+                v[idx[3 + c] + 3 + i] += mt(i, c);
+            }
+        }
+    }
+}
+
+}  // namespace rotbeam::form
