@@ -58,14 +58,14 @@ inline Vec3 rollup_exact_tip(double lambda) {
 
 // §2: the 45° bend, R = 100, E = 1e7, ν = 0, J = 0.140577, shear factor 5/6; dead tip force
 // P e_z at load factor P.
-inline Model bend_model(int elements) {
+inline Model bend_model(int elements, double shear_factor = 5.0 / 6.0, double J = 0.140577) {
     Model m;
     m.name = "bend45";
     const double R = 100.0;
     m.points = {{"root", Vec3::Zero()},
                 {"tip", Vec3(R * std::sin(kPi / 4), R * (1 - std::cos(kPi / 4)), 0)}};
     const double E = 1e7, G = 5e6, I = 1.0 / 12.0;
-    const Vec6 k = (Vec6() << E, 5.0 / 6.0 * G, 5.0 / 6.0 * G, G * 0.140577, E * I, E * I)
+    const Vec6 k = (Vec6() << E, shear_factor * G, shear_factor * G, G * J, E * I, E * I)
                        .finished();
     Member beam = member("beam", 0, 1, diagonal_section(k), elements);
     beam.line.kind = LineKind::arc;
