@@ -223,8 +223,8 @@ SolveResult advance(const Setup& setup, RodIntegrator& rod, const Path& path, do
                     const ContinuumOptions& options) {
     const RodLoads loads = loads_at(setup, next);
     if (path.last_increment != 0.0) {
-        const Vec6 guess = path.z + (path.z - path.z_previous) *
-                                        ((next - path.lambda) / path.last_increment);
+        const Vec6 guess =
+            path.z + (path.z - path.z_previous) * ((next - path.lambda) / path.last_increment);
         const SolveResult predicted = solve_shooting(rod, loads, guess, options);
         if (predicted.converged) return predicted;
     }

@@ -27,12 +27,12 @@ struct ContinuumOptions {
 
 struct ContinuumStep {
     double load_factor = 0.0;
-    int iterations = 0;  // multiroot iterations, summed over the sub-steps of this step
-    int substeps = 0;    // load increments taken to reach this step from the previous one
+    int iterations = 0;     // multiroot iterations, summed over the sub-steps of this step
+    int substeps = 0;       // load increments taken to reach this step from the previous one
     double residual = 0.0;  // final ‖free-end residual‖∞ (scaled)
-    std::vector<PointState> points;  // indexed like model.points
-    Vec3 root_force = Vec3::Zero();   // internal force n(0) at the root, inertial components
-    Vec3 root_moment = Vec3::Zero();  // internal moment m(0)
+    std::vector<PointState> points;    // indexed like model.points
+    Vec3 root_force = Vec3::Zero();    // internal force n(0) at the root, inertial components
+    Vec3 root_moment = Vec3::Zero();   // internal moment m(0)
     std::vector<double> centreline_s;  // reference arc length of the samples
     std::vector<Vec3> centreline;      // deformed centreline x(s)
 };

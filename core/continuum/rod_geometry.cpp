@@ -22,7 +22,8 @@ Mat3 frame_from(const Vec3& e1, const Vec3& e2) {
 Vec3 default_e2(const Vec3& e1, const std::optional<Vec3>& hint) {
     if (hint) {
         const Vec3 a = *hint - hint->dot(e1) * e1;
-        if (!(a.norm() > 1e-8 * hint->norm())) throw InputError("e2 hint is parallel to the member");
+        if (!(a.norm() > 1e-8 * hint->norm()))
+            throw InputError("e2 hint is parallel to the member");
         return a.normalized();
     }
     const Vec3 a = Vec3::UnitZ().cross(e1);
@@ -33,9 +34,7 @@ Vec3 default_e2(const Vec3& e1, const std::optional<Vec3>& hint) {
 }  // namespace
 
 RodGeometry::RodGeometry(const Model& model, const Member& member)
-    : kind_(member.line.kind),
-      twist_start_(member.twist_start),
-      twist_end_(member.twist_end) {
+    : kind_(member.line.kind), twist_start_(member.twist_start), twist_end_(member.twist_end) {
     start_ = model.points.at(member.start_point).position;
     const Vec3 end = model.points.at(member.end_point).position;
     if (kind_ == LineKind::keypoints)

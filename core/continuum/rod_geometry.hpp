@@ -18,19 +18,19 @@
 namespace rotbeam::continuum {
 
 class RodGeometry {
-public:
+  public:
     // Throws InputError for what the solver does not support (key-point lines, an e2 hint on an
     // arc) or for an inconsistent arc.
     explicit RodGeometry(const Model& model, const Member& member);
 
     double length() const { return length_; }
     Vec3 position(double s) const;
-    Mat3 frame(double s) const;          // R^r(s): material → inertial
-    Vec3 curvature(double s) const;      // k^r(s), material components
+    Mat3 frame(double s) const;      // R^r(s): material → inertial
+    Vec3 curvature(double s) const;  // k^r(s), material components
     // Arc length of a point lying on the reference line (within 1e-9 L), if it does.
     std::optional<double> locate(const Vec3& point) const;
 
-private:
+  private:
     double twist(double s) const;
     LineKind kind_;
     Vec3 start_ = Vec3::Zero();

@@ -30,8 +30,8 @@ RodIntegrator::RodIntegrator(const RodGeometry& geometry, const Mat6& compliance
     system_ = system;
     // rk8pd: Prince–Dormand 8(9), adaptive; the absolute and relative tolerances act on the
     // scaled, O(1) state. The initial step is 1e-3 L; GSL adapts it.
-    driver_ = gsl_odeiv2_driver_alloc_y_new(system, gsl_odeiv2_step_rk8pd, 1e-3, tolerance,
-                                            tolerance);
+    driver_ =
+        gsl_odeiv2_driver_alloc_y_new(system, gsl_odeiv2_step_rk8pd, 1e-3, tolerance, tolerance);
     if (driver_ == nullptr) throw SolverError("continuum: cannot allocate the GSL ODE driver");
     gsl_odeiv2_driver_set_nmax(driver_, 1000000);
 }
@@ -126,7 +126,8 @@ bool RodIntegrator::shoot(const Vec6& z, const RodLoads& loads, Vec6& residual,
         for (; next_station < stations.size() && stations[next_station] <= target; ++next_station)
             if (states != nullptr) states->push_back(unpack(stations[next_station], y));
         bool jumped = false;
-        for (; next_load < loads.points.size() && loads.points[next_load].s <= target; ++next_load) {
+        for (; next_load < loads.points.size() && loads.points[next_load].s <= target;
+             ++next_load) {
             apply_point_load(loads.points[next_load], y);
             jumped = true;
         }

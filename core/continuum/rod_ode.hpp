@@ -31,7 +31,7 @@ struct RodPointLoad {
 
 // Loads at one load factor (already multiplied by it).
 struct RodLoads {
-    std::vector<RodPointLoad> points;  // sorted by s
+    std::vector<RodPointLoad> points;                                    // sorted by s
     Vec3 dead_force = Vec3::Zero(), dead_moment = Vec3::Zero();          // per unit length
     Vec3 follower_force = Vec3::Zero(), follower_moment = Vec3::Zero();  // f₀, μ₀ per length
     bool has_follower_distributed() const {
@@ -48,7 +48,7 @@ struct RodState {
 };
 
 class RodIntegrator {
-public:
+  public:
     RodIntegrator(const RodGeometry& geometry, const Mat6& compliance, double force_scale,
                   double tolerance);
     ~RodIntegrator();
@@ -68,7 +68,7 @@ public:
     // The right-hand side in scaled variables (public for the GSL trampoline).
     int rhs(double t, const double y[], double dydt[]) const;
 
-private:
+  private:
     RodState unpack(double s, const double y[]) const;
     void apply_point_load(const RodPointLoad& load, double y[]) const;
 

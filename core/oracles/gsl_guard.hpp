@@ -9,13 +9,13 @@
 namespace rotbeam {
 
 class GslErrorHandlerOff {
-public:
+  public:
     GslErrorHandlerOff() : previous_(gsl_set_error_handler_off()) {}
     ~GslErrorHandlerOff() { gsl_set_error_handler(previous_); }
     GslErrorHandlerOff(const GslErrorHandlerOff&) = delete;
     GslErrorHandlerOff& operator=(const GslErrorHandlerOff&) = delete;
 
-private:
+  private:
     gsl_error_handler_t* previous_;
 };
 

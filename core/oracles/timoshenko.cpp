@@ -82,7 +82,8 @@ double timoshenko_cantilever_determinant(const TimoshenkoBeam& beam, double omeg
     const double shear_a = -rA * w2 / (kGA * a), shear_b = rA * w2 / (kGA * b);
     // Basis w = [cosh ax, sinh ax, cos bx, sin bx], ψ = [qa sinh, qa cosh, qb sin, −qb cos];
     // the hyperbolic columns are scaled by e^{−aL} (a positive factor: zeros unchanged).
-    const double ch = 0.5 * (1.0 + std::exp(-2.0 * a * L)), sh = 0.5 * (1.0 - std::exp(-2.0 * a * L));
+    const double ch = 0.5 * (1.0 + std::exp(-2.0 * a * L)),
+                 sh = 0.5 * (1.0 - std::exp(-2.0 * a * L));
     const double e = std::exp(-a * L);
     const double c = std::cos(b * L), s = std::sin(b * L);
     Mat4 D;

@@ -27,8 +27,8 @@ BOOST_AUTO_TEST_CASE(rollup_matches_the_exact_circle_up_to_two_full_turns) {
     const Mat6 C = test::diagonal_compliance(
         (Vec6() << 30e6, 5.0 / 6.0 * G, 5.0 / 6.0 * G, G * 0.1406, EI, EI).finished());
     const std::vector<double> lambdas = {0.4, 1.0, 1.6, 2.0, 2.5, 3.0, 4.0};
-    const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3::Zero(),
-                                         Vec3(0, -kPi * EI / L, 0), LoadFrame::dead, lambdas);
+    const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3::Zero(), Vec3(0, -kPi * EI / L, 0),
+                                         LoadFrame::dead, lambdas);
     const ContinuumOutcome outcome = solve_continuum(model);
     BOOST_TEST_REQUIRE(outcome.status == "converged", outcome.message);
     double worst = 0.0;
@@ -77,17 +77,18 @@ BOOST_AUTO_TEST_CASE(rigid_compliance_rows_give_the_inextensible_elastica) {
     const double L = 3.0, EI = 2.0;
     const Mat6 C = test::diagonal_compliance((Vec6() << 0, 0, 0, 1.5, EI, EI).finished());
     const std::vector<double> alphas = {1.0, 2.0, 5.0, 10.0};
-    const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3(0, 0, EI / (L * L)),
-                                         Vec3::Zero(), LoadFrame::dead, alphas);
+    const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3(0, 0, EI / (L * L)), Vec3::Zero(),
+                                         LoadFrame::dead, alphas);
     const ContinuumOutcome outcome = solve_continuum(model);
     BOOST_TEST_REQUIRE(outcome.status == "converged", outcome.message);
     for (const ContinuumStep& step : outcome.steps) {
         const oracle::ElasticaTip tip = oracle::elastica_tip(step.load_factor);
         const Vec3 u = step.points[1].displacement / L;
-        const double angle = std::atan2(-step.points[1].rotation(0, 2), step.points[1].rotation(0, 0));
-        BOOST_TEST_MESSAGE("elastica α = " << step.load_factor << ": Δw/L = "
-                                           << u.z() - tip.deflection << ", Δu/L = "
-                                           << -u.x() - tip.shortening);
+        const double angle =
+            std::atan2(-step.points[1].rotation(0, 2), step.points[1].rotation(0, 0));
+        BOOST_TEST_MESSAGE("elastica α = " << step.load_factor
+                                           << ": Δw/L = " << u.z() - tip.deflection
+                                           << ", Δu/L = " << -u.x() - tip.shortening);
         BOOST_TEST(std::abs(u.z() - tip.deflection) < kExact);
         BOOST_TEST(std::abs(-u.x() - tip.shortening) < kExact);
         BOOST_TEST(std::abs(u.y()) < kExact);
@@ -97,14 +98,14 @@ BOOST_AUTO_TEST_CASE(rigid_compliance_rows_give_the_inextensible_elastica) {
 
 BOOST_AUTO_TEST_CASE(unsupported_models_are_refused_with_a_reason) {
     const Mat6 C = test::diagonal_compliance(Vec6::Ones());
-    Model two_members = test::cantilever(Vec3(1, 0, 0), C, Vec3(0, 0, 1), Vec3::Zero(),
-                                         LoadFrame::dead, {1.0});
+    Model two_members =
+        test::cantilever(Vec3(1, 0, 0), C, Vec3(0, 0, 1), Vec3::Zero(), LoadFrame::dead, {1.0});
     two_members.members.push_back(two_members.members.front());
     const ContinuumOutcome outcome = solve_continuum(two_members);
     BOOST_TEST(outcome.status == "error");
     BOOST_TEST(outcome.message.find("one member") != std::string::npos);
-    Model off_line = test::cantilever(Vec3(1, 0, 0), C, Vec3(0, 0, 1), Vec3::Zero(),
-                                      LoadFrame::dead, {1.0});
+    Model off_line =
+        test::cantilever(Vec3(1, 0, 0), C, Vec3(0, 0, 1), Vec3::Zero(), LoadFrame::dead, {1.0});
     off_line.points.push_back({"elsewhere", Vec3(0.5, 0.5, 0.0)});
     BOOST_TEST(solve_continuum(off_line).status == "error");
 }

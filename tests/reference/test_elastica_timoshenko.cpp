@@ -37,9 +37,8 @@ BOOST_AUTO_TEST_CASE(tip_matches_mattiasson_1981_table_1) {
     const double u[] = {0.05643, 0.16064, 0.38763, 0.55500};
     for (int i = 0; i < 4; ++i) {
         const ElasticaTip tip = elastica_tip(alpha[i]);
-        BOOST_TEST_MESSAGE("elastica α = " << alpha[i] << ": w/L = " << tip.deflection
-                                           << ", u/L = " << tip.shortening
-                                           << ", θ₀ = " << tip.angle);
+        BOOST_TEST_MESSAGE("elastica α = " << alpha[i] << ": w/L = " << tip.deflection << ", u/L = "
+                                           << tip.shortening << ", θ₀ = " << tip.angle);
         BOOST_TEST(std::abs(tip.deflection - w[i]) < 5.01e-6);
         BOOST_TEST(std::abs(tip.shortening - u[i]) < 5.01e-6);
     }

@@ -61,7 +61,8 @@ BOOST_AUTO_TEST_CASE(centreline_tangent_is_the_rotated_axis_at_lambda_2_7) {
     const double L = 12.0, lambda = 2.7, h = 1e-5 * L;
     for (double s : {0.1 * L, 0.45 * L, 0.9 * L}) {
         const Vec3 dx = (rollup_state(L, lambda, s + h).displacement -
-                         rollup_state(L, lambda, s - h).displacement) / (2.0 * h) +
+                         rollup_state(L, lambda, s - h).displacement) /
+                            (2.0 * h) +
                         Vec3::UnitX();
         const Vec3 t = rollup_state(L, lambda, s).rotation * Vec3::UnitX();
         BOOST_TEST((dx - t).norm() < kFdTolerance);
