@@ -64,16 +64,22 @@ struct WienerMilenkovic {
         return R / d;
     }
 
-    // R(compose(a, b)) = R(a) R(b): c = 4 (b0 a + a0 b + a × b)/(Δ1 + Δ2), Δ1 = (4 − a0)(4 − b0),
-    // Δ2 = a0 b0 − a·b. Refuses non-finite or singular input and a result at φ = 2π.
+    // R(compose(a, b)) = R(a) R(b) through the quaternion product of (a0, a) and (b0, b): with
+    // Δ1 = (4 − a0)(4 − b0) (its norm), Δ2 = a0 b0 − a·b (its scalar part) and
+    // v = b0 a + a0 b + a × b (its vector part), c = 4 v/(Δ1 + Δ2) (Bauchau's formula). When
+    // Δ2 < 0 (composite past π) Δ1 + Δ2 cancels, so there c = 4 v (Δ1 − Δ2)/|v|², the same
+    // value since Δ1² − Δ2² = |v|². Refuses non-finite or singular input and a result at 2π.
     static P compose(const P& a, const P& b) {
         const double sa = checked_squared_norm(a, "compose");
         const double sb = checked_squared_norm(b, "compose");
         const double a0 = 2.0 - sa / 8.0;
         const double b0 = 2.0 - sb / 8.0;
-        const double denominator = (4.0 - a0) * (4.0 - b0) + a0 * b0 - a.dot(b);
-        if (!(denominator > 0.0)) detail::refuse(kName, "compose", 2.0 * kPi, "result at 2π");
-        const P c = (4.0 / denominator) * (b0 * a + a0 * b + a.cross(b));
+        const double d1 = (4.0 - a0) * (4.0 - b0);
+        const double d2 = a0 * b0 - a.dot(b);
+        const P v = b0 * a + a0 * b + a.cross(b);
+        const double v2 = v.squaredNorm();
+        if (d2 < 0.0 && !(v2 > 0.0)) detail::refuse(kName, "compose", 2.0 * kPi, "result at 2π");
+        const P c = d2 >= 0.0 ? P((4.0 / (d1 + d2)) * v) : P((4.0 * (d1 - d2) / v2) * v);
         checked_squared_norm(c, "compose");
         return c;
     }
