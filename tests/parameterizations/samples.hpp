@@ -1,0 +1,120 @@
+// The shared hard sample set of issue 3 (point 3) and the helpers the parameterization tests
+// share: which samples each parameterization's chart contains, distances to its singular set
+// (the tolerances grow like ε/δ), and fixed-size central differences.
+#pragma once
+
+#include <boost/mpl/list.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "core/so3.hpp"
+#include "parameterizations/registry.hpp"
+
+namespace rotbeam::test {
+
+using AllParameterizationTypes = boost::mpl::list<param::Quaternion, param::WienerMilenkovic,
+                                                  param::Rodrigues, param::RotationVector>;
+
+inline constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+struct Sample {
+    double angle;
+    std::string label;
+};
+
+// 0, 1e-12, 1e-8, 1e-4 rad, π/2, π − 1e-6, just past π, 2π − 1e-6, 3π.
+inline std::vector<Sample> hard_samples() {
+    return {{0.0, "0"},
+            {1e-12, "1e-12"},
+            {1e-8, "1e-8"},
+            {1e-4, "1e-4"},
+            {0.5 * kPi, "pi/2"},
+            {kPi - 1e-6, "pi-1e-6"},
+            {kPi + 1e-6, "pi+1e-6"},
+            {2.0 * kPi - 1e-6, "2pi-1e-6"},
+            {3.0 * kPi, "3pi"}};
+}
+
+// A generic axis (no component zero, no two equal) and a second, independent one.
+inline Vec3 generic_axis() { return Vec3(1.0, -2.0, 3.0).normalized(); }
+inline Vec3 other_axis() { return Vec3(2.0, 1.0, -0.5).normalized(); }
+
+// Distance of φ to the nearest 2πk, k ≥ 1.
+inline double distance_to_full_turns(double phi) {
+    const double k = std::max(1.0, std::round(phi / (2.0 * kPi)));
+    return std::abs(phi - 2.0 * kPi * k);
+}
+
+// Whether from_rotation_vector(φ n) lies in P's chart (WM and Rodrigues end at their singular
+// angle; the quaternion and the rotation vector take any angle).
+template <class P>
+bool chart_contains(double phi) {
+    if constexpr (std::is_same_v<P, param::RotationVector> ||
+                  std::is_same_v<P, param::Quaternion>) {
+        return true;
+    } else {
+        return phi < P::singular_angle();
+    }
+}
+
+// Distance δ (rad) to where P's tangent operators are singular.
+template <class P>
+double tangent_distance(double phi) {
+    if constexpr (std::is_same_v<P, param::Quaternion>) {
+        return std::numeric_limits<double>::infinity();
+    } else if constexpr (std::is_same_v<P, param::RotationVector>) {
+        return distance_to_full_turns(phi);
+    } else {
+        return P::singular_angle() - phi;
+    }
+}
+
+// Distance δ (rad) to where P's conversion to a rotation vector is ill-conditioned: the
+// quaternion's axis is lost at 2πk (v → 0 with w → −1), WM and Rodrigues at their singular angle.
+template <class P>
+double conversion_distance(double phi) {
+    if constexpr (std::is_same_v<P, param::Quaternion>) {
+        return distance_to_full_turns(phi);
+    } else if constexpr (std::is_same_v<P, param::RotationVector>) {
+        return std::numeric_limits<double>::infinity();
+    } else {
+        return P::singular_angle() - phi;
+    }
+}
+
+// The length over which P's functions vary near p: the parameter norm for the rational charts
+// (WM, Rodrigues, quaternion: homogeneous of degree 0 or rational in p), and for the rotation
+// vector also the distance to the tangent singularity at 2πk, over which H⁻¹ ~ 1/δ varies.
+template <class P>
+double variation_length(const typename P::P& p) {
+    const double length = std::max(1.0, p.norm());
+    if constexpr (std::is_same_v<P, param::RotationVector>) {
+        return std::min(length, distance_to_full_turns(p.norm()));
+    } else {
+        return length;
+    }
+}
+
+// Central difference of f along direction d with step h.
+template <class F, class Vp>
+auto central_difference(const F& f, const Vp& p, const Vp& d, double h) {
+    using R = std::decay_t<decltype(f(p))>;
+    const Vp pp = p + h * d;
+    const Vp pm = p - h * d;
+    const R fp = f(pp);
+    const R fm = f(pm);
+    const R out = (fp - fm) / (2.0 * h);
+    return out;
+}
+
+// Tolerance of a central difference with step h = ∛ε L of a function G varying on length L:
+// truncation h²/6 ‖G'''‖ ≈ ε^(2/3) ‖G'‖ (G''' ~ G'/L²) plus round-off ε ‖G‖/h; the factor 10
+// covers the unknown ratio of third to first derivative on that scale.
+inline double fd_tolerance(double norm_derivative, double norm_value, double h) {
+    return 10.0 * (std::cbrt(kEps * kEps) * norm_derivative + kEps * norm_value / h);
+}
+
+}  // namespace rotbeam::test
