@@ -149,6 +149,21 @@ double max_abs(const gsl_vector* v) {
     return m;
 }
 
+// The residual tolerance for these loads: options.residual_tolerance times the loads' size in
+// the scaled units, clamped to [1e-3, 1], so that loads much smaller than EI/L² are still
+// resolved relatively (down to the ODE tolerance's absolute floor) and large ones are not held
+// to a relative accuracy beyond the integration's.
+double residual_tolerance(const RodIntegrator& rod, const RodLoads& loads,
+                          const ContinuumOptions& options) {
+    const double length = rod.moment_scale() / rod.force_scale();
+    double size =
+        (loads.dead_force.norm() + loads.follower_force.norm()) * length / rod.force_scale() +
+        (loads.dead_moment.norm() + loads.follower_moment.norm()) * length / rod.moment_scale();
+    for (const RodPointLoad& p : loads.points)
+        size += p.force.norm() / rod.force_scale() + p.moment.norm() / rod.moment_scale();
+    return options.residual_tolerance * std::clamp(size, 1e-3, 1.0);
+}
+
 // Newton-type hybrid (Powell's dogleg with the Jacobian above) from the guess z.
 SolveResult solve_shooting(RodIntegrator& rod, const RodLoads& loads, const Vec6& guess,
                            const ContinuumOptions& options) {
@@ -161,11 +176,12 @@ SolveResult solve_shooting(RodIntegrator& rod, const RodLoads& loads, const Vec6
                                                                &gsl_vector_free);
     for (int i = 0; i < 6; ++i) gsl_vector_set(x0.get(), i, guess[i]);
     SolveResult result;
+    const double tolerance = residual_tolerance(rod, loads, options);
     if (gsl_multiroot_fdfsolver_set(solver.get(), &function, x0.get()) != GSL_SUCCESS)
         return result;
     for (int it = 0; it <= options.max_iterations; ++it) {
         result.residual = max_abs(solver->f);
-        if (result.residual < options.residual_tolerance) {
+        if (result.residual < tolerance) {
             result.converged = true;
             result.z = to_vec6(solver->x);
             return result;
