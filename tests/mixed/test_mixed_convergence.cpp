@@ -56,6 +56,64 @@ void check_rollup_order(double lambda) {
     BOOST_TEST(errors.back() < errors.front() / 3000.0);  // 64× finer mesh: 2⁻¹² ≈ 1/4096
 }
 
+// 45° bend: tip displacement at P = 300, 450, 600 (load steps of 50, as loads are applied in steps).
+template <class P>
+std::vector<Vec3> bend_tips(int elements, double shear_factor = 5.0 / 6.0, double J = 0.140577) {
+    form::MixedStatics<P> problem(test::bend_model(elements, shear_factor, J));
+    std::vector<double> loads;
+    for (int k = 1; k <= 12; ++k) loads.push_back(50.0 * k);
+    std::vector<Vec3> tips;
+    const StaticOutcome out = run_static(problem, loads, tight(), [&](const StepRecord& step) {
+        if (step.load_factor == 300.0 || step.load_factor == 450.0 || step.load_factor == 600.0) {
+            tips.push_back(problem.point_state(1).displacement);
+        }
+    });
+    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
+    return tips;
+}
+
+// Largest load factor the N-element roll-up carries: continuation in steps δ from the last
+// converged state; a failed Newton restores that state and halves δ, until δ < 1e-5 λc. (A plain
+// bisection on [lo, hi] would take a failure far from the limit, where the basin of Newton's
+// method shrinks, for the absence of a solution.)
+template <class P>
+double lambda_star(int elements, double lambda_c) {
+    form::MixedStatics<P> problem(test::rollup_model(elements));
+    NewtonSettings s = tight();
+    s.residual_tolerance = 1e-10;
+    s.increment_tolerance = 1e-10;
+    s.max_iterations = 100;
+    double lambda = 0.0;
+    double step = 0.05 * lambda_c;
+    problem.save_state(NonlinearSystem::kStepSlot);
+    while (step > 1e-5 * lambda_c) {
+        problem.set_load_factor(lambda + step);
+        if (solve_newton(problem, s).converged) {
+            lambda += step;
+            problem.save_state(NonlinearSystem::kStepSlot);
+        } else {
+            step *= 0.5;
+            problem.restore_state(NonlinearSystem::kStepSlot);
+        }
+    }
+    return lambda;
+}
+
+template <class P>
+void check_lambda_star(double lambda_c, double lambda_16) {
+    for (int n = 16; n <= 64; n *= 2) {
+        const double measured = lambda_star<P>(n, lambda_c);
+        const double model = lambda_c * (1.0 - 1.1 / n);
+        BOOST_TEST_MESSAGE(P::kName << ": λ*(" << n << ") = " << std::setprecision(6) << measured
+                                    << ", λc(1 − 1.1/N) = " << model);
+        // The 1.1/N law is a fit (benchmarks.md §1): the measured coefficient N(1 − λ*/λc) must
+        // lie within 1.1 ± 0.1 (it is ≈ 1.01 at N = 16, ≈ 1.08 at 32). λ*(16) is the value
+        // benchmarks.md quotes to three decimals.
+        BOOST_TEST(std::abs(n * (1.0 - measured / lambda_c) - 1.1) < 0.1);
+        if (n == 16) BOOST_TEST(std::abs(measured - lambda_16) < 0.5e-3);
+    }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_convergence)
@@ -66,6 +124,43 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_rollup_converges_at_second_order) {
 
 BOOST_AUTO_TEST_CASE(rodrigues_rollup_converges_at_second_order) {
     check_rollup_order<param::Rodrigues>(0.8);
+}
+
+BOOST_AUTO_TEST_CASE(bend_45_degree_tip_converges_under_refinement) {
+    std::vector<std::vector<Vec3>> tips;
+    for (int n = 16; n <= 256; n *= 2) {
+        tips.push_back(bend_tips<param::WienerMilenkovic>(n));
+        const Vec3& u = tips.back()[2];
+        BOOST_TEST_MESSAGE("bend N = " << n << ": tip at P = 600: " << std::setprecision(9)
+                                       << u.transpose() << "; P = 300: " << tips.back()[0].transpose()
+                                       << "; P = 450: " << tips.back()[1].transpose());
+    }
+    // Differences between successive meshes fall by ≈ 4 (second order). The published tip
+    // (−23.5, −13.4, 53.4) is rounded to 0.1 and computed with section constants the paper does
+    // not state; benchmarks.md §2: the choice moves the in-plane components by about 1 %. With
+    // GXBeam's constants (shear factor 1, J = 1/6) the converged tip is printed for comparison;
+    // the gate is 2.5 % of |u| per component (u_y: 0.33 of 13.4 with this case's constants).
+    for (std::size_t k = 2; k < tips.size(); ++k) {
+        const double ratio = (tips[k - 2][2] - tips[k - 1][2]).norm() /
+                             (tips[k - 1][2] - tips[k][2]).norm();
+        BOOST_TEST(ratio > 3.6);
+        BOOST_TEST(ratio < 4.4);
+    }
+    const std::vector<Vec3> gx = bend_tips<param::WienerMilenkovic>(256, 1.0, 1.0 / 6.0);
+    BOOST_TEST_MESSAGE("bend N = 256, GXBeam constants (k = 1, J = 1/6): " << gx[2].transpose());
+    const Vec3 published(-23.5, -13.4, 53.4);
+    for (int k = 0; k < 3; ++k) {
+        BOOST_TEST(std::abs(tips.back()[2][k] - published[k]) < 0.025 * std::abs(published[k]));
+        BOOST_TEST(std::abs(gx[2][k] - published[k]) < 0.025 * std::abs(published[k]));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(rodrigues_limit_load_follows_one_minus_1p1_over_n) {
+    check_lambda_star<param::Rodrigues>(1.0, 0.937);
+}
+
+BOOST_AUTO_TEST_CASE(wiener_milenkovic_limit_load_follows_one_minus_1p1_over_n) {
+    check_lambda_star<param::WienerMilenkovic>(2.0, 1.874);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
