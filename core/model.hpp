@@ -43,6 +43,7 @@ struct ReferenceLine {
 };
 
 struct Section {
+    std::string name;  // the case file's section name (for messages and `rotbeam check`)
     // Material-axis 6×6 matrices. `compliance` is always set; `stiffness` is set when the
     // compliance is invertible (it may have zero rows: rigid modes).
     Mat6 compliance = Mat6::Zero();
@@ -129,6 +130,9 @@ struct DynamicSettings {
     double rho_infinity = 1.0;     // generalized-α spectral radius at infinity
     std::string integrator;        // formulation-specific name; empty = default
     Vec3 initial_velocity = Vec3::Zero();
+    // "rest": start from the reference configuration at rest; "static": start at rest from the
+    // static equilibrium under the loads evaluated at t = 0 (a release, benchmarks.md §8).
+    std::string initial_state = "rest";
 };
 
 struct ModalSettings {

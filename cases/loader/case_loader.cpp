@@ -1,0 +1,180 @@
+#include "cases/loader/case_loader.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cases/loader/model_builder.hpp"
+#include "core/errors.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+using cases::YamlReader;
+
+// A case file is UTF-8 text: a NUL byte or a malformed UTF-8 sequence means a binary file, which
+// yaml-cpp would otherwise report confusingly (or accept as a scalar).
+void check_text(const std::string& text, const std::string& file) {
+    int line = 1;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') ++line;
+        int follow = 0;
+        if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) {
+            follow = -1;
+        } else if (c >= 0x80) {
+            follow = (c >= 0xc2 && c <= 0xdf) ? 1 : (c >= 0xe0 && c <= 0xef) ? 2
+                     : (c >= 0xf0 && c <= 0xf4) ? 3 : -1;
+            for (int k = 1; follow > 0 && k <= follow; ++k) {
+                if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) {
+                    follow = -1;
+                }
+            }
+        }
+        if (follow < 0) {
+            throw InputError(file + ":" + std::to_string(line) +
+                             ": (file): not a text case file (control or non-UTF-8 byte at offset " +
+                             std::to_string(i) + ")");
+        }
+        i += static_cast<size_t>(follow);
+    }
+}
+
+YAML::Node parse(const std::string& text, const std::string& file) {
+    check_text(text, file);
+    YAML::Node root;
+    try {
+        root = YAML::Load(text);
+    } catch (const YAML::ParserException& e) {
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+    }
+    if (root.IsNull()) throw InputError(file + ":1: (file): the case file is empty");
+    if (!root.IsMap()) {
+        throw InputError(file + ":" + std::to_string(root.Mark().line + 1) +
+                         ": (file): a case file is a mapping of sections (points, members, ...)");
+    }
+    return root;
+}
+
+// Applies `key.path=value` to the tree: map segments are created when missing, list segments
+// are indices. The value is YAML (`[0.4, 2]` is a list). Returns the key path.
+std::string apply_override(YAML::Node& root, const std::string& text, const std::string& file) {
+    const size_t eq = text.find('=');
+    const std::string path = eq == std::string::npos ? text : text.substr(0, eq);
+    const auto bad = [&](const std::string& problem) {
+        throw InputError(file + ":--set: " + (path.empty() ? "(set)" : path) + ": " + problem);
+    };
+    if (eq == std::string::npos || path.empty()) bad("expected key.path=value, got '" + text + "'");
+    std::vector<std::string> segments;
+    std::stringstream ss(path);
+    for (std::string s; std::getline(ss, s, '.');) {
+        if (s.empty()) bad("empty segment in the key path");
+        segments.push_back(s);
+    }
+    YAML::Node value;
+    try {
+        value = YAML::Load(text.substr(eq + 1));
+    } catch (const YAML::Exception& e) {
+        bad("the value is not valid YAML (" + e.msg + ")");
+    }
+    if (value.IsNull()) bad("missing value after '='");
+    YAML::Node node = root;
+    std::string reached;
+    for (size_t i = 0; i + 1 < segments.size(); ++i) {
+        reached = cases::child_key(reached, segments[i]);
+        YAML::Node next;
+        if (node.IsSequence()) {
+            size_t index = 0;
+            try {
+                index = std::stoul(segments[i]);
+            } catch (const std::exception&) {
+                bad(reached + " indexes a list: use a number");
+            }
+            if (index >= node.size()) bad(reached + " is past the end of the list");
+            next.reset(node[index]);
+        } else if (node.IsMap() || node.IsNull()) {
+            next.reset(node[segments[i]]);
+        } else {
+            bad(reached.substr(0, reached.rfind('.')) + " is a value, not a mapping");
+        }
+        node.reset(next);
+    }
+    if (node.IsScalar()) bad("cannot set a key inside a value");
+    if (node.IsSequence()) {
+        size_t index = 0;
+        try {
+            index = std::stoul(segments.back());
+        } catch (const std::exception&) {
+            bad("indexes a list: use a number");
+        }
+        if (index >= node.size()) bad("is past the end of the list");
+        node[index] = value;
+    } else {
+        node[segments.back()] = value;
+    }
+    return path;
+}
+
+Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
+    r.expect_map(root, "",
+                 {"name", "description", "units", "points", "sections", "members", "constraints",
+                  "loads", "gravity", "analysis", "discretization", "solver", "references"});
+    Model model;
+    model.name = root["name"] ? r.string(root["name"], "name")
+                              : std::filesystem::path(file).stem().string();
+    if (root["description"]) model.description = r.string(root["description"], "description");
+    if (root["units"]) model.units = r.string(root["units"], "units");
+    cases::read_points(r, root, model);
+    const cases::SectionTable sections = cases::read_sections(r, root);
+    cases::read_members(r, root, sections, model);
+    cases::read_constraints(r, root, model);
+    cases::read_loads(r, root, model);
+    if (root["gravity"]) model.gravity = r.vec3(root["gravity"], "gravity");
+    cases::read_analysis(r, root, model);
+    cases::read_discretization(r, root, model);
+    cases::read_solver(r, root, model);
+    cases::read_references(r, root, model);
+    // Inertia is needed by dynamics, modal analysis and gravity: every section must have mass.
+    if (model.needs_inertia() || model.gravity.norm() > 0.0) {
+        for (const Member& m : model.members) {
+            for (const SectionStation& st : m.sections) {
+                if (!st.section.mass) {
+                    r.fail(root["sections"][st.section.name], "sections." + st.section.name,
+                           "needs mass or density (the analysis or gravity uses inertia)");
+                }
+            }
+        }
+    }
+    return model;
+}
+
+}  // namespace
+
+Model load_case_text(const std::string& text, const std::string& file_name,
+                     const std::vector<std::string>& overrides) {
+    YAML::Node root = parse(text, file_name);
+    std::set<std::string> overridden;
+    for (const std::string& o : overrides) overridden.insert(apply_override(root, o, file_name));
+    const YamlReader reader(file_name, overridden);
+    try {
+        return build(reader, root, file_name);
+    } catch (const YAML::Exception& e) {
+        // Defensive: every access is type-checked, but yaml-cpp must never escape as a crash.
+        throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+    }
+}
+
+Model load_case(const std::string& path, const std::vector<std::string>& overrides) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw InputError(path + ": (file): is a directory, not a case file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": (file): cannot open the case file");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return load_case_text(buffer.str(), path, overrides);
+}
+
+}  // namespace rotbeam

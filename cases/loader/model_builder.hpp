@@ -1,0 +1,39 @@
+// Internal to the case loader: the readers of each top-level section of a case file. Each one
+// validates what it reads and fills its part of the Model; cross-references (a load's point, a
+// member's section) are checked against what was read before, so the order of calls matters:
+// points, sections, members, constraints, loads, analysis, discretization, solver, references.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "cases/loader/yaml_reader.hpp"
+#include "core/model.hpp"
+
+namespace rotbeam::cases {
+
+using SectionTable = std::map<std::string, Section>;
+
+void read_points(const YamlReader& r, const YAML::Node& root, Model& model);
+SectionTable read_sections(const YamlReader& r, const YAML::Node& root);
+void read_members(const YamlReader& r, const YAML::Node& root, const SectionTable& sections,
+                  Model& model);
+void read_constraints(const YamlReader& r, const YAML::Node& root, Model& model);
+void read_loads(const YamlReader& r, const YAML::Node& root, Model& model);
+TimeFunction read_time_function(const YamlReader& r, const YAML::Node& node,
+                                const std::string& key);
+
+void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model);
+void read_discretization(const YamlReader& r, const YAML::Node& root, Model& model);
+void read_solver(const YamlReader& r, const YAML::Node& root, Model& model);
+void read_references(const YamlReader& r, const YAML::Node& root, Model& model);
+
+// Values shared by discretization and references.applies_to.
+extern const std::vector<std::string> kFormulations;
+extern const std::vector<std::string> kRotations;
+extern const std::vector<std::string> kQuadratures;
+extern const std::vector<std::string> kInterpolations;
+extern const std::vector<std::string> kUpdates;
+extern const std::vector<std::string> kMassRules;
+
+}  // namespace rotbeam::cases

@@ -1,0 +1,257 @@
+// Case loader: points, sections, members, constraints, loads (docs/case-format.md).
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+#include "cases/loader/model_builder.hpp"
+#include "core/errors.hpp"
+#include "core/geometry.hpp"
+
+namespace rotbeam::cases {
+
+namespace {
+
+std::vector<std::string> point_names(const Model& model) {
+    std::vector<std::string> names;
+    for (const Point& p : model.points) names.push_back(p.name);
+    return names;
+}
+
+// Symmetry to round-off of printed data: 1e-9 of the largest entry.
+bool symmetric(const Mat6& M) {
+    return (M - M.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * M.cwiseAbs().maxCoeff();
+}
+
+// Smallest eigenvalue relative to the largest (a symmetric matrix).
+double relative_min_eigenvalue(const Mat6& M) {
+    const Eigen::SelfAdjointEigenSolver<Mat6> eig(M, Eigen::EigenvaluesOnly);
+    const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
+    return largest > 0.0 ? eig.eigenvalues().minCoeff() / largest : 0.0;
+}
+
+// Positive definite to the precision a 6×6 double matrix can be trusted (cond ≤ 1e12).
+constexpr double kDefiniteness = 1e-12;
+
+Mat6 isotropic_stiffness(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                         double* density_area, Vec3* density_inertia) {
+    r.expect_map(n, key, {"E", "G", "nu", "A", "I2", "I3", "J", "k2", "k3"});
+    const double E = r.positive(r.required(n, key, "E"), key + ".E");
+    if (n["G"] && n["nu"]) r.fail(n["nu"], key + ".nu", "give G or nu, not both");
+    if (!n["G"] && !n["nu"]) r.fail(n, key + ".G", "missing required key (or give nu)");
+    double G = 0.0;
+    if (n["G"]) {
+        G = r.positive(n["G"], key + ".G");
+    } else {
+        const double nu = r.number(n["nu"], key + ".nu");
+        if (!(nu > -1.0 && nu < 0.5)) r.fail(n["nu"], key + ".nu", "must lie in (-1, 0.5)");
+        G = E / (2.0 * (1.0 + nu));
+    }
+    const double A = r.positive(r.required(n, key, "A"), key + ".A");
+    const double I2 = r.positive(r.required(n, key, "I2"), key + ".I2");
+    const double I3 = r.positive(r.required(n, key, "I3"), key + ".I3");
+    const double J = r.positive(r.required(n, key, "J"), key + ".J");
+    // Shear factor 5/6 (rectangle, Timoshenko) unless given.
+    const double k2 = n["k2"] ? r.positive(n["k2"], key + ".k2") : 5.0 / 6.0;
+    const double k3 = n["k3"] ? r.positive(n["k3"], key + ".k3") : 5.0 / 6.0;
+    Vec6 d;
+    d << E * A, k2 * G * A, k3 * G * A, G * J, E * I2, E * I3;
+    *density_area = A;
+    *density_inertia = Vec3(I2 + I3, I2, I3);
+    return d.asDiagonal();
+}
+
+Section read_section(const YamlReader& r, const YAML::Node& n, const std::string& key) {
+    r.expect_map(n, key, {"isotropic", "stiffness", "compliance", "mass", "density", "damping"});
+    const int given = (n["isotropic"] ? 1 : 0) + (n["stiffness"] ? 1 : 0) + (n["compliance"] ? 1 : 0);
+    if (given != 1) {
+        r.fail(n, key, given == 0 ? "missing required key: one of isotropic, stiffness, compliance"
+                                  : "give exactly one of isotropic, stiffness, compliance");
+    }
+    Section s;
+    double area = 0.0;
+    Vec3 inertia = Vec3::Zero();
+    if (n["isotropic"]) {
+        const Mat6 K = isotropic_stiffness(r, n["isotropic"], key + ".isotropic", &area, &inertia);
+        s.stiffness = K;
+        s.compliance = K.inverse();
+    } else if (n["stiffness"]) {
+        const std::string k = key + ".stiffness";
+        const Mat6 K = r.mat6(n["stiffness"], k);
+        if (!symmetric(K)) r.fail(n["stiffness"], k, "stiffness matrix is not symmetric");
+        if (relative_min_eigenvalue(K) <= kDefiniteness) {
+            r.fail(n["stiffness"], k, "stiffness matrix is not positive definite");
+        }
+        s.stiffness = 0.5 * (K + K.transpose());
+        s.compliance = s.stiffness->inverse();
+    } else {
+        const std::string k = key + ".compliance";
+        const Mat6 C = r.mat6(n["compliance"], k);
+        if (!symmetric(C)) r.fail(n["compliance"], k, "compliance matrix is not symmetric");
+        // Zero rows are rigid modes; the rest must be positive definite.
+        std::vector<int> flexible;
+        for (int i = 0; i < 6; ++i) {
+            if (C.row(i).cwiseAbs().maxCoeff() > 0.0) flexible.push_back(i);
+        }
+        if (flexible.empty()) r.fail(n["compliance"], k, "compliance is zero: the section is rigid");
+        Eigen::MatrixXd sub(flexible.size(), flexible.size());
+        for (size_t i = 0; i < flexible.size(); ++i)
+            for (size_t j = 0; j < flexible.size(); ++j) sub(i, j) = C(flexible[i], flexible[j]);
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sub, Eigen::EigenvaluesOnly);
+        if (eig.eigenvalues().minCoeff() <= kDefiniteness * eig.eigenvalues().cwiseAbs().maxCoeff()) {
+            r.fail(n["compliance"], k, "compliance matrix (without its zero rows) is not positive definite");
+        }
+        s.compliance = 0.5 * (C + C.transpose());
+        if (flexible.size() == 6) s.stiffness = s.compliance.inverse();
+    }
+    if (n["mass"] && n["density"]) r.fail(n["density"], key + ".density", "give mass or density, not both");
+    if (n["density"]) {
+        if (!n["isotropic"]) r.fail(n["density"], key + ".density", "density needs an isotropic section; give mass");
+        const double rho = r.positive(n["density"], key + ".density");
+        Mat6 M = Mat6::Zero();
+        M.diagonal() << rho * area, rho * area, rho * area, rho * inertia[0], rho * inertia[1],
+            rho * inertia[2];
+        s.mass = M;
+    } else if (n["mass"]) {
+        const Mat6 M = r.mat6(n["mass"], key + ".mass");
+        if (!symmetric(M)) r.fail(n["mass"], key + ".mass", "mass matrix is not symmetric");
+        if (relative_min_eigenvalue(M) <= kDefiniteness) {
+            r.fail(n["mass"], key + ".mass", "mass matrix is not positive definite");
+        }
+        s.mass = 0.5 * (M + M.transpose());
+    }
+    if (n["damping"]) {
+        s.damping = r.vec6(n["damping"], key + ".damping");
+        if (s.damping.minCoeff() < 0.0) r.fail(n["damping"], key + ".damping", "must not be negative");
+    }
+    return s;
+}
+
+ReferenceLine read_line(const YamlReader& r, const YAML::Node& n, const std::string& key) {
+    ReferenceLine line;
+    if (n.IsScalar()) {
+        r.choice(n, key, {"straight"});  // arcs and key-point curves need more data
+        return line;
+    }
+    r.expect_map(n, key, {"type", "center", "normal", "points"});
+    const std::string type =
+        r.choice(r.required(n, key, "type"), key + ".type", {"straight", "arc", "keypoints"});
+    const auto only_for = [&](const char* k, const std::string& kind) {
+        if (n[k] && type != kind) r.fail(n[k], child_key(key, k), "only for type " + kind);
+    };
+    only_for("center", "arc");
+    only_for("normal", "arc");
+    only_for("points", "keypoints");
+    if (type == "arc") {
+        line.kind = LineKind::arc;
+        line.center = r.vec3(r.required(n, key, "center"), key + ".center");
+        if (n["normal"]) line.normal = r.vec3(n["normal"], key + ".normal");
+    } else if (type == "keypoints") {
+        line.kind = LineKind::keypoints;
+        const YAML::Node pts = r.required(n, key, "points");
+        if (!pts.IsSequence() || pts.size() == 0) {
+            r.fail(pts, key + ".points", "expected a non-empty list of [x, y, z] interior points");
+        }
+        for (size_t i = 0; i < pts.size(); ++i) {
+            line.keypoints.push_back(r.vec3(pts[i], key + ".points[" + std::to_string(i) + "]"));
+        }
+    }
+    return line;
+}
+
+void read_member_sections(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                          const SectionTable& sections, Member& m) {
+    std::vector<std::string> names;
+    for (const auto& [name, s] : sections) names.push_back(name);
+    if (n["section"] && n["sections"]) r.fail(n["sections"], key + ".sections", "give section or sections, not both");
+    if (n["section"]) {
+        const std::string name = r.name_in(n["section"], key + ".section", names, "section");
+        m.sections.push_back({0.0, sections.at(name)});
+        return;
+    }
+    const YAML::Node list = n["sections"];
+    if (!list) r.fail(n, key + ".section", "missing required key (or give sections)");
+    const std::string lk = key + ".sections";
+    if (!list.IsSequence() || list.size() < 2) {
+        r.fail(list, lk, "expected a list of at least 2 stations {at: s/L, section: name}");
+    }
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string ik = lk + "[" + std::to_string(i) + "]";
+        r.expect_map(list[i], ik, {"at", "section"});
+        const double at = r.number(r.required(list[i], ik, "at"), ik + ".at");
+        const bool first = i == 0, last = i + 1 == list.size();
+        if ((first && at != 0.0) || (last && at != 1.0) || at < 0.0 || at > 1.0 ||
+            (!first && at <= m.sections.back().s_fraction)) {
+            r.fail(list[i]["at"], ik + ".at", "stations must increase from 0 to 1 (s/L)");
+        }
+        const std::string name = r.name_in(r.required(list[i], ik, "section"), ik + ".section", names, "section");
+        m.sections.push_back({at, sections.at(name)});
+    }
+}
+
+Member read_member(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                   const std::string& name, const SectionTable& sections, const Model& model) {
+    r.expect_map(n, key, {"from", "to", "line", "e2", "twist", "section", "sections", "elements"});
+    Member m;
+    m.name = name;
+    const std::vector<std::string> points = point_names(model);
+    m.start_point = model.point_index(r.name_in(r.required(n, key, "from"), key + ".from", points, "point"));
+    m.end_point = model.point_index(r.name_in(r.required(n, key, "to"), key + ".to", points, "point"));
+    if (m.start_point == m.end_point) r.fail(n["to"], key + ".to", "a member must join two different points");
+    if (n["line"]) m.line = read_line(r, n["line"], key + ".line");
+    if (n["e2"]) m.line.e2_hint = r.vec3(n["e2"], key + ".e2");
+    if (const YAML::Node t = n["twist"]) {
+        const std::vector<double> tw = r.numbers(t, key + ".twist");
+        if (tw.size() > 2) r.fail(t, key + ".twist", "expected one angle or [start, end] (radians)");
+        m.twist_start = tw.front();
+        m.twist_end = tw.back();
+    }
+    read_member_sections(r, n, key, sections, m);
+    m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements");
+    return m;
+}
+
+}  // namespace
+
+void read_points(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node pts = r.required(root, "", "points");
+    r.expect_named_map(pts, "points");
+    for (const auto& item : pts) {
+        const std::string name = item.first.Scalar();
+        model.points.push_back({name, r.vec3(item.second, "points." + name)});
+    }
+}
+
+SectionTable read_sections(const YamlReader& r, const YAML::Node& root) {
+    const YAML::Node secs = r.required(root, "", "sections");
+    r.expect_named_map(secs, "sections");
+    SectionTable table;
+    for (const auto& item : secs) {
+        const std::string name = item.first.Scalar();
+        table[name] = read_section(r, item.second, "sections." + name);
+        table[name].name = name;
+    }
+    return table;
+}
+
+void read_members(const YamlReader& r, const YAML::Node& root, const SectionTable& sections,
+                  Model& model) {
+    const YAML::Node members = r.required(root, "", "members");
+    r.expect_named_map(members, "members");
+    for (const auto& item : members) {
+        const std::string name = item.first.Scalar();
+        const std::string key = "members." + name;
+        model.members.push_back(read_member(r, item.second, key, name, sections, model));
+        // The geometry refuses coincident ends, inconsistent arcs, coincident key points.
+        try {
+            const ReferenceGeometry g(model, static_cast<int>(model.members.size()) - 1);
+            (void)g.frame(0.0);
+            (void)g.frame(g.length());
+        } catch (const InputError& e) {
+            const YAML::Node line = item.second["line"];
+            r.fail(line ? line : item.second, line ? key + ".line" : key, e.what());
+        }
+    }
+}
+
+}  // namespace rotbeam::cases

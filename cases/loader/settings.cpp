@@ -1,0 +1,237 @@
+// Case loader: analysis, discretization, solver and published references (docs/case-format.md).
+#include <algorithm>
+#include <cmath>
+
+#include "cases/loader/model_builder.hpp"
+
+namespace rotbeam::cases {
+
+const std::vector<std::string> kFormulations = {"displacement", "mixed"};
+const std::vector<std::string> kRotations = {"quaternion", "wiener-milenkovic", "rodrigues",
+                                             "rotation-vector"};
+const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll"};
+const std::vector<std::string> kInterpolations = {"relative", "direct"};
+const std::vector<std::string> kUpdates = {"multiplicative", "additive"};
+const std::vector<std::string> kMassRules = {"consistent", "midpoint", "lumped"};
+
+namespace {
+
+// Keys of `analysis` and the analysis types each belongs to.
+const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKeys = {
+    {"load_factors", {"static", "modal"}},   {"substeps", {"static", "modal"}},
+    {"max_step_cuts", {"static", "modal"}},  {"time_step", {"dynamic"}},
+    {"end_time", {"dynamic"}},               {"output_interval", {"dynamic"}},
+    {"rho_infinity", {"dynamic"}},           {"integrator", {"dynamic"}},
+    {"initial_velocity", {"dynamic"}},       {"initial_state", {"dynamic"}},
+    {"modes", {"modal"}},
+    {"about_static_state", {"modal"}}};
+
+void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
+    if (n["load_factors"] || required) {
+        s.load_factors = r.numbers(r.required(n, "analysis", "load_factors"), "analysis.load_factors");
+        if (s.load_factors.empty()) r.fail(n["load_factors"], "analysis.load_factors", "must not be empty");
+    }
+    if (n["substeps"]) s.substeps = r.positive_integer(n["substeps"], "analysis.substeps");
+    if (n["max_step_cuts"]) {
+        s.max_step_cuts = r.integer(n["max_step_cuts"], "analysis.max_step_cuts");
+        if (s.max_step_cuts < 0) r.fail(n["max_step_cuts"], "analysis.max_step_cuts", "must not be negative");
+    }
+}
+
+void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) {
+    d.time_step = r.positive(r.required(n, "analysis", "time_step"), "analysis.time_step");
+    d.end_time = r.positive(r.required(n, "analysis", "end_time"), "analysis.end_time");
+    if (d.end_time < d.time_step) r.fail(n["end_time"], "analysis.end_time", "is shorter than time_step");
+    if (n["output_interval"]) {
+        d.output_interval = r.non_negative(n["output_interval"], "analysis.output_interval");
+    }
+    if (n["rho_infinity"]) {
+        d.rho_infinity = r.number(n["rho_infinity"], "analysis.rho_infinity");
+        if (d.rho_infinity < 0.0 || d.rho_infinity > 1.0) {
+            r.fail(n["rho_infinity"], "analysis.rho_infinity", "must lie in [0, 1]");
+        }
+    }
+    if (n["integrator"]) d.integrator = r.string(n["integrator"], "analysis.integrator");
+    if (n["initial_state"]) {
+        d.initial_state = r.choice(n["initial_state"], "analysis.initial_state", {"rest", "static"});
+    }
+    if (n["initial_velocity"]) d.initial_velocity = r.vec3(n["initial_velocity"], "analysis.initial_velocity");
+}
+
+std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::string& key,
+                          const std::string& name) {
+    if (name == "formulation") return r.choice(v, key, kFormulations);
+    if (name == "rotation") return r.choice(v, key, kRotations);
+    if (name == "quadrature") return r.choice(v, key, kQuadratures);
+    if (name == "interpolation") return r.choice(v, key, kInterpolations);
+    if (name == "update") return r.choice(v, key, kUpdates);
+    if (name == "mass_rule") return r.choice(v, key, kMassRules);
+    return std::to_string(r.positive_integer(v, key));  // elements, order, quadrature_points
+}
+
+bool listed(const std::vector<double>& list, double x) {
+    return std::any_of(list.begin(), list.end(), [x](double v) {
+        return std::abs(v - x) <= 1e-9 * std::max(1.0, std::abs(x));
+    });
+}
+
+void read_reference_where(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                          const Model& model, ReferenceValue& ref) {
+    const Analysis& a = model.analysis;
+    if (ref.quantity == "frequency") {
+        if (a.kind != AnalysisKind::modal) r.fail(n["quantity"], key + ".quantity", "frequency needs a modal analysis");
+        ref.mode = r.positive_integer(r.required(n, key, "mode"), key + ".mode");
+        if (ref.mode > a.modal.modes) r.fail(n["mode"], key + ".mode", "exceeds analysis.modes");
+        return;
+    }
+    std::vector<std::string> points;
+    for (const Point& p : model.points) points.push_back(p.name);
+    ref.point = r.name_in(r.required(n, key, "point"), key + ".point", points, "point");
+    if (a.kind == AnalysisKind::dynamic) {
+        ref.time = r.non_negative(r.required(n, key, "time"), key + ".time");
+        if (*ref.time > a.dynamics.end_time) r.fail(n["time"], key + ".time", "is after analysis.end_time");
+    } else {
+        ref.load_factor = r.number(r.required(n, key, "load_factor"), key + ".load_factor");
+        // A reference must name a reported step, unless --set replaced the steps (a quick run
+        // at other load factors is legitimate; verify then reports the reference unavailable).
+        if (!r.overridden("analysis.load_factors") &&
+            !listed(a.statics.load_factors, *ref.load_factor)) {
+            r.fail(n["load_factor"], key + ".load_factor", "is not one of analysis.load_factors");
+        }
+    }
+}
+
+ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                              const Model& model) {
+    r.expect_map(n, key, {"quantity", "point", "load_factor", "time", "mode", "value", "components",
+                          "tolerance", "relative", "gated", "justification", "source", "applies_to"});
+    ReferenceValue ref;
+    ref.quantity = r.choice(r.required(n, key, "quantity"), key + ".quantity",
+                            {"displacement", "position", "rotation_angle", "frequency"});
+    for (const char* k : {"point", "load_factor", "time", "mode"}) {
+        if (!n[k]) continue;
+        const bool ok = ref.quantity == "frequency" ? std::string(k) == "mode" : std::string(k) != "mode";
+        if (!ok) r.fail(n[k], child_key(key, k), "not used with quantity " + ref.quantity);
+    }
+    read_reference_where(r, n, key, model, ref);
+    ref.value = r.numbers(r.required(n, key, "value"), key + ".value");
+    const bool vector = ref.quantity == "displacement" || ref.quantity == "position";
+    if (n["components"]) {
+        if (!vector) r.fail(n["components"], key + ".components", "only for vector quantities");
+        for (double c : r.numbers(n["components"], key + ".components")) {
+            if (c != 0.0 && c != 1.0 && c != 2.0) r.fail(n["components"], key + ".components", "components are 0, 1, 2 (x, y, z)");
+            ref.components.push_back(static_cast<int>(c));
+        }
+    }
+    const size_t expected = !vector ? 1 : ref.components.empty() ? 3 : ref.components.size();
+    if (ref.value.size() != expected) {
+        r.fail(n["value"], key + ".value", "expected " + std::to_string(expected) + " number(s), got " +
+                                               std::to_string(ref.value.size()));
+    }
+    ref.tolerance = r.positive(r.required(n, key, "tolerance"), key + ".tolerance");
+    if (n["relative"]) ref.relative = r.boolean(n["relative"], key + ".relative");
+    if (n["gated"]) ref.gated = r.boolean(n["gated"], key + ".gated");
+    ref.justification = r.string(r.required(n, key, "justification"), key + ".justification");
+    ref.source = r.string(r.required(n, key, "source"), key + ".source");
+    if (const YAML::Node at = n["applies_to"]) {
+        const std::string ak = key + ".applies_to";
+        r.expect_map(at, ak, {"formulation", "rotation", "elements", "order", "quadrature",
+                              "quadrature_points", "interpolation", "update", "mass_rule"});
+        for (const auto& item : at) {
+            const std::string name = item.first.Scalar();
+            ref.applies_to[name] = applies_value(r, item.second, ak + "." + name, name);
+        }
+    }
+    return ref;
+}
+
+}  // namespace
+
+void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node n = r.required(root, "", "analysis");
+    std::vector<const char*> allowed = {"type"};
+    for (const auto& [k, kinds] : kAnalysisKeys) allowed.push_back(k);
+    if (!n.IsMap()) r.fail(n, "analysis", "expected a mapping");
+    const std::string type = r.choice(r.required(n, "analysis", "type"), "analysis.type",
+                                      {"static", "dynamic", "modal"});
+    for (const auto& item : n) {
+        const std::string k = item.first.Scalar();
+        const auto it = std::find_if(kAnalysisKeys.begin(), kAnalysisKeys.end(),
+                                     [&](const auto& e) { return k == e.first; });
+        if (k == "type") continue;
+        if (it == kAnalysisKeys.end()) {
+            std::vector<std::string> names(allowed.begin(), allowed.end());
+            const std::string s = closest_match(k, names);
+            r.fail(item.first, "analysis." + k, "unknown key" + (s.empty() ? "" : "; did you mean '" + s + "'?"));
+        }
+        if (std::find(it->second.begin(), it->second.end(), type) == it->second.end()) {
+            r.fail(item.first, "analysis." + k, "not used by a " + type + " analysis");
+        }
+    }
+    Analysis& a = model.analysis;
+    if (type == "static") {
+        a.kind = AnalysisKind::static_;
+        read_static(r, n, a.statics, true);
+    } else if (type == "dynamic") {
+        a.kind = AnalysisKind::dynamic;
+        read_dynamic(r, n, a.dynamics);
+    } else {
+        a.kind = AnalysisKind::modal;
+        read_static(r, n, a.statics, false);
+        if (n["modes"]) a.modal.modes = r.positive_integer(n["modes"], "analysis.modes");
+        if (n["about_static_state"]) {
+            a.modal.about_static_state = r.boolean(n["about_static_state"], "analysis.about_static_state");
+        }
+    }
+}
+
+void read_discretization(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node n = root["discretization"];
+    if (!n) return;
+    const std::string k = "discretization";
+    r.expect_map(n, k, {"formulation", "rotation", "order", "quadrature", "quadrature_points",
+                        "interpolation", "update", "rescale", "mass_rule"});
+    Discretization& d = model.discretization;
+    if (n["formulation"]) d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
+    if (n["rotation"]) d.rotation = r.choice(n["rotation"], k + ".rotation", kRotations);
+    if (n["order"]) d.order = r.positive_integer(n["order"], k + ".order");
+    if (n["quadrature"]) {
+        const std::string q = r.choice(n["quadrature"], k + ".quadrature", kQuadratures);
+        const auto at = std::find(kQuadratures.begin(), kQuadratures.end(), q) - kQuadratures.begin();
+        d.quadrature = static_cast<Quadrature>(at);  // kQuadratures lists the enum in order
+    }
+    if (n["quadrature_points"]) d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points");
+    if (n["interpolation"]) d.interpolation = r.choice(n["interpolation"], k + ".interpolation", kInterpolations);
+    if (n["update"]) d.update = r.choice(n["update"], k + ".update", kUpdates);
+    if (n["rescale"]) d.rescale = r.boolean(n["rescale"], k + ".rescale");
+    if (n["mass_rule"]) d.mass_rule = r.choice(n["mass_rule"], k + ".mass_rule", kMassRules);
+}
+
+void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node n = root["solver"];
+    if (!n) return;
+    const std::string k = "solver";
+    r.expect_map(n, k, {"residual_tolerance", "increment_tolerance", "max_iterations",
+                        "line_search", "driver", "force_scale", "length_scale"});
+    SolverSettings& s = model.solver;
+    if (n["residual_tolerance"]) s.residual_tolerance = r.positive(n["residual_tolerance"], k + ".residual_tolerance");
+    if (n["increment_tolerance"]) s.increment_tolerance = r.positive(n["increment_tolerance"], k + ".increment_tolerance");
+    if (n["max_iterations"]) s.max_iterations = r.positive_integer(n["max_iterations"], k + ".max_iterations");
+    if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
+    if (n["driver"]) s.driver = r.choice(n["driver"], k + ".driver", {"newton", "kinsol"});
+    if (n["force_scale"]) s.force_scale = r.non_negative(n["force_scale"], k + ".force_scale");
+    if (n["length_scale"]) s.length_scale = r.non_negative(n["length_scale"], k + ".length_scale");
+}
+
+void read_references(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node refs = root["references"];
+    if (!refs) return;
+    r.expect_named_map(refs, "references");
+    for (const auto& item : refs) {
+        const std::string key = "references." + item.first.Scalar();
+        model.references.push_back(read_reference(r, item.second, key, model));
+        model.references.back().id = item.first.Scalar();
+    }
+}
+
+}  // namespace rotbeam::cases

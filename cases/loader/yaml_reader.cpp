@@ -1,0 +1,258 @@
+#include "cases/loader/yaml_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace rotbeam::cases {
+
+std::string child_key(const std::string& parent, const std::string& child) {
+    return parent.empty() ? child : parent + "." + child;
+}
+
+int edit_distance(const std::string& a, const std::string& b) {
+    std::vector<int> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = static_cast<int>(j);
+    for (size_t i = 1; i <= a.size(); ++i) {
+        int diagonal = row[0];
+        row[0] = static_cast<int>(i);
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const int above = row[j];
+            const int cost = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                                     std::tolower(static_cast<unsigned char>(b[j - 1]))
+                                 ? 0
+                                 : 1;
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + cost});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    int best_distance = std::max(1, static_cast<int>(word.size()) / 3) + 1;
+    for (const std::string& c : candidates) {
+        const int d = edit_distance(word, c);
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+namespace {
+
+std::string join(const std::vector<std::string>& items) {
+    std::string s;
+    for (size_t i = 0; i < items.size(); ++i) s += (i ? ", " : "") + items[i];
+    return s;
+}
+
+// A scalar as the user wrote it, shortened for messages.
+std::string quoted(const std::string& text) {
+    std::string t = text.size() > 40 ? text.substr(0, 37) + "..." : text;
+    return "'" + t + "'";
+}
+
+}  // namespace
+
+bool YamlReader::overridden(const std::string& key) const {
+    for (const std::string& o : overridden_) {
+        if (key == o || key.rfind(o + ".", 0) == 0) return true;
+    }
+    return false;
+}
+
+std::string YamlReader::where(const YAML::Node& node, const std::string& key) const {
+    if (overridden(key)) return file_ + ":--set:";
+    const YAML::Mark mark = node.Mark();
+    if (mark.is_null() || mark.line < 0) return file_ + ":--set:";
+    return file_ + ":" + std::to_string(mark.line + 1) + ":";
+}
+
+void YamlReader::fail(const YAML::Node& node, const std::string& key,
+                      const std::string& problem) const {
+    throw InputError(where(node, key) + " " + (key.empty() ? "(file)" : key) + ": " + problem);
+}
+
+std::string YamlReader::kind_name(const YAML::Node& node) const {
+    switch (node.Type()) {
+        case YAML::NodeType::Map:
+            return "a mapping";
+        case YAML::NodeType::Sequence:
+            return "a list";
+        case YAML::NodeType::Null:
+            return "nothing";
+        case YAML::NodeType::Scalar:
+            return quoted(node.Scalar());
+        default:
+            return "an undefined node";
+    }
+}
+
+void YamlReader::expect_map(const YAML::Node& node, const std::string& key,
+                            std::initializer_list<const char*> allowed) const {
+    if (!node.IsMap()) fail(node, key, "expected a mapping, got " + kind_name(node));
+    const std::vector<std::string> names(allowed.begin(), allowed.end());
+    for (const auto& item : node) {
+        if (!item.first.IsScalar()) fail(item.first, key, "keys must be plain names");
+        const std::string k = item.first.Scalar();
+        if (std::find(names.begin(), names.end(), k) != names.end()) continue;
+        const std::string suggestion = closest_match(k, names);
+        fail(item.first, child_key(key, k),
+             "unknown key" + (suggestion.empty() ? " (allowed: " + join(names) + ")"
+                                                 : "; did you mean '" + suggestion + "'?"));
+    }
+}
+
+void YamlReader::expect_named_map(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsMap()) fail(node, key, "expected a mapping of names, got " + kind_name(node));
+    if (node.size() == 0) fail(node, key, "must name at least one entry");
+    for (const auto& item : node) {
+        if (!item.first.IsScalar() || item.first.Scalar().empty()) {
+            fail(item.first, key, "names must be non-empty plain scalars");
+        }
+        const std::string& n = item.first.Scalar();
+        const bool ok = std::all_of(n.begin(), n.end(), [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+        });
+        if (!ok) fail(item.first, child_key(key, n), "names may contain only letters, digits, _ and -");
+    }
+}
+
+YAML::Node YamlReader::required(const YAML::Node& map, const std::string& key,
+                                const char* name) const {
+    const YAML::Node child = map[name];
+    if (!child) fail(map, child_key(key, name), "missing required key");
+    return child;
+}
+
+std::string YamlReader::scalar(const YAML::Node& node, const std::string& key,
+                               const std::string& expected) const {
+    if (!node.IsScalar()) fail(node, key, "expected " + expected + ", got " + kind_name(node));
+    return node.Scalar();
+}
+
+double YamlReader::number(const YAML::Node& node, const std::string& key) const {
+    const std::string text = scalar(node, key, "a number");
+    double v = 0.0;
+    try {
+        v = node.as<double>();
+    } catch (const YAML::Exception&) {
+        fail(node, key, "expected a number, got " + quoted(text));
+    }
+    if (!std::isfinite(v)) fail(node, key, "must be finite, got " + quoted(text));
+    return v;
+}
+
+double YamlReader::positive(const YAML::Node& node, const std::string& key) const {
+    const double v = number(node, key);
+    if (!(v > 0.0)) fail(node, key, "must be positive, got " + quoted(node.Scalar()));
+    return v;
+}
+
+double YamlReader::non_negative(const YAML::Node& node, const std::string& key) const {
+    const double v = number(node, key);
+    if (v < 0.0) fail(node, key, "must not be negative, got " + quoted(node.Scalar()));
+    return v;
+}
+
+int YamlReader::integer(const YAML::Node& node, const std::string& key) const {
+    const std::string text = scalar(node, key, "an integer");
+    try {
+        return node.as<int>();
+    } catch (const YAML::Exception&) {
+        fail(node, key, "expected an integer, got " + quoted(text));
+    }
+}
+
+int YamlReader::positive_integer(const YAML::Node& node, const std::string& key) const {
+    const int v = integer(node, key);
+    if (v < 1) fail(node, key, "must be a positive integer, got " + quoted(node.Scalar()));
+    return v;
+}
+
+bool YamlReader::boolean(const YAML::Node& node, const std::string& key) const {
+    const std::string text = scalar(node, key, "true or false");
+    try {
+        return node.as<bool>();
+    } catch (const YAML::Exception&) {
+        fail(node, key, "expected true or false, got " + quoted(text));
+    }
+}
+
+std::string YamlReader::string(const YAML::Node& node, const std::string& key) const {
+    return scalar(node, key, "a string");
+}
+
+std::string YamlReader::choice(const YAML::Node& node, const std::string& key,
+                               const std::vector<std::string>& choices) const {
+    const std::string v = scalar(node, key, "one of " + join(choices));
+    if (std::find(choices.begin(), choices.end(), v) != choices.end()) return v;
+    const std::string suggestion = closest_match(v, choices);
+    fail(node, key,
+         quoted(v) + " is not one of " + join(choices) +
+             (suggestion.empty() ? "" : "; did you mean '" + suggestion + "'?"));
+}
+
+std::string YamlReader::name_in(const YAML::Node& node, const std::string& key,
+                                const std::vector<std::string>& names,
+                                const std::string& what) const {
+    const std::string v = scalar(node, key, "the name of a " + what);
+    if (std::find(names.begin(), names.end(), v) != names.end()) return v;
+    const std::string suggestion = closest_match(v, names);
+    fail(node, key,
+         "unknown " + what + " " + quoted(v) +
+             (suggestion.empty() ? " (known: " + join(names) + ")"
+                                 : "; did you mean '" + suggestion + "'?"));
+}
+
+std::vector<double> YamlReader::numbers(const YAML::Node& node, const std::string& key) const {
+    if (node.IsScalar()) return {number(node, key)};
+    if (!node.IsSequence()) fail(node, key, "expected a list of numbers, got " + kind_name(node));
+    std::vector<double> v;
+    for (size_t i = 0; i < node.size(); ++i) {
+        v.push_back(number(node[i], key + "[" + std::to_string(i) + "]"));
+    }
+    return v;
+}
+
+Vec3 YamlReader::vec3(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsSequence() || node.size() != 3) {
+        fail(node, key, "expected a list of 3 numbers, got " + kind_name(node) +
+                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+    }
+    const std::vector<double> v = numbers(node, key);
+    return Vec3(v[0], v[1], v[2]);
+}
+
+Vec6 YamlReader::vec6(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsSequence() || node.size() != 6) {
+        fail(node, key, "expected a list of 6 numbers, got " + kind_name(node) +
+                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+    }
+    const std::vector<double> v = numbers(node, key);
+    Vec6 out;
+    for (int i = 0; i < 6; ++i) out[i] = v[static_cast<size_t>(i)];
+    return out;
+}
+
+Mat6 YamlReader::mat6(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsSequence() || node.size() != 6) {
+        fail(node, key, "expected 6 rows of 6 numbers, got " + kind_name(node) +
+                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+    }
+    Mat6 M;
+    for (int i = 0; i < 6; ++i) {
+        const std::string row_key = key + "[" + std::to_string(i) + "]";
+        M.row(i) = vec6(node[static_cast<size_t>(i)], row_key).transpose();
+    }
+    return M;
+}
+
+}  // namespace rotbeam::cases

@@ -1,0 +1,79 @@
+// Typed, validating access to a parsed YAML case file.
+//
+// Every problem becomes ONE InputError line `FILE:LINE: KEY: problem`, where KEY is the full key
+// path (`members.beam.elements`) and LINE the 1-based line of the offending node. Values that came
+// from a `--set key.path=value` override report `FILE:--set:` instead of a line, because the file
+// does not contain them. Unknown keys get a "did you mean ..." suggestion (edit distance).
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace rotbeam::cases {
+
+// "a.b" + "c" → "a.b.c"; an empty parent gives the child.
+std::string child_key(const std::string& parent, const std::string& child);
+
+// Levenshtein distance, and the closest candidate within a distance that still reads as a typo
+// (≤ max(1, |word|/3)); empty when none is close.
+int edit_distance(const std::string& a, const std::string& b);
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+class YamlReader {
+public:
+    YamlReader(std::string file, std::set<std::string> overridden_keys)
+        : file_(std::move(file)), overridden_(std::move(overridden_keys)) {}
+
+    const std::string& file() const { return file_; }
+    // Whether `key` (or a parent of it) was set by a --set override.
+    bool overridden(const std::string& key) const;
+
+    // `FILE:LINE:` or `FILE:--set:` for a node reached by key path `key`.
+    std::string where(const YAML::Node& node, const std::string& key) const;
+    [[noreturn]] void fail(const YAML::Node& node, const std::string& key,
+                           const std::string& problem) const;
+
+    // A mapping whose keys are all in `allowed` (else: unknown key, with a suggestion).
+    void expect_map(const YAML::Node& node, const std::string& key,
+                    std::initializer_list<const char*> allowed) const;
+    // A mapping with arbitrary (user-chosen) names as keys, each a valid identifier.
+    void expect_named_map(const YAML::Node& node, const std::string& key) const;
+    // The child `name` of `map`, which must be present.
+    YAML::Node required(const YAML::Node& map, const std::string& key, const char* name) const;
+
+    double number(const YAML::Node& node, const std::string& key) const;  // finite
+    double positive(const YAML::Node& node, const std::string& key) const;
+    double non_negative(const YAML::Node& node, const std::string& key) const;
+    int integer(const YAML::Node& node, const std::string& key) const;
+    int positive_integer(const YAML::Node& node, const std::string& key) const;
+    bool boolean(const YAML::Node& node, const std::string& key) const;
+    std::string string(const YAML::Node& node, const std::string& key) const;
+    // One of `choices` (else: the list, and the closest choice).
+    std::string choice(const YAML::Node& node, const std::string& key,
+                       const std::vector<std::string>& choices) const;
+    // A name that must be one of `names` (points, members, sections); `what` says which.
+    std::string name_in(const YAML::Node& node, const std::string& key,
+                        const std::vector<std::string>& names, const std::string& what) const;
+
+    Vec3 vec3(const YAML::Node& node, const std::string& key) const;
+    Vec6 vec6(const YAML::Node& node, const std::string& key) const;
+    // A sequence of numbers; a scalar is accepted as a one-element list.
+    std::vector<double> numbers(const YAML::Node& node, const std::string& key) const;
+    Mat6 mat6(const YAML::Node& node, const std::string& key) const;  // 6 rows of 6
+
+private:
+    std::string kind_name(const YAML::Node& node) const;
+    std::string scalar(const YAML::Node& node, const std::string& key,
+                       const std::string& expected) const;
+
+    std::string file_;
+    std::set<std::string> overridden_;
+};
+
+}  // namespace rotbeam::cases

@@ -1,0 +1,192 @@
+// Case loader: the catalog loads and means what benchmarks.md says, --set overrides are applied
+// and validated like the file, describe_model names what `rotbeam check` must show.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "cases/loader/case_loader.hpp"
+#include "cases/loader/yaml_reader.hpp"
+#include "core/errors.hpp"
+#include "core/geometry.hpp"
+
+using namespace rotbeam;
+
+namespace {
+
+std::string case_path(const std::string& name) {
+    return std::string(ROTBEAM_SOURCE_DIR) + "/cases/" + name + ".yaml";
+}
+
+// The message of the InputError thrown by `f` (empty when none is thrown).
+template <class F>
+std::string input_error(F f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+const ReferenceValue& reference(const Model& m, const std::string& id) {
+    const auto it = std::find_if(m.references.begin(), m.references.end(),
+                                 [&](const ReferenceValue& r) { return r.id == id; });
+    BOOST_REQUIRE(it != m.references.end());
+    return *it;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(case_loader)
+
+BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
+    const std::vector<std::string> catalog = {
+        "cantilever-moment", "cantilever-moment-4", "bend-45",       "joined-beam",
+        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",  "helix",
+        "helix-precessing",  "tip-load-cantilever", "free-vibration"};
+    for (const std::string& name : catalog) {
+        BOOST_TEST_CONTEXT(name) {
+            const Model m = load_case(case_path(name));
+            BOOST_TEST(m.name == name);
+            const bool joined = name.rfind("joined-beam", 0) == 0;
+            BOOST_TEST(m.point_index(joined ? "joint" : "tip") >= 0);
+            if (!joined) BOOST_TEST(m.point_index("root") >= 0);
+            BOOST_TEST(!describe_model(m).empty());
+        }
+    }
+    // Every *.yaml in cases/ is in the catalog list above (a new case gets a test line).
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(ROTBEAM_SOURCE_DIR) + "/cases")) {
+        if (entry.path().extension() != ".yaml") continue;
+        BOOST_TEST((std::find(catalog.begin(), catalog.end(), entry.path().stem().string()) !=
+                    catalog.end()),
+                   entry.path().filename().string() << " is not in the catalog test");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(cantilever_moment_is_table_one) {
+    const Model m = load_case(case_path("cantilever-moment"));
+    BOOST_TEST(m.members.size() == 1u);
+    BOOST_TEST(m.members[0].elements == 16);
+    // EI = E·I2 = 30e6/12 = 2.5e6; the unit moment is −πEI/L e_y with L = 12.
+    const Mat6 K = *m.members[0].sections[0].section.stiffness;
+    BOOST_TEST(K(4, 4) == 2.5e6, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(K(1, 1) == 5.0 / 6.0 * 30e6 / 2.6, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(m.point_loads.at(0).moment.y() == -kPi * 2.5e6 / 12.0, boost::test_tools::tolerance(1e-15));
+    // Table I: 6 analytical + 7 converged GEBT entries gated, 2 non-converged recorded.
+    BOOST_TEST(m.references.size() == 15u);
+    const auto gated = std::count_if(m.references.begin(), m.references.end(),
+                                     [](const ReferenceValue& r) { return r.gated; });
+    BOOST_TEST(gated == 13);
+    BOOST_TEST(!reference(m, "gebt-wm-1p96").gated);
+    BOOST_TEST(!reference(m, "gebt-rodrigues-1p0").gated);
+    const ReferenceValue& r = reference(m, "gebt-wm-1p2");
+    BOOST_TEST(r.applies_to.at("rotation") == "wiener-milenkovic");
+    BOOST_TEST(r.applies_to.at("elements") == "16");
+    BOOST_TEST((r.components == std::vector<int>{0, 2}));
+    BOOST_TEST(r.value.at(0) == -13.8800);
+}
+
+BOOST_AUTO_TEST_CASE(bend45_is_the_exact_arc_with_a_unit_tip_force) {
+    const Model m = load_case(case_path("bend-45"));
+    const ReferenceGeometry g(m, 0);
+    BOOST_TEST(std::abs(g.length() - 25.0 * kPi) < 1e-4);
+    BOOST_TEST((m.point_loads.at(0).force - Vec3::UnitZ()).norm() == 0.0);
+    BOOST_TEST((m.analysis.statics.load_factors == std::vector<double>{300, 450, 600}));
+    BOOST_TEST(reference(m, "table-ii-600").tolerance >= 0.3);
+}
+
+BOOST_AUTO_TEST_CASE(joined_beam_has_table_three_at_the_papers_mesh) {
+    const Model m = load_case(case_path("joined-beam"));
+    BOOST_TEST(m.members.size() == 2u);
+    BOOST_TEST((m.analysis.kind == AnalysisKind::modal));
+    BOOST_TEST(m.references.size() == 10u);
+    const ReferenceValue& g1 = reference(m, "gebt-mode-1");
+    BOOST_TEST(g1.value.at(0) == 35.23);
+    BOOST_TEST(g1.relative);
+    BOOST_TEST(g1.applies_to.at("elements") == "10");
+    // ρA = 13.5 kg/m and rotary inertia about e1 = ρ(I2 + I3).
+    const Mat6 M = *m.members[0].sections[0].section.mass;
+    BOOST_TEST(M(0, 0) == 13.5, boost::test_tools::tolerance(1e-14));
+    BOOST_TEST(M(3, 3) == 2700.0 * (1.0416666666666667e-6 + 4.166666666666667e-6),
+               boost::test_tools::tolerance(1e-14));
+    const Model f = load_case(case_path("joined-beam-follower"));
+    BOOST_TEST(f.has_follower_loads());
+    BOOST_TEST(f.point_loads.at(0).time(kPi / 40.0) == 1.0, boost::test_tools::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(blade_keeps_the_fully_populated_matrices) {
+    const Model m = load_case(case_path("blade-mh104"));
+    const Section& s = m.members[0].sections[0].section;
+    BOOST_TEST((*s.stiffness)(0, 5) == -4.736e8);
+    BOOST_TEST((*s.mass)(5, 0) == -71.6871);
+    BOOST_TEST((s.compliance * *s.stiffness - Mat6::Identity()).norm() < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(precessing_helix_takes_160_equal_steps_to_four_pi) {
+    const Model m = load_case(case_path("helix-precessing"));
+    const StaticSettings& s = m.analysis.statics;
+    BOOST_TEST(s.load_factors.size() * static_cast<size_t>(s.substeps) >= 160u);
+    BOOST_TEST(s.load_factors.back() == 4.0 * kPi, boost::test_tools::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(overrides_set_values_lists_and_new_keys) {
+    const Model m = load_case(case_path("cantilever-moment"),
+                              {"discretization.order=6", "members.beam.elements=8",
+                               "analysis.load_factors=[0.4,2]", "loads.tip-moment.frame=follower",
+                               "discretization.rotation=rodrigues"});
+    BOOST_TEST(m.discretization.order == 6);
+    BOOST_TEST(m.members[0].elements == 8);
+    BOOST_TEST((m.analysis.statics.load_factors == std::vector<double>{0.4, 2.0}));
+    BOOST_TEST(m.has_follower_loads());
+    BOOST_TEST(m.discretization.rotation == "rodrigues");
+    // A key absent from the file (and a section absent from the file) can be set.
+    const Model t = load_case(case_path("tip-load-cantilever"),
+                              {"solver.max_iterations=7", "gravity=[0,0,-9.81]",
+                               "sections.square.density=7850"});
+    BOOST_TEST(t.solver.max_iterations == 7);
+    BOOST_TEST(t.gravity.z() == -9.81);
+}
+
+BOOST_AUTO_TEST_CASE(overrides_are_validated_like_the_file) {
+    const std::string path = case_path("cantilever-moment");
+    const std::string order = input_error([&] { load_case(path, {"discretization.order=0"}); });
+    BOOST_TEST(order == path + ":--set: discretization.order: must be a positive integer, got '0'");
+    const std::string typo = input_error([&] { load_case(path, {"discretization.ordr=3"}); });
+    BOOST_TEST(typo.find("discretization.ordr: unknown key; did you mean 'order'?") != std::string::npos);
+    const std::string rotation = input_error([&] { load_case(path, {"discretization.rotation=rodriguez"}); });
+    BOOST_TEST(rotation.find("did you mean 'rodrigues'?") != std::string::npos);
+    BOOST_TEST(!input_error([&] { load_case(path, {"no-equals-sign"}); }).empty());
+    BOOST_TEST(!input_error([&] { load_case(path, {"analysis.load_factors=[1, nan]"}); }).empty());
+    BOOST_TEST(!input_error([&] { load_case(path, {"members.beam.elements.x=1"}); }).empty());
+    // Gravity needs inertia: a section without mass is refused, naming the section.
+    const std::string mass = input_error([&] { load_case(path, {"gravity=[0,0,-1]"}); });
+    BOOST_TEST(mass.find("sections.square: needs mass or density") != std::string::npos, mass);
+}
+
+BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
+    const std::string text =
+        "points:\n  root: [0, 0, 0]\n  tip: [1, 0, 0]\nsections:\n  s:\n"
+        "    isotropic: {E: 1, G: 1, A: 1, I2: 1, I3: 1, J: 1}\n"
+        "members:\n  beam: {from: root, to: tip, section: s, elements: -2}\n"
+        "analysis: {type: static, load_factors: [1]}\n";
+    BOOST_TEST(input_error([&] { load_case_text(text, "x.yaml"); }) ==
+               "x.yaml:8: members.beam.elements: must be a positive integer, got '-2'");
+}
+
+BOOST_AUTO_TEST_CASE(describe_model_lists_members_points_loads_and_analysis) {
+    const std::string d = describe_model(load_case(case_path("bend-45")));
+    for (const char* word : {"case bend-45", "root", "tip", "beam: root → tip, arc", "16 element",
+                             "section square", "EI2 833333", "point tip: force (0, 0, 1)",
+                             "static load factors [300, 450, 600]", "references: 5"}) {
+        BOOST_TEST(d.find(word) != std::string::npos, "'" << word << "' missing in:\n" << d);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(edit_distance_suggests_close_keys_only) {
+    BOOST_TEST(cases::edit_distance("elemnts", "elements") == 1);
+    BOOST_TEST(cases::closest_match("elemnts", {"elements", "section", "twist"}) == "elements");
+    BOOST_TEST(cases::closest_match("zzz", {"elements", "section", "twist"}).empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
