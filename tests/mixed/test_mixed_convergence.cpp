@@ -99,16 +99,46 @@ double lambda_star(int elements, double lambda_c) {
     return lambda;
 }
 
+// Independent reduction (no code shared with the formulation): with F = 0 and the moment about a
+// fixed axis, Eqs. 48 reduce to the scalar recursion c_i = ĉ_i + a g(c_i), ĉ_{i+1} = c_i + a g(c_i)
+// with a = h κ = λπ/(2N) and g = dc/dφ = 1 + k c² (Rodrigues k = 1/4, WM k = 1/16). The first
+// step has a real root only while 1 − 4 k a (ĉ_i + a) ≥ 0: bisection on λ for the largest λ
+// where every element's discriminant is non-negative.
+bool reduction_solvable(double lambda, int n, double k) {
+    const double a = lambda * kPi / (2.0 * n);
+    double c_hat = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double disc = 1.0 - 4.0 * k * a * (c_hat + a);
+        if (disc < 0.0) return false;
+        const double c = (1.0 - std::sqrt(disc)) / (2.0 * k * a);  // the root continuous from 0
+        c_hat = c + a * (1.0 + k * c * c);
+    }
+    return true;
+}
+
+double reduction_lambda_star(int n, double k, double lambda_c) {
+    double lo = 0.0, hi = 1.5 * lambda_c;
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (reduction_solvable(mid, n, k) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
 template <class P>
-void check_lambda_star(double lambda_c, double lambda_16) {
+void check_lambda_star(double lambda_c, double lambda_16, double k) {
     for (int n = 16; n <= 64; n *= 2) {
         const double measured = lambda_star<P>(n, lambda_c);
+        const double reduced = reduction_lambda_star(n, k, lambda_c);
         const double model = lambda_c * (1.0 - 1.1 / n);
-        BOOST_TEST_MESSAGE(P::kName << ": λ*(" << n << ") = " << std::setprecision(6) << measured
-                                    << ", λc(1 − 1.1/N) = " << model);
-        // The 1.1/N law is a fit (benchmarks.md §1): the measured coefficient N(1 − λ*/λc) must
-        // lie within 1.1 ± 0.1 (it is ≈ 1.01 at N = 16, ≈ 1.08 at 32). λ*(16) is the value
-        // benchmarks.md quotes to three decimals.
+        BOOST_TEST_MESSAGE(P::kName << ": λ*(" << n << ") = " << std::setprecision(7) << measured
+                                    << ", reduction " << reduced << ", λc(1 − 1.1/N) = " << model);
+        // Continuation resolves the fold to its last step δ = 1e-5 λc; near the fold Newton's
+        // basin shrinks, so the last accepted load may sit a few steps short: 1e-4 λc.
+        BOOST_TEST(measured <= reduced + 1e-9);
+        BOOST_TEST(reduced - measured < 1e-4 * lambda_c);
+        // The 1.1/N law is a fit (benchmarks.md §1): the coefficient N(1 − λ*/λc) is 1.01 at
+        // N = 16, 1.07 at 32, 1.10 at 64; λ*(16) is the value benchmarks.md quotes.
         BOOST_TEST(std::abs(n * (1.0 - measured / lambda_c) - 1.1) < 0.1);
         if (n == 16) BOOST_TEST(std::abs(measured - lambda_16) < 0.5e-3);
     }
@@ -156,11 +186,11 @@ BOOST_AUTO_TEST_CASE(bend_45_degree_tip_converges_under_refinement) {
 }
 
 BOOST_AUTO_TEST_CASE(rodrigues_limit_load_follows_one_minus_1p1_over_n) {
-    check_lambda_star<param::Rodrigues>(1.0, 0.937);
+    check_lambda_star<param::Rodrigues>(1.0, 0.937, 0.25);
 }
 
 BOOST_AUTO_TEST_CASE(wiener_milenkovic_limit_load_follows_one_minus_1p1_over_n) {
-    check_lambda_star<param::WienerMilenkovic>(2.0, 1.874);
+    check_lambda_star<param::WienerMilenkovic>(2.0, 1.874, 1.0 / 16.0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
