@@ -139,8 +139,10 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     if (model.needs_inertia() || model.gravity.norm() > 0.0) {
         for (const Member& m : model.members) {
             for (const SectionStation& st : m.sections) {
-                if (!st.section.mass) {
-                    r.fail(root["sections"][st.section.name], "sections." + st.section.name,
+                if (st.section.mass) continue;
+                for (const auto& item : root["sections"]) {  // report the line of the name
+                    if (item.first.Scalar() != st.section.name) continue;
+                    r.fail(item.first, "sections." + st.section.name,
                            "needs mass or density (the analysis or gravity uses inertia)");
                 }
             }
@@ -156,7 +158,8 @@ Model load_case_text(const std::string& text, const std::string& file_name,
     YAML::Node root = parse(text, file_name);
     std::set<std::string> overridden;
     for (const std::string& o : overrides) overridden.insert(apply_override(root, o, file_name));
-    const YamlReader reader(file_name, overridden);
+    YamlReader reader(file_name, overridden);
+    reader.index_lines(root);
     try {
         return build(reader, root, file_name);
     } catch (const YAML::Exception& e) {

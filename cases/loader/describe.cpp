@@ -109,7 +109,12 @@ void describe_analysis(const Model& model, std::ostream& os) {
     os << "analysis: ";
     if (a.kind == AnalysisKind::dynamic) {
         os << "dynamic, Δt " << a.dynamics.time_step << ", end " << a.dynamics.end_time
-           << ", ρ∞ " << a.dynamics.rho_infinity << "\n";
+           << ", ρ∞ " << a.dynamics.rho_infinity << ", initial state " << a.dynamics.initial_state
+           << "\n";
+    } else if (a.kind == AnalysisKind::modal && a.statics.load_factors.empty()) {
+        os << "modal, " << a.modal.modes << " modes about the "
+           << (a.modal.about_static_state ? "unloaded static state" : "reference configuration")
+           << "\n";
     } else {
         if (a.kind == AnalysisKind::modal) os << "modal, " << a.modal.modes << " modes; ";
         os << "static load factors [";

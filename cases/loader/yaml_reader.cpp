@@ -68,8 +68,32 @@ bool YamlReader::overridden(const std::string& key) const {
     return false;
 }
 
+void YamlReader::index(const YAML::Node& node, const std::string& path) {
+    if (node.IsMap()) {
+        for (const auto& item : node) {
+            if (!item.first.IsScalar()) continue;
+            const std::string k = child_key(path, item.first.Scalar());
+            if (!item.first.Mark().is_null()) lines_[k] = item.first.Mark().line;
+            index(item.second, k);
+        }
+    } else if (node.IsSequence()) {
+        for (size_t i = 0; i < node.size(); ++i) {
+            const std::string k = path + "[" + std::to_string(i) + "]";
+            if (!node[i].Mark().is_null()) lines_[k] = node[i].Mark().line;
+            index(node[i], k);
+        }
+    }
+}
+
 std::string YamlReader::where(const YAML::Node& node, const std::string& key) const {
     if (overridden(key)) return file_ + ":--set:";
+    // The key's own line, else (a missing key) the line of its closest parent key.
+    for (std::string k = key; !k.empty();) {
+        const auto it = lines_.find(k);
+        if (it != lines_.end()) return file_ + ":" + std::to_string(it->second + 1) + ":";
+        const size_t cut = k.find_last_of(".[");
+        k = cut == std::string::npos ? std::string() : k.substr(0, cut);
+    }
     const YAML::Mark mark = node.Mark();
     if (mark.is_null() || mark.line < 0) return file_ + ":--set:";
     return file_ + ":" + std::to_string(mark.line + 1) + ":";

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <initializer_list>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -31,6 +32,10 @@ public:
         : file_(std::move(file)), overridden_(std::move(overridden_keys)) {}
 
     const std::string& file() const { return file_; }
+
+    // Records the line of every key (and list item) of the tree by key path, so that messages
+    // name the line of the key — a block mapping or list value starts on the line after it.
+    void index_lines(const YAML::Node& root) { index(root, ""); }
     // Whether `key` (or a parent of it) was set by a --set override.
     bool overridden(const std::string& key) const;
 
@@ -72,8 +77,11 @@ private:
     std::string scalar(const YAML::Node& node, const std::string& key,
                        const std::string& expected) const;
 
+    void index(const YAML::Node& node, const std::string& path);
+
     std::string file_;
     std::set<std::string> overridden_;
+    std::map<std::string, int> lines_;  // key path → 0-based line of its key
 };
 
 }  // namespace rotbeam::cases

@@ -1,0 +1,82 @@
+// The bad-input corpus (cases/bad/): every file is refused with ONE line
+// `FILE:LINE: KEY: problem` carrying the expected fragment, as an InputError — never a crash,
+// never another exception type.
+#include <boost/test/unit_test.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "cases/loader/case_loader.hpp"
+#include "core/errors.hpp"
+
+using namespace rotbeam;
+
+namespace {
+
+const std::string kBadDir = std::string(ROTBEAM_SOURCE_DIR) + "/cases/bad/";
+
+// expected.txt: `file | fragment` per line, '#' comments.
+std::map<std::string, std::string> expected_fragments() {
+    std::map<std::string, std::string> out;
+    std::ifstream in(kBadDir + "expected.txt");
+    BOOST_REQUIRE(in.good());
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        const size_t bar = line.find(" | ");
+        BOOST_REQUIRE(bar != std::string::npos);
+        out[line.substr(0, bar)] = line.substr(bar + 3);
+    }
+    return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(bad_input_corpus)
+
+BOOST_AUTO_TEST_CASE(corpus_has_at_least_twenty_files_all_listed) {
+    const auto expected = expected_fragments();
+    BOOST_TEST(expected.size() >= 20u);
+    std::set<std::string> on_disk;
+    for (const auto& e : std::filesystem::directory_iterator(kBadDir)) {
+        const std::string name = e.path().filename().string();
+        if (name != "expected.txt") on_disk.insert(name);
+    }
+    for (const std::string& name : on_disk) {
+        BOOST_TEST(expected.count(name) == 1u, name << " has no expected message");
+    }
+    for (const auto& [name, fragment] : expected) {
+        BOOST_TEST(on_disk.count(name) == 1u, name << " is listed but missing");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(every_bad_file_gives_one_line_naming_file_line_key_and_problem) {
+    for (const auto& [name, fragment] : expected_fragments()) {
+        BOOST_TEST_CONTEXT(name) {
+            const std::string path = kBadDir + name;
+            std::string message;
+            bool input_error = false;
+            try {
+                load_case(path);
+            } catch (const InputError& e) {
+                input_error = true;
+                message = e.what();
+            } catch (const std::exception& e) {
+                message = std::string("wrong exception type: ") + e.what();
+            }
+            BOOST_TEST(input_error, message);
+            BOOST_TEST(message.rfind(path + ":", 0) == 0u, message);
+            BOOST_TEST(message.find(fragment) != std::string::npos,
+                       "'" << message << "' lacks '" << fragment << "'");
+            BOOST_TEST(message.find('\n') == std::string::npos, message);
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(missing_file_and_directory_are_input_errors) {
+    BOOST_CHECK_THROW(load_case(kBadDir + "does-not-exist.yaml"), InputError);
+    BOOST_CHECK_THROW(load_case(kBadDir), InputError);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
