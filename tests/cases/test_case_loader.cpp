@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/yaml_reader.hpp"
@@ -181,6 +183,24 @@ BOOST_AUTO_TEST_CASE(describe_model_lists_members_points_loads_and_analysis) {
                              "static load factors [300, 450, 600]", "references: 5"}) {
         BOOST_TEST(d.find(word) != std::string::npos, "'" << word << "' missing in:\n" << d);
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_complete_example_of_the_documentation_loads) {
+    std::ifstream in(std::string(ROTBEAM_SOURCE_DIR) + "/docs/case-format.md");
+    BOOST_REQUIRE(in.good());
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string doc = buffer.str();
+    const size_t start = doc.rfind("```yaml\n");
+    BOOST_REQUIRE(start != std::string::npos);
+    const size_t end = doc.find("```", start + 8);
+    const Model m = load_case_text(doc.substr(start + 8, end - start - 8), "case-format.md");
+    BOOST_TEST(m.name == "example");
+    BOOST_TEST(m.members[0].sections.size() == 2u);
+    BOOST_TEST(!m.members[0].sections[1].section.stiffness.has_value());  // rigid shear rows
+    BOOST_TEST(m.distributed_loads.size() == 1u);
+    BOOST_TEST(m.has_follower_loads());
+    BOOST_TEST(m.references.at(0).applies_to.at("order") == "3");
 }
 
 BOOST_AUTO_TEST_CASE(edit_distance_suggests_close_keys_only) {
