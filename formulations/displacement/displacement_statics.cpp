@@ -4,10 +4,12 @@
 
 #include "formulations/displacement/displacement_statics_assembly.hpp"
 #include "formulations/displacement/displacement_statics_setup.hpp"
-#include "parameterizations/quaternion.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam::form {
 
-template class DisplacementStatics<param::Quaternion>;
+#define ROTBEAM_DISPLACEMENT_INSTANTIATE(P) template class DisplacementStatics<param::P>;
+ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DISPLACEMENT_INSTANTIATE)
+#undef ROTBEAM_DISPLACEMENT_INSTANTIATE
 
 }  // namespace rotbeam::form

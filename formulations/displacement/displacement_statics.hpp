@@ -24,7 +24,7 @@
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/mesh.hpp"
 #include "parameterizations/concept.hpp"
-#include "parameterizations/quaternion.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam::form {
 
@@ -66,6 +66,7 @@ private:
 
     void build_pattern();
     void compute_scales(const Model& model);
+    void update_residual_scale();
     void gather_element(const MeshElement& e, bool jacobian);
     void assemble_element(int element, VecX& r, SparseMatrix* J);
     // External distributed loads and gravity at one quadrature point: the force/moment density
@@ -80,6 +81,8 @@ private:
     std::vector<NodeLoad> point_loads_;
     double lambda_ = 0.0;
     double force_scale_ = 1.0;
+    double unit_force_scale_ = 1.0;  // at λ = 1
+    bool fixed_force_scale_ = false;
     double length_scale_ = 1.0;
     VecX residual_scale_;
     VecX increment_scale_;
@@ -105,7 +108,9 @@ private:
     AssemblyCounters counters_;
 };
 
-// Instantiated in displacement_statics.cpp.
-extern template class DisplacementStatics<param::Quaternion>;
+// Instantiated in displacement_statics.cpp for every parameterization of the registry.
+#define ROTBEAM_DISPLACEMENT_EXTERN(P) extern template class DisplacementStatics<param::P>;
+ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DISPLACEMENT_EXTERN)
+#undef ROTBEAM_DISPLACEMENT_EXTERN
 
 }  // namespace rotbeam::form

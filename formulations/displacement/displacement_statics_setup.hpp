@@ -131,22 +131,38 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
         }
         F = stiffness / (L * L) * (motion > 0.0 ? motion : 1.0);
     }
-    if (model.solver.force_scale > 0.0) F = model.solver.force_scale;
+    fixed_force_scale_ = model.solver.force_scale > 0.0;
+    if (fixed_force_scale_) F = model.solver.force_scale;
+    unit_force_scale_ = F;
     force_scale_ = F;
     length_scale_ = L;
     residual_scale_.resize(mesh_.unknowns);
     increment_scale_.resize(mesh_.unknowns);
     for (int i = 0; i < mesh_.unknowns; i += 6) {
-        residual_scale_.segment<3>(i).setConstant(F);
-        residual_scale_.segment<3>(i + 3).setConstant(F * L);
         increment_scale_.segment<3>(i).setConstant(L);
         increment_scale_.segment<3>(i + 3).setConstant(1.0);
+    }
+    update_residual_scale();
+}
+
+// The loads grow with λ, so does the characteristic force: F(λ) = max(1, |λ|) F(1), unless the
+// case fixes it (solver.force_scale). A force scale frozen at λ = 1 would ask for 1e-12 of a unit
+// load when the case applies 600 units (the 45° bend) — far below the round-off of the residual
+// (EA ε_mach per term). The values change in place (drivers hold a reference).
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::update_residual_scale() {
+    force_scale_ = fixed_force_scale_ ? unit_force_scale_
+                                      : std::max(1.0, std::abs(lambda_)) * unit_force_scale_;
+    for (int i = 0; i < mesh_.unknowns; i += 6) {
+        residual_scale_.segment<3>(i).setConstant(force_scale_);
+        residual_scale_.segment<3>(i + 3).setConstant(force_scale_ * length_scale_);
     }
 }
 
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::set_load_factor(double lambda) {
     lambda_ = lambda;
+    if (residual_scale_.size() == mesh_.unknowns) update_residual_scale();
     for (const PrescribedMotion& m : mesh_.prescribed) {
         u_[m.node] = lambda * m.displacement;
         p_[m.node] = P::from_rotation_vector(lambda * m.rotation);
