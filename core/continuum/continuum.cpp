@@ -12,6 +12,7 @@
 #include "core/continuum/rod_ode.hpp"
 #include "core/errors.hpp"
 #include "core/oracles/gsl_guard.hpp"
+#include "core/so3.hpp"
 
 namespace rotbeam {
 namespace {
@@ -150,9 +151,9 @@ double max_abs(const gsl_vector* v) {
 }
 
 // The residual tolerance for these loads: options.residual_tolerance times the loads' size in
-// the scaled units, clamped to [1e-3, 1], so that loads much smaller than EI/L² are still
-// resolved relatively (down to the ODE tolerance's absolute floor) and large ones are not held
-// to a relative accuracy beyond the integration's.
+// the scaled units (at least 1e-3), so that loads much smaller than EI/L² are still resolved
+// relatively (down to the ODE tolerance's absolute floor) and loads much larger than EI/L² are
+// held to the same relative accuracy, which is what the integration can deliver.
 double residual_tolerance(const RodIntegrator& rod, const RodLoads& loads,
                           const ContinuumOptions& options) {
     const double length = rod.moment_scale() / rod.force_scale();
@@ -161,7 +162,7 @@ double residual_tolerance(const RodIntegrator& rod, const RodLoads& loads,
         (loads.dead_moment.norm() + loads.follower_moment.norm()) * length / rod.moment_scale();
     for (const RodPointLoad& p : loads.points)
         size += p.force.norm() / rod.force_scale() + p.moment.norm() / rod.moment_scale();
-    return options.residual_tolerance * std::clamp(size, 1e-3, 1.0);
+    return options.residual_tolerance * std::max(size, 1e-3);
 }
 
 // Newton-type hybrid (Powell's dogleg with the Jacobian above) from the guess z.
@@ -226,13 +227,36 @@ ContinuumStep record_step(const Setup& setup, RodIntegrator& rod, const RodLoads
     return step;
 }
 
+constexpr int kMonitoredSections = 8;  // equally spaced sections watched for the turn limit
+
 // Continuation state between load increments: the last two converged roots for a secant guess.
+// `rotations` are the sections' absolute rotations at `stations` in the last converged state.
 struct Path {
     double lambda = 0.0;
     Vec6 z = Vec6::Zero();
     Vec6 z_previous = Vec6::Zero();
     double last_increment = 0.0;
+    std::vector<double> stations;
+    std::vector<Mat3> rotations;
 };
+
+// Largest rotation of any monitored section between the path's last state and the root z, with
+// the new rotations in `rotations`. A shooting problem has other roots (rods with extra loops);
+// an increment that turns a section by more than options.max_turn is where the root found may
+// belong to another branch, so it is cut instead of accepted.
+double largest_turn(RodIntegrator& rod, const RodLoads& loads, const Path& path, const Vec6& z,
+                    std::vector<Mat3>& rotations) {
+    std::vector<RodState> states;
+    Vec6 residual;
+    if (!rod.shoot(z, loads, residual, path.stations, &states)) return kPi;
+    double turn = 0.0;
+    rotations.clear();
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        rotations.push_back(states[i].R);
+        turn = std::max(turn, so3::rotation_angle(states[i].R * path.rotations[i].transpose()));
+    }
+    return turn;
+}
 
 // One increment to `next`: secant predictor, then (if that fails) the last root as the guess.
 SolveResult advance(const Setup& setup, RodIntegrator& rod, const Path& path, double next,
@@ -248,7 +272,8 @@ SolveResult advance(const Setup& setup, RodIntegrator& rod, const Path& path, do
 }
 
 // Reaches `target` from path.lambda in `substeps` increments, bisecting failed increments and
-// growing them back after successes. Returns false (with a message) after too many cuts.
+// growing them back after successes. Returns false (with a message) when one increment needs
+// more than options.max_step_cuts consecutive bisections.
 bool reach(const Setup& setup, RodIntegrator& rod, Path& path, double target, int substeps,
            const ContinuumOptions& options, ContinuumStep& step, std::string& message) {
     const double nominal = (target - path.lambda) / substeps;
@@ -259,12 +284,16 @@ bool reach(const Setup& setup, RodIntegrator& rod, Path& path, double target, in
         const double next = last ? target : path.lambda + increment;
         const SolveResult result = advance(setup, rod, path, next, options);
         step.iterations += result.iterations;
-        if (!result.converged) {
+        std::vector<Mat3> rotations;
+        const bool accepted =
+            result.converged &&
+            largest_turn(rod, loads_at(setup, next), path, result.z, rotations) <= options.max_turn;
+        if (!accepted) {
             if (++cuts > options.max_step_cuts) {
                 std::ostringstream s;
                 s << "shooting failed from load factor " << path.lambda << " to " << next
                   << " after " << options.max_step_cuts << " step cuts (residual "
-                  << result.residual << ")";
+                  << result.residual << (result.converged ? ", turn too large" : "") << ")";
                 message = s.str();
                 return false;
             }
@@ -274,8 +303,10 @@ bool reach(const Setup& setup, RodIntegrator& rod, Path& path, double target, in
         path.z_previous = path.z;
         path.last_increment = next - path.lambda;
         path.z = result.z;
+        path.rotations = rotations;
         path.lambda = next;
         ++step.substeps;
+        cuts = 0;  // the limit is on consecutive bisections of one increment
         if (std::abs(2.0 * increment) <= std::abs(nominal)) increment *= 2.0;
     }
     return true;
@@ -291,6 +322,10 @@ ContinuumOutcome run(const Model& model, const ContinuumOptions& options) {
     if (factors.empty()) factors.push_back(1.0);
     const int substeps = std::max(1, model.analysis.statics.substeps);
     Path path;
+    for (int i = 1; i <= kMonitoredSections; ++i) {
+        path.stations.push_back(L * i / kMonitoredSections);
+        path.rotations.push_back(setup.geometry->frame(path.stations.back()));
+    }
     for (double target : factors) {
         ContinuumStep step;
         if (!reach(setup, rod, path, target, substeps, options, step, outcome.message)) {

@@ -20,10 +20,11 @@ namespace rotbeam {
 struct ContinuumOptions {
     double ode_tolerance = 1e-13;       // rk8pd absolute = relative tolerance, scaled state
     double residual_tolerance = 1e-11;  // ‖free-end residual‖∞ in units of EI/L², EI/L,
-                                        // times the load size clamped to [1e-3, 1]
+                                        // times the load size (at least 1e-3)
     int max_iterations = 60;            // multiroot iterations per load increment
-    int max_step_cuts = 30;             // bisections of the load increment per reported step
-    int centreline_samples = 41;        // equally spaced in s, ends included
+    int max_step_cuts = 30;             // consecutive bisections of one load increment
+    double max_turn = 0.5;  // [rad] largest rotation change of a section per accepted increment
+    int centreline_samples = 41;  // equally spaced in s, ends included
 };
 
 struct ContinuumStep {

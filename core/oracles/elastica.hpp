@@ -6,7 +6,8 @@
 //   √α = K(k) − F(φ₀, k),                         α = PL²/EI,
 //   w/L = 1 − 2 [E(k) − E(φ₀, k)] / √α,           (deflection along the force)
 //   u/L = 1 − √(2 sin θ₀ / α),                    (shortening along the beam)
-// derived in docs/reference-solutions.md §3. k is found by Brent's method on sin θ₀ ∈ (0, 1).
+// derived in docs/reference-solutions.md §3. k is found by Brent's method on ln(1 − k²), with
+// K(k) from the arithmetic–geometric mean of 1 and k' so that loads near θ₀ = π/2 stay exact.
 #pragma once
 
 namespace rotbeam::oracle {
@@ -19,9 +20,8 @@ struct ElasticaTip {
 };
 
 // Tip of the cantilever for α = PL²/EI ≥ 0 (dimensionless). The cancellation in w/L costs
-// about 1e-16/α relative accuracy for small α. Throws SolverError when sin θ₀ would have to be
-// closer to 1 than 1e-14: K(k) grows like ln(4/k'), so this double-precision
-// parameterization reaches α ≈ 300 (θ₀ ≈ 89.7°) and refuses larger loads.
+// about 1e-16/α relative accuracy for small α. Loads up to α ≈ 1e5 (1 − k² ≥ 1e-300) are
+// solved; beyond, SolverError.
 ElasticaTip elastica_tip(double alpha);
 
 }  // namespace rotbeam::oracle

@@ -73,10 +73,11 @@ BOOST_AUTO_TEST_CASE(helix_matches_the_exact_solution_to_kappa_L_4pi_dead_and_fo
 
 BOOST_AUTO_TEST_CASE(rigid_compliance_rows_give_the_inextensible_elastica) {
     // Zero axial and shear compliance (rigid rows), EI = 2, L = 3, dead tip force P e_z with
-    // PL²/EI = 1, 2, 5, 10: the elliptic-integral oracle (itself checked against Mattiasson).
+    // PL²/EI = 1, 2, 5, 10, 30, 100: the elliptic-integral oracle (itself checked against
+    // Mattiasson up to 10).
     const double L = 3.0, EI = 2.0;
     const Mat6 C = test::diagonal_compliance((Vec6() << 0, 0, 0, 1.5, EI, EI).finished());
-    const std::vector<double> alphas = {1.0, 2.0, 5.0, 10.0};
+    const std::vector<double> alphas = {1.0, 2.0, 5.0, 10.0, 30.0, 100.0};
     const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3(0, 0, EI / (L * L)), Vec3::Zero(),
                                          LoadFrame::dead, alphas);
     const ContinuumOutcome outcome = solve_continuum(model);
