@@ -164,8 +164,8 @@ KinsolOutcome solve_kinsol(NonlinearSystem& system, const KinsolSettings& settin
     configure(r, user, settings, user.jacobian.nonZeros());
 
     KinsolOutcome out;
-    out.flag = KINSol(r.kin, r.x, settings.line_search ? KIN_LINESEARCH : KIN_NONE, r.uscale,
-                      r.fscale);
+    out.flag =
+        KINSol(r.kin, r.x, settings.line_search ? KIN_LINESEARCH : KIN_NONE, r.uscale, r.fscale);
     long value = 0;
     KINGetNumNonlinSolvIters(r.kin, &value);
     out.iterations = value;

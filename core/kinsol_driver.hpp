@@ -18,13 +18,13 @@ struct KinsolSettings {
     double residual_tolerance = 1e-12;  // on max_i |r_i| / residual_scale_i (KINSOL's fnormtol)
     double step_tolerance = 1e-14;      // on the scaled step (KINSOL's scsteptol)
     int max_iterations = 200;
-    bool line_search = true;            // KIN_LINESEARCH, else KIN_NONE (plain Newton)
+    bool line_search = true;  // KIN_LINESEARCH, else KIN_NONE (plain Newton)
 };
 
 struct KinsolOutcome {
     bool converged = false;
-    int flag = 0;                 // KINSol's return flag
-    long iterations = 0;          // nonlinear iterations
+    int flag = 0;         // KINSol's return flag
+    long iterations = 0;  // nonlinear iterations
     long residual_evaluations = 0;
     long jacobian_evaluations = 0;
     double scaled_residual = 0.0;  // max_i |r_i| / residual_scale_i at the returned state

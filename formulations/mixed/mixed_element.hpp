@@ -10,7 +10,8 @@
 //   f_u^∓ = ∓A F − f̄^∓                                  (45)
 //   f_ψ^∓ = ∓A M − (ΔL/2) A (e × F) − m̄^∓                (46)
 //   f_F^± = ±u − (ΔL/2) (A e − C^ab e1)                 (47), (ΔL/2) C^ab e1 = Δr/2 (the chord)
-//   f_M^± = ±c − (ΔL/2) H⁻¹ C^ab κ                       (48), using Q_a⁻¹ C^ab = C^ab Q⁻¹ C^ba C^ab
+//   f_M^± = ±c − (ΔL/2) H⁻¹ C^ab κ                       (48), using Q_a⁻¹ C^ab = C^ab Q⁻¹ C^ba
+//   C^ab
 //
 // Loads (Eqs. 51–54) are constant per unit length over the element: f̄^∓ = (ΔL/2) f, m̄^∓ = (ΔL/2) m
 // with f = f_dead + R f_follower (a follower load turns with the element's relative rotation).
@@ -45,72 +46,71 @@ struct MixedElementResult {
     Mat12 J_kinematic;
 };
 
-// Evaluates the element's static equations at load factor `lambda`; the Jacobian blocks only
-// when `with_jacobian`.
+// Quantities of one element state shared by the residual and the Jacobian.
+struct MixedElementKinematics {
+    double h = 0.0;  // ΔL/2
+    Mat3 R, A, Hinv;
+    Vec3 e, kappa, g, Cab_kappa;  // e1 + γ, κ, e × F, C^ab κ
+};
+
 template <param::RotationParameterization P>
-void mixed_element_statics(const MixedElement& el, const MixedElementState& x, double lambda,
-                           bool with_jacobian, MixedElementResult& out) {
+MixedElementKinematics mixed_element_kinematics(const MixedElement& el,
+                                                const MixedElementState& x) {
     static_assert(P::kSize == 3, "the additive mixed kinematics need three rotation parameters");
-    const double h = 0.5 * el.length;
-    const Mat3 R = P::matrix(x.c);
-    const Mat3 A = R * el.Cab;
-    const Vec6 FM = (Vec6() << x.F, x.M).finished();
-    const Vec6 strain = el.S * FM;
-    const Vec3 e = Vec3::UnitX() + strain.head<3>();
-    const Vec3 kappa = strain.tail<3>();
-    const Vec3 g = e.cross(x.F);
-    const Vec3 AF = A * x.F;
-    const Vec3 AM = A * x.M;
-    const Vec3 f_load = h * lambda * (el.f_dead + R * el.f_follower);
-    const Vec3 m_load = h * lambda * (el.m_dead + R * el.m_follower);
-    const Vec3 moment_arm = h * (A * g);
-    const Mat3 Hinv = P::material_tangent_inverse(x.c);
-    const Vec3 Cab_kappa = el.Cab * kappa;
-    const Vec3 stretch = h * (A * e) - 0.5 * el.chord;
-    const Vec3 twist = h * (Hinv * Cab_kappa);
+    MixedElementKinematics k;
+    k.h = 0.5 * el.length;
+    k.R = P::matrix(x.c);
+    k.A = k.R * el.Cab;
+    k.Hinv = P::material_tangent_inverse(x.c);
+    const Vec6 strain = el.S * (Vec6() << x.F, x.M).finished();  // Eq. 19 inverted
+    k.e = Vec3::UnitX() + strain.head<3>();
+    k.kappa = strain.tail<3>();
+    k.g = k.e.cross(x.F);
+    k.Cab_kappa = el.Cab * k.kappa;
+    return k;
+}
 
-    out.fu_minus = -AF - f_load;
-    out.fu_plus = AF - f_load;
-    out.fpsi_minus = -AM - moment_arm - m_load;
-    out.fpsi_plus = AM - moment_arm - m_load;
-    out.kinematic << x.u - stretch, x.c - twist, -x.u - stretch, -x.c - twist;
-    if (!with_jacobian) return;
-
-    const Mat3 H = P::material_tangent(x.c);
-    const Mat3 S11 = el.S.topLeftCorner<3, 3>();
-    const Mat3 S12 = el.S.topRightCorner<3, 3>();
-    const Mat3 S21 = el.S.bottomLeftCorner<3, 3>();
-    const Mat3 S22 = el.S.bottomRightCorner<3, 3>();
+// ∂[f_u^∓; f_ψ^∓]/∂[c; F; M] (Eqs. 45–46).
+template <param::RotationParameterization P>
+void mixed_equilibrium_jacobian(const MixedElement& el, const MixedElementState& x,
+                                const MixedElementKinematics& k, double lambda, const Mat3& H,
+                                MixedElementResult& out) {
+    const double h = k.h;
     const Mat3 Ftil = so3::skew(x.F);
-    // Pieces common to both halves.
-    const Mat3 dAF_dc = -R * so3::skew(el.Cab * x.F) * H;
-    const Mat3 dAM_dc = -R * so3::skew(el.Cab * x.M) * H;
-    const Mat3 dload_dc = h * lambda * R * so3::skew(el.f_follower) * H;   // −∂f̄/∂c
-    const Mat3 dmload_dc = h * lambda * R * so3::skew(el.m_follower) * H;  // −∂m̄/∂c
-    const Mat3 darm_dc = h * R * so3::skew(el.Cab * g) * H;                // −∂(ΔL/2 A g)/∂c
-    const Mat3 darm_dF = -h * A * (so3::skew(e) - Ftil * S11);
-    const Mat3 darm_dM = h * A * Ftil * S12;
-
+    const Mat3 dAF_dc = -k.R * so3::skew(el.Cab * x.F) * H;
+    const Mat3 dAM_dc = -k.R * so3::skew(el.Cab * x.M) * H;
+    const Mat3 dload_dc = h * lambda * k.R * so3::skew(el.f_follower) * H;   // −∂f̄/∂c
+    const Mat3 dmload_dc = h * lambda * k.R * so3::skew(el.m_follower) * H;  // −∂m̄/∂c
+    const Mat3 darm_dc = h * k.R * so3::skew(el.Cab * k.g) * H;              // −∂(h A g)/∂c
+    const Mat3 darm_dF = -h * k.A * (so3::skew(k.e) - Ftil * el.S.topLeftCorner<3, 3>());
+    const Mat3 darm_dM = h * k.A * Ftil * el.S.topRightCorner<3, 3>();
     for (int side = 0; side < 2; ++side) {
         const double s = side == 0 ? -1.0 : 1.0;  // f^− carries −A F, f^+ carries +A F
         Eigen::Matrix<double, 6, 9>& J = side == 0 ? out.J_minus : out.J_plus;
         J.block<3, 3>(0, 0) = s * dAF_dc + dload_dc;
-        J.block<3, 3>(0, 3) = s * A;
+        J.block<3, 3>(0, 3) = s * k.A;
         J.block<3, 3>(0, 6).setZero();
         J.block<3, 3>(3, 0) = s * dAM_dc + darm_dc + dmload_dc;
         J.block<3, 3>(3, 3) = darm_dF;
-        J.block<3, 3>(3, 6) = s * A + darm_dM;
+        J.block<3, 3>(3, 6) = s * k.A + darm_dM;
     }
+}
 
-    const Mat3 dstretch_dc = -h * R * so3::skew(el.Cab * e) * H;
-    const Mat3 dstretch_dF = h * A * S11;
-    const Mat3 dstretch_dM = h * A * S12;
-    const Mat3 dtwist_dc = h * P::material_tangent_inverse_derivative(x.c, Cab_kappa);
-    const Mat3 dtwist_dF = h * Hinv * el.Cab * S21;
-    const Mat3 dtwist_dM = h * Hinv * el.Cab * S22;
+// ∂[f_F^−; f_M^−; f_F^+; f_M^+]/∂[u; c; F; M] (Eqs. 47–48).
+template <param::RotationParameterization P>
+void mixed_kinematic_jacobian(const MixedElement& el, const MixedElementState& x,
+                              const MixedElementKinematics& k, const Mat3& H,
+                              MixedElementResult& out) {
+    const double h = k.h;
+    const Mat3 dstretch_dc = -h * k.R * so3::skew(el.Cab * k.e) * H;
+    const Mat3 dstretch_dF = h * k.A * el.S.topLeftCorner<3, 3>();
+    const Mat3 dstretch_dM = h * k.A * el.S.topRightCorner<3, 3>();
+    const Mat3 dtwist_dc = h * P::material_tangent_inverse_derivative(x.c, k.Cab_kappa);
+    const Mat3 dtwist_dF = h * k.Hinv * el.Cab * el.S.bottomLeftCorner<3, 3>();
+    const Mat3 dtwist_dM = h * k.Hinv * el.Cab * el.S.bottomRightCorner<3, 3>();
     Mat12& K = out.J_kinematic;
     for (int side = 0; side < 2; ++side) {
-        const double s = side == 0 ? 1.0 : -1.0;
+        const double s = side == 0 ? 1.0 : -1.0;  // f^− carries +u, +c (errata)
         const int r = 6 * side;
         K.block<3, 3>(r, 0) = s * Mat3::Identity();
         K.block<3, 3>(r, 3) = -dstretch_dc;
@@ -121,6 +121,31 @@ void mixed_element_statics(const MixedElement& el, const MixedElementState& x, d
         K.block<3, 3>(r + 3, 6) = -dtwist_dF;
         K.block<3, 3>(r + 3, 9) = -dtwist_dM;
     }
+}
+
+// Evaluates the element's static equations at load factor `lambda`; the Jacobian blocks only
+// when `with_jacobian`.
+template <param::RotationParameterization P>
+void mixed_element_statics(const MixedElement& el, const MixedElementState& x, double lambda,
+                           bool with_jacobian, MixedElementResult& out) {
+    const MixedElementKinematics k = mixed_element_kinematics<P>(el, x);
+    const double h = k.h;
+    const Vec3 AF = k.A * x.F;
+    const Vec3 AM = k.A * x.M;
+    const Vec3 f_load = h * lambda * (el.f_dead + k.R * el.f_follower);
+    const Vec3 m_load = h * lambda * (el.m_dead + k.R * el.m_follower);
+    const Vec3 moment_arm = h * (k.A * k.g);
+    const Vec3 stretch = h * (k.A * k.e) - 0.5 * el.chord;  // h (A e − C^ab e1)
+    const Vec3 twist = h * (k.Hinv * k.Cab_kappa);
+    out.fu_minus = -AF - f_load;
+    out.fu_plus = AF - f_load;
+    out.fpsi_minus = -AM - moment_arm - m_load;
+    out.fpsi_plus = AM - moment_arm - m_load;
+    out.kinematic << x.u - stretch, x.c - twist, -x.u - stretch, -x.c - twist;
+    if (!with_jacobian) return;
+    const Mat3 H = P::material_tangent(x.c);
+    mixed_equilibrium_jacobian<P>(el, x, k, lambda, H, out);
+    mixed_kinematic_jacobian<P>(el, x, k, H, out);
 }
 
 }  // namespace rotbeam::form

@@ -17,8 +17,8 @@ Mat6 compliance_at(const Member& member, double fraction) {
     if (st.size() == 1 || fraction <= st.front().s_fraction) return st.front().section.compliance;
     for (std::size_t k = 1; k < st.size(); ++k) {
         if (fraction <= st[k].s_fraction) {
-            const double w = (fraction - st[k - 1].s_fraction) /
-                             (st[k].s_fraction - st[k - 1].s_fraction);
+            const double w =
+                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
             return (1.0 - w) * st[k - 1].section.compliance + w * st[k].section.compliance;
         }
     }
@@ -122,7 +122,8 @@ MixedLayout build_mixed_layout(const Model& model) {
     if (model.members.empty()) throw InputError("the model has no member");
     MixedLayout layout;
     for (const Point& p : model.points) layout.nodes.push_back({-1, -1, p.position});
-    for (std::size_t k = 0; k < model.points.size(); ++k) layout.nodes[k].point = static_cast<int>(k);
+    for (std::size_t k = 0; k < model.points.size(); ++k)
+        layout.nodes[k].point = static_cast<int>(k);
     for (std::size_t c = 0; c < model.constraints.size(); ++c) {
         const int p = model.constraints[c].point;
         if (p < 0 || p >= static_cast<int>(model.points.size())) {
@@ -151,7 +152,7 @@ MixedLayout build_mixed_layout(const Model& model) {
     }
     layout.length_scale = model.solver.length_scale > 0.0 ? model.solver.length_scale : total;
     layout.force_scale = model.solver.force_scale > 0.0 ? model.solver.force_scale
-                                                         : derived_force_scale(model, layout);
+                                                        : derived_force_scale(model, layout);
     return layout;
 }
 

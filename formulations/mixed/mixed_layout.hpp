@@ -32,8 +32,8 @@
 namespace rotbeam::form {
 
 struct MixedNode {
-    int point = -1;          // model point index, −1 for an interior node
-    int constraint = -1;     // index into Model::constraints, −1 when free
+    int point = -1;       // model point index, −1 for an interior node
+    int constraint = -1;  // index into Model::constraints, −1 when free
     Vec3 reference = Vec3::Zero();
 };
 
@@ -41,11 +41,11 @@ struct MixedElement {
     int member = -1;
     int start_node = -1;
     int end_node = -1;
-    double s_mid = 0.0;            // arc length of the mid-point along the member
-    double length = 0.0;           // ΔL_i = |Δr| (the straight element's length)
-    Vec3 chord = Vec3::Zero();     // Δr = x^r(end) − x^r(start)
-    Mat3 Cab = Mat3::Identity();   // the element's reference frame (material → inertial)
-    Mat6 S = Mat6::Zero();         // compliance at mid-length, [γ; κ] = S [F; M]
+    double s_mid = 0.0;           // arc length of the mid-point along the member
+    double length = 0.0;          // ΔL_i = |Δr| (the straight element's length)
+    Vec3 chord = Vec3::Zero();    // Δr = x^r(end) − x^r(start)
+    Mat3 Cab = Mat3::Identity();  // the element's reference frame (material → inertial)
+    Mat6 S = Mat6::Zero();        // compliance at mid-length, [γ; κ] = S [F; M]
     // Distributed loads per unit reference length at load factor 1.
     Vec3 f_dead = Vec3::Zero();
     Vec3 m_dead = Vec3::Zero();

@@ -29,7 +29,7 @@ struct MixedElementResultants {
 
 template <param::RotationParameterization P>
 class MixedStatics : public StaticProblem {
-public:
+  public:
     explicit MixedStatics(const Model& model);
 
     int size() const override { return layout_.size(); }
@@ -53,11 +53,12 @@ public:
     MixedElementState element_state(int e) const;
     std::vector<MixedElementResultants> resultants() const;
 
-private:
+  private:
     // Given û, ĉ of a supported node at the current load factor.
     void supported_motion(int node, Vec3& u_hat, Vec3& c_hat) const;
     void node_motion(int node, Vec3& u_hat, Vec3& c_hat) const;
     void add_point_loads(VecX& residual, SparseMatrix* jacobian) const;
+    void assemble_element(int e, VecX& residual, SparseMatrix* jacobian);
     // J(r0:, c0:) += b for a block inside the fixed pattern (binary search, no allocation).
     template <class Derived>
     static void add_block(SparseMatrix& J, int r0, int c0, const Eigen::MatrixBase<Derived>& b) {

@@ -23,8 +23,8 @@ MixedStatics<P>::MixedStatics(const Model& model)
 
 template <param::RotationParameterization P>
 void MixedStatics<P>::supported_motion(int node, Vec3& u_hat, Vec3& c_hat) const {
-    const Constraint& con =
-        model_.constraints[static_cast<std::size_t>(layout_.nodes[static_cast<std::size_t>(node)].constraint)];
+    const Constraint& con = model_.constraints[static_cast<std::size_t>(
+        layout_.nodes[static_cast<std::size_t>(node)].constraint)];
     if (con.kind == Constraint::Kind::clamped) {
         u_hat.setZero();
         c_hat.setZero();
@@ -105,42 +105,45 @@ void MixedStatics<P>::evaluate(VecX& residual, SparseMatrix* jacobian) {
         ++counters_.jacobian_evaluations;
     }
     ++counters_.residual_evaluations;
-    MixedElementResult& r = element_result_;
-    for (int e = 0; e < layout_.element_count(); ++e) {
-        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
-        mixed_element_statics<P>(el, element_state(e), lambda_, jacobian != nullptr, r);
-        ++counters_.elastic_terms;
-        if (el.f_dead.norm() + el.m_dead.norm() + el.f_follower.norm() + el.m_follower.norm() > 0) {
-            ++counters_.distributed_load_terms;
-        }
-        if (el.f_follower.norm() + el.m_follower.norm() > 0) ++counters_.follower_stiffness;
-        const int o = layout_.element_offset(e);
-        const int a = layout_.node_offset(el.start_node);
-        const int b = layout_.node_offset(el.end_node);
-        residual.segment<3>(a) += r.fu_minus;
-        residual.segment<3>(a + 3) += r.fpsi_minus;
-        residual.segment<3>(b) += r.fu_plus;
-        residual.segment<3>(b + 3) += r.fpsi_plus;
-        // Node terms of the kinematic rows: f_F^− − û_a, f_M^− − ĉ_a, f_F^+ + û_b, f_M^+ + ĉ_b.
-        Vec3 ua, ca, ub, cb;
-        node_motion(el.start_node, ua, ca);
-        node_motion(el.end_node, ub, cb);
-        residual.segment<12>(o) = r.kinematic;
-        residual.segment<3>(o) -= ua;
-        residual.segment<3>(o + 3) -= ca;
-        residual.segment<3>(o + 6) += ub;
-        residual.segment<3>(o + 9) += cb;
-        if (jacobian == nullptr) continue;
-        add_block(*jacobian, a, o + 3, r.J_minus);
-        add_block(*jacobian, b, o + 3, r.J_plus);
-        add_block(*jacobian, o, o, r.J_kinematic);
-        if (!layout_.supported(el.start_node)) add_block(*jacobian, o, a, -Mat6::Identity());
-        if (!layout_.supported(el.end_node)) add_block(*jacobian, o + 6, b, Mat6::Identity());
-    }
+    for (int e = 0; e < layout_.element_count(); ++e) assemble_element(e, residual, jacobian);
     add_point_loads(residual, jacobian);
     for (const PointLoad& load : model_.point_loads) {
         if (load.frame == LoadFrame::follower) ++counters_.follower_stiffness;
     }
+}
+
+// One element's f_u, f_ψ into its end nodes' equilibrium rows and its kinematic rows with the
+// node terms: f_F^− − û_a, f_M^− − ĉ_a, f_F^+ + û_b, f_M^+ + ĉ_b (Eqs. 33–34, 37–38, 41–42).
+template <param::RotationParameterization P>
+void MixedStatics<P>::assemble_element(int e, VecX& residual, SparseMatrix* jacobian) {
+    const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+    MixedElementResult& r = element_result_;
+    mixed_element_statics<P>(el, element_state(e), lambda_, jacobian != nullptr, r);
+    ++counters_.elastic_terms;
+    const bool follower = el.f_follower.norm() + el.m_follower.norm() > 0.0;
+    if (follower || el.f_dead.norm() + el.m_dead.norm() > 0.0) ++counters_.distributed_load_terms;
+    if (follower) ++counters_.follower_stiffness;
+    const int o = layout_.element_offset(e);
+    const int a = layout_.node_offset(el.start_node);
+    const int b = layout_.node_offset(el.end_node);
+    residual.segment<3>(a) += r.fu_minus;
+    residual.segment<3>(a + 3) += r.fpsi_minus;
+    residual.segment<3>(b) += r.fu_plus;
+    residual.segment<3>(b + 3) += r.fpsi_plus;
+    Vec3 ua, ca, ub, cb;
+    node_motion(el.start_node, ua, ca);
+    node_motion(el.end_node, ub, cb);
+    residual.segment<12>(o) = r.kinematic;
+    residual.segment<3>(o) -= ua;
+    residual.segment<3>(o + 3) -= ca;
+    residual.segment<3>(o + 6) += ub;
+    residual.segment<3>(o + 9) += cb;
+    if (jacobian == nullptr) return;
+    add_block(*jacobian, a, o + 3, r.J_minus);
+    add_block(*jacobian, b, o + 3, r.J_plus);
+    add_block(*jacobian, o, o, r.J_kinematic);
+    if (!layout_.supported(el.start_node)) add_block(*jacobian, o, a, -Mat6::Identity());
+    if (!layout_.supported(el.end_node)) add_block(*jacobian, o + 6, b, Mat6::Identity());
 }
 
 template <param::RotationParameterization P>

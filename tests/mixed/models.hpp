@@ -37,9 +37,9 @@ inline Model rollup_model(int elements) {
     m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(kRollupLength, 0, 0)}};
     const double E = 30e6, G = E / 2.6, A = 1.0, I = 1.0 / 12.0;
     // Torsion: St-Venant constant of the unit square (it does not enter the answer).
-    const Vec6 k = (Vec6() << E * A, 5.0 / 6.0 * G * A, 5.0 / 6.0 * G * A, G * 0.140577, E * I,
-                    E * I)
-                       .finished();
+    const Vec6 k =
+        (Vec6() << E * A, 5.0 / 6.0 * G * A, 5.0 / 6.0 * G * A, G * 0.140577, E * I, E * I)
+            .finished();
     m.members = {member("beam", 0, 1, diagonal_section(k), elements)};
     m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
     PointLoad load;
@@ -65,8 +65,8 @@ inline Model bend_model(int elements, double shear_factor = 5.0 / 6.0, double J 
     m.points = {{"root", Vec3::Zero()},
                 {"tip", Vec3(R * std::sin(kPi / 4), R * (1 - std::cos(kPi / 4)), 0)}};
     const double E = 1e7, G = 5e6, I = 1.0 / 12.0;
-    const Vec6 k = (Vec6() << E, shear_factor * G, shear_factor * G, G * J, E * I, E * I)
-                       .finished();
+    const Vec6 k =
+        (Vec6() << E, shear_factor * G, shear_factor * G, G * J, E * I, E * I).finished();
     Member beam = member("beam", 0, 1, diagonal_section(k), elements);
     beam.line.kind = LineKind::arc;
     beam.line.center = Vec3(0, R, 0);

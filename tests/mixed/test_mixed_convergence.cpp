@@ -2,7 +2,6 @@
 // (benchmarks.md §1, observed order 2), the 45° bend (§2) converging to one answer, and the
 // largest load λ*(N) the N-element equations can carry (§1: ≈ λc (1 − 1.1/N)).
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 #include <iomanip>
 #include <vector>
@@ -39,9 +38,8 @@ void check_rollup_order(double lambda) {
     std::vector<double> errors;
     for (int n = 16; n <= 1024; n *= 2) {
         errors.push_back(rollup_error<P>(n, lambda));
-        const double order = errors.size() < 2 ? 0.0
-                                               : std::log2(errors[errors.size() - 2] /
-                                                           errors.back());
+        const double order =
+            errors.size() < 2 ? 0.0 : std::log2(errors[errors.size() - 2] / errors.back());
         BOOST_TEST_MESSAGE(P::kName << " λ = " << lambda << ", N = " << std::setw(4) << n
                                     << ": ‖Δu‖/L = " << std::scientific << std::setprecision(4)
                                     << errors.back() << std::defaultfloat << ", order " << order);
@@ -56,7 +54,8 @@ void check_rollup_order(double lambda) {
     BOOST_TEST(errors.back() < errors.front() / 3000.0);  // 64× finer mesh: 2⁻¹² ≈ 1/4096
 }
 
-// 45° bend: tip displacement at P = 300, 450, 600 (load steps of 50, as loads are applied in steps).
+// 45° bend: tip displacement at P = 300, 450, 600 (load steps of 50, as loads are applied in
+// steps).
 template <class P>
 std::vector<Vec3> bend_tips(int elements, double shear_factor = 5.0 / 6.0, double J = 0.140577) {
     form::MixedStatics<P> problem(test::bend_model(elements, shear_factor, J));
@@ -162,7 +161,8 @@ BOOST_AUTO_TEST_CASE(bend_45_degree_tip_converges_under_refinement) {
         tips.push_back(bend_tips<param::WienerMilenkovic>(n));
         const Vec3& u = tips.back()[2];
         BOOST_TEST_MESSAGE("bend N = " << n << ": tip at P = 600: " << std::setprecision(9)
-                                       << u.transpose() << "; P = 300: " << tips.back()[0].transpose()
+                                       << u.transpose()
+                                       << "; P = 300: " << tips.back()[0].transpose()
                                        << "; P = 450: " << tips.back()[1].transpose());
     }
     // Differences between successive meshes fall by ≈ 4 (second order). The published tip
@@ -171,8 +171,8 @@ BOOST_AUTO_TEST_CASE(bend_45_degree_tip_converges_under_refinement) {
     // GXBeam's constants (shear factor 1, J = 1/6) the converged tip is printed for comparison;
     // the gate is 2.5 % of |u| per component (u_y: 0.33 of 13.4 with this case's constants).
     for (std::size_t k = 2; k < tips.size(); ++k) {
-        const double ratio = (tips[k - 2][2] - tips[k - 1][2]).norm() /
-                             (tips[k - 1][2] - tips[k][2]).norm();
+        const double ratio =
+            (tips[k - 2][2] - tips[k - 1][2]).norm() / (tips[k - 1][2] - tips[k][2]).norm();
         BOOST_TEST(ratio > 3.6);
         BOOST_TEST(ratio < 4.4);
     }

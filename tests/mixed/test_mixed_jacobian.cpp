@@ -2,7 +2,6 @@
 // reference configuration, consistency with central finite differences at a strongly deformed
 // state, a fixed sparsity pattern and no heap allocation after the first evaluation.
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 
 #include "core/finite_difference.hpp"
@@ -33,8 +32,8 @@ Model deformed_test_model() {
     m.points = {{"root", Vec3::Zero()}, {"joint", Vec3(2, 2, 0)}, {"tip", Vec3(2, 3.5, 0.8)}};
     Section coupled;
     coupled.compliance = coupled_compliance();
-    Member arc = test::member("arc", 0, 1, test::diagonal_section(
-                                               (Vec6() << 50, 20, 30, 2, 3, 4).finished()), 3);
+    Member arc = test::member(
+        "arc", 0, 1, test::diagonal_section((Vec6() << 50, 20, 30, 2, 3, 4).finished()), 3);
     arc.line.kind = LineKind::arc;
     arc.line.center = Vec3(0, 2, 0);
     Member straight = test::member("straight", 1, 2, coupled, 3);

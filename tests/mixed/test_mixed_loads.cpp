@@ -3,7 +3,6 @@
 // at a connection point equal to the unsplit member, and a follower tip moment equal to a dead one
 // on the roll-up (the tip moment of a planar roll-up stays normal to the plane).
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 
 #include "core/static_driver.hpp"
@@ -36,8 +35,8 @@ BOOST_AUTO_TEST_CASE(uniform_load_gives_timoshenko_tip_deflection_in_linear_rang
     load.force = Vec3(0, 0, q);
     m.distributed_loads = {load};
     form::MixedStatics<param::WienerMilenkovic> problem(m);
-    BOOST_TEST_REQUIRE((run_static(problem, {1.0}, tight(), nullptr).status ==
-                        SolveStatus::converged));
+    BOOST_TEST_REQUIRE(
+        (run_static(problem, {1.0}, tight(), nullptr).status == SolveStatus::converged));
     const double L = test::kRollupLength, EI = test::kRollupEI;
     const double kGA = 5.0 / 6.0 * 30e6 / 2.6;
     const double exact = q * std::pow(L, 4) / (8 * EI) + q * L * L / (2 * kGA);
@@ -67,12 +66,12 @@ BOOST_AUTO_TEST_CASE(follower_tip_moment_of_planar_rollup_equals_dead_moment) {
     follower.point_loads[0].frame = LoadFrame::follower;
     form::MixedStatics<param::Rodrigues> dead_problem(test::rollup_model(32));
     form::MixedStatics<param::Rodrigues> follower_problem(follower);
-    BOOST_TEST_REQUIRE((run_static(dead_problem, {0.8}, tight(), nullptr).status ==
-                        SolveStatus::converged));
-    BOOST_TEST_REQUIRE((run_static(follower_problem, {0.8}, tight(), nullptr).status ==
-                        SolveStatus::converged));
-    const Vec3 d = dead_problem.point_state(1).displacement -
-                   follower_problem.point_state(1).displacement;
+    BOOST_TEST_REQUIRE(
+        (run_static(dead_problem, {0.8}, tight(), nullptr).status == SolveStatus::converged));
+    BOOST_TEST_REQUIRE(
+        (run_static(follower_problem, {0.8}, tight(), nullptr).status == SolveStatus::converged));
+    const Vec3 d =
+        dead_problem.point_state(1).displacement - follower_problem.point_state(1).displacement;
     BOOST_TEST(d.norm() < 1e-9);
     BOOST_TEST(follower_problem.counters().follower_stiffness > 0);
     BOOST_TEST(dead_problem.counters().follower_stiffness == 0);

@@ -3,7 +3,6 @@
 // parameterization past the load the 16-element equations can carry (λ* ≈ 0.937 Rodrigues,
 // ≈ 1.874 WM).
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 #include <vector>
 
@@ -47,10 +46,10 @@ void check_table(const std::vector<TableRow>& rows) {
         const StaticOutcome out = run_static(problem, {row.lambda}, paper_settings(), nullptr);
         BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
         const Vec3 u = problem.point_state(1).displacement;
-        BOOST_TEST_MESSAGE(P::kName << " λ = " << row.lambda << ": u1 = " << u[0] << ", u3 = "
-                                    << u[2] << " (paper " << row.u1 << ", " << row.u3 << "), "
-                                    << out.steps.back().newton_iterations << " iterations (paper "
-                                    << row.iterations << ")");
+        BOOST_TEST_MESSAGE(P::kName << " λ = " << row.lambda << ": u1 = " << u[0]
+                                    << ", u3 = " << u[2] << " (paper " << row.u1 << ", " << row.u3
+                                    << "), " << out.steps.back().newton_iterations
+                                    << " iterations (paper " << row.iterations << ")");
         // ±0.5 in the last printed digit (1e-4), plus 1e-9 for the comparison itself.
         BOOST_TEST(std::abs(u[0] - row.u1) <= 0.5e-4 + 1e-9);
         BOOST_TEST(std::abs(u[2] - row.u3) <= 0.5e-4 + 1e-9);
