@@ -85,14 +85,14 @@ double conversion_distance(double phi) {
     }
 }
 
-// The length over which P's functions vary near p: the parameter norm for the rational charts
-// (WM, Rodrigues, quaternion: homogeneous of degree 0 or rational in p), and for the rotation
-// vector also the distance to the tangent singularity at 2πk, over which H⁻¹ ~ 1/δ varies.
+// The length over which P's functions of p vary: the parameter norm (at least 1) for R and H of
+// every chart (WM, Rodrigues and the quaternion are rational in p, the rotation vector's R and H
+// are entire); for the rotation vector's H⁻¹ ~ 1/δ also the distance δ to the singularity at 2πk.
 template <class P>
-double variation_length(const typename P::P& p) {
+double variation_length(const typename P::P& p, bool of_inverse) {
     const double length = std::max(1.0, p.norm());
     if constexpr (std::is_same_v<P, param::RotationVector>) {
-        return std::min(length, distance_to_full_turns(p.norm()));
+        return of_inverse ? std::min(length, distance_to_full_turns(p.norm())) : length;
     } else {
         return length;
     }
@@ -111,10 +111,13 @@ auto central_difference(const F& f, const Vp& p, const Vp& d, double h) {
 }
 
 // Tolerance of a central difference with step h = ∛ε L of a function G varying on length L:
-// truncation h²/6 ‖G'''‖ ≈ ε^(2/3) ‖G'‖ (G''' ~ G'/L²) plus round-off ε ‖G‖/h; the factor 10
-// covers the unknown ratio of third to first derivative on that scale.
-inline double fd_tolerance(double norm_derivative, double norm_value, double h) {
-    return 10.0 * (std::cbrt(kEps * kEps) * norm_derivative + kEps * norm_value / h);
+// truncation h²/6 ‖G‴‖ ≈ ε^(2/3) ‖G′‖ (G‴ ~ G′/L²; the factor 10 covers the unknown ratio of
+// third to first derivative on that scale) plus round-off of the two evaluations divided by h:
+// ε ‖G‖ from evaluating G and ε ‖p‖ ‖G′‖ from rounding p ± h d, which dominates near a
+// singularity where G′ is large (the rotation vector's H⁻¹ at 2π − 1e-6: ‖G′‖ ~ φ/δ²).
+inline double fd_tolerance(double norm_derivative, double norm_value, double h, double norm_point) {
+    return 10.0 * (std::cbrt(kEps * kEps) * norm_derivative +
+                   kEps * (norm_value + norm_point * norm_derivative) / h);
 }
 
 }  // namespace rotbeam::test
