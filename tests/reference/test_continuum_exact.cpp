@@ -111,4 +111,19 @@ BOOST_AUTO_TEST_CASE(unsupported_models_are_refused_with_a_reason) {
     BOOST_TEST(solve_continuum(off_line).status == "error");
 }
 
+BOOST_AUTO_TEST_CASE(an_unreachable_load_reports_diverged_with_the_load_factor) {
+    // PL²/EI = 2000 is beyond simple shooting (sensitivity ~e^√α, docs §5): with three cuts
+    // allowed the solver must stop and say where, not return a wrong equilibrium.
+    const Mat6 C = test::diagonal_compliance((Vec6() << 0, 0, 0, 1.0, 1.0, 1.0).finished());
+    const Model model =
+        test::cantilever(Vec3(1, 0, 0), C, Vec3(0, 0, 1), Vec3::Zero(), LoadFrame::dead, {2000.0});
+    ContinuumOptions options;
+    options.max_step_cuts = 3;
+    options.max_iterations = 10;
+    const ContinuumOutcome outcome = solve_continuum(model, options);
+    BOOST_TEST(outcome.status == "diverged");
+    BOOST_TEST(outcome.steps.empty());
+    BOOST_TEST(outcome.message.find("from load factor 0") != std::string::npos, outcome.message);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
