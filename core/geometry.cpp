@@ -25,13 +25,13 @@ constexpr double kArcLengthTolerance = 1e-13;
 
 // GSL's default handler aborts; inside geometry every status is checked instead.
 class GslHandlerOff {
-public:
+  public:
     GslHandlerOff() : previous_(gsl_set_error_handler_off()) {}
     ~GslHandlerOff() { gsl_set_error_handler(previous_); }
     GslHandlerOff(const GslHandlerOff&) = delete;
     GslHandlerOff& operator=(const GslHandlerOff&) = delete;
 
-private:
+  private:
     gsl_error_handler_t* previous_;
 };
 
@@ -63,7 +63,7 @@ struct KeypointSpline {
     double length_between(double a, double b) const;  // ∫_a^b |x_t| dt
     double parameter_at(double s) const;              // t(s), the inverse of S(t)
 
-private:
+  private:
     template <class F>
     Vec3 eval(double u, F f) const {
         return Vec3(f(xyz[0], u, nullptr), f(xyz[1], u, nullptr), f(xyz[2], u, nullptr));
@@ -119,8 +119,8 @@ double KeypointSpline::parameter_at(double s) const {
     const size_t n = t.size();
     if (s <= 0.0) return t.front();
     if (s >= arc.back()) return t.back();
-    const size_t i = static_cast<size_t>(std::upper_bound(arc.begin(), arc.end(), s) -
-                                         arc.begin()) - 1;
+    const size_t i =
+        static_cast<size_t>(std::upper_bound(arc.begin(), arc.end(), s) - arc.begin()) - 1;
     if (i + 1 >= n) return t.back();
     struct Params {
         const KeypointSpline* spline;
@@ -140,8 +140,7 @@ double KeypointSpline::parameter_at(double s) const {
         gsl_root_fsolver_iterate(solver);
         root = gsl_root_fsolver_root(solver);
         status = gsl_root_test_interval(gsl_root_fsolver_x_lower(solver),
-                                        gsl_root_fsolver_x_upper(solver), 0.0,
-                                        kArcLengthTolerance);
+                                        gsl_root_fsolver_x_upper(solver), 0.0, kArcLengthTolerance);
     }
     gsl_root_fsolver_free(solver);
     return root;
@@ -175,38 +174,7 @@ ReferenceGeometry::ReferenceGeometry(const Model& model, int member) {
         length_ = (x1 - x0).norm();
         direction_ = (x1 - x0) / length_;
     } else if (kind_ == LineKind::arc) {
-        center_ = m.line.center;
-        const Vec3 a = x0 - center_;
-        const Vec3 b = x1 - center_;
-        radius_ = a.norm();
-        if (!(radius_ > 0.0)) throw InputError("arc centre coincides with the start point");
-        if (std::abs(b.norm() - radius_) > kArcTolerance * radius_) {
-            throw InputError("arc ends are at different distances from the centre (" +
-                             std::to_string(radius_) + " and " + std::to_string(b.norm()) + ")");
-        }
-        radial0_ = a / radius_;
-        const Vec3 bhat = b.normalized();
-        double sweep = 0.0;
-        if (m.line.normal) {
-            if (!(m.line.normal->norm() > 0.0)) throw InputError("arc normal is the zero vector");
-            normal_ = m.line.normal->normalized();
-            if (std::abs(normal_.dot(radial0_)) > kArcTolerance ||
-                std::abs(normal_.dot(bhat)) > kArcTolerance) {
-                throw InputError("arc ends do not lie in the plane through the centre normal to " +
-                                 format_vec(normal_));
-            }
-            sweep = std::atan2(normal_.dot(radial0_.cross(bhat)), radial0_.dot(bhat));
-            if (sweep <= 0.0) sweep += 2.0 * kPi;
-        } else {
-            const Vec3 c = radial0_.cross(bhat);
-            if (c.norm() < kArcTolerance) {
-                throw InputError("arc ends are collinear with the centre (sweep 0 or 180°): "
-                                 "give `normal` to fix the plane and sense");
-            }
-            normal_ = c.normalized();
-            sweep = std::atan2(c.norm(), radial0_.dot(bhat));
-        }
-        length_ = radius_ * sweep;
+        init_arc(m.line, x0, x1);
     } else {
         std::vector<Vec3> points{x0};
         points.insert(points.end(), m.line.keypoints.begin(), m.line.keypoints.end());
@@ -214,6 +182,43 @@ ReferenceGeometry::ReferenceGeometry(const Model& model, int member) {
         spline_ = std::make_shared<const KeypointSpline>(points);
         length_ = spline_->arc.back();
     }
+}
+
+void ReferenceGeometry::init_arc(const ReferenceLine& line, const Vec3& x0, const Vec3& x1) {
+    center_ = line.center;
+    const Vec3 a = x0 - center_;
+    const Vec3 b = x1 - center_;
+    radius_ = a.norm();
+    if (!(radius_ > 0.0)) throw InputError("arc centre coincides with the start point");
+    if (std::abs(b.norm() - radius_) > kArcTolerance * radius_) {
+        throw InputError("arc ends are at different distances from the centre (" +
+                         std::to_string(radius_) + " and " + std::to_string(b.norm()) + ")");
+    }
+    radial0_ = a / radius_;
+    const Vec3 bhat = b.normalized();
+    double sweep = 0.0;
+    if (line.normal) {
+        if (!(line.normal->norm() > 0.0)) throw InputError("arc normal is the zero vector");
+        normal_ = line.normal->normalized();
+        if (std::abs(normal_.dot(radial0_)) > kArcTolerance ||
+            std::abs(normal_.dot(bhat)) > kArcTolerance) {
+            throw InputError("arc ends do not lie in the plane through the centre normal to " +
+                             format_vec(normal_));
+        }
+        // Right-handed about the normal, in (0, 2π].
+        sweep = std::atan2(normal_.dot(radial0_.cross(bhat)), radial0_.dot(bhat));
+        if (sweep <= 0.0) sweep += 2.0 * kPi;
+    } else {
+        const Vec3 c = radial0_.cross(bhat);
+        if (c.norm() < kArcTolerance) {
+            throw InputError(
+                "arc ends are collinear with the centre (sweep 0 or 180°): "
+                "give `normal` to fix the plane and sense");
+        }
+        normal_ = c.normalized();
+        sweep = std::atan2(c.norm(), radial0_.dot(bhat));
+    }
+    length_ = radius_ * sweep;
 }
 
 void ReferenceGeometry::line_point(double s, Vec3& x, Vec3& e1, Vec3& de1) const {
@@ -282,8 +287,11 @@ void ReferenceGeometry::frame_and_derivative(double s, Mat3& R, Mat3& dR_ds) con
         if (has_hint_ || a.norm() < 1e-8) {
             a = h - e1 * e1.dot(h);
             da = -de1 * e1.dot(h) - e1 * de1.dot(h);
-            if (a.norm() < 1e-8) throw InputError("e2 hint " + format_vec(h) + " is parallel to "
-                                                  "the tangent " + format_vec(e1));
+            if (a.norm() < 1e-8)
+                throw InputError("e2 hint " + format_vec(h) +
+                                 " is parallel to "
+                                 "the tangent " +
+                                 format_vec(e1));
         }
     }
     const double an = a.norm();

@@ -34,7 +34,7 @@ namespace rotbeam {
 struct KeypointSpline;  // GSL splines and the arc-length table (geometry.cpp)
 
 class ReferenceGeometry {
-public:
+  public:
     ReferenceGeometry(const Model& model, int member);
 
     double length() const { return length_; }
@@ -47,7 +47,8 @@ public:
     // R^r(s) and its derivative with respect to s (used by curvature and by tests).
     void frame_and_derivative(double s, Mat3& R, Mat3& dR_ds) const;
 
-private:
+  private:
+    void init_arc(const ReferenceLine& line, const Vec3& x0, const Vec3& x1);
     // Position, tangent e1 and de1/ds of the untwisted line at s.
     void line_point(double s, Vec3& x, Vec3& e1, Vec3& de1) const;
 

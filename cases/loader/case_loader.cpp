@@ -24,18 +24,22 @@ void check_text(const std::string& text, const std::string& file) {
         if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) {
             follow = -1;
         } else if (c >= 0x80) {
-            follow = (c >= 0xc2 && c <= 0xdf) ? 1 : (c >= 0xe0 && c <= 0xef) ? 2
-                     : (c >= 0xf0 && c <= 0xf4) ? 3 : -1;
+            follow = (c >= 0xc2 && c <= 0xdf)   ? 1
+                     : (c >= 0xe0 && c <= 0xef) ? 2
+                     : (c >= 0xf0 && c <= 0xf4) ? 3
+                                                : -1;
             for (int k = 1; follow > 0 && k <= follow; ++k) {
-                if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) {
+                if (i + k >= text.size() ||
+                    (static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) {
                     follow = -1;
                 }
             }
         }
         if (follow < 0) {
-            throw InputError(file + ":" + std::to_string(line) +
-                             ": (file): not a text case file (control or non-UTF-8 byte at offset " +
-                             std::to_string(i) + ")");
+            throw InputError(
+                file + ":" + std::to_string(line) +
+                ": (file): not a text case file (control or non-UTF-8 byte at offset " +
+                std::to_string(i) + ")");
         }
         i += static_cast<size_t>(follow);
     }
@@ -57,59 +61,64 @@ YAML::Node parse(const std::string& text, const std::string& file) {
     return root;
 }
 
+[[noreturn]] void override_error(const std::string& file, const std::string& path,
+                                 const std::string& problem) {
+    throw InputError(file + ":--set: " + (path.empty() ? "(set)" : path) + ": " + problem);
+}
+
+// The child of `node` named by one path segment: a key of a mapping (created when missing) or
+// an index into a list.
+YAML::Node descend(YAML::Node& node, const std::string& segment, const std::string& reached,
+                   const std::string& file) {
+    YAML::Node next;
+    if (node.IsSequence()) {
+        size_t index = 0;
+        try {
+            index = std::stoul(segment);
+        } catch (const std::exception&) {
+            override_error(file, reached, "indexes a list: use a number");
+        }
+        if (index >= node.size()) override_error(file, reached, "is past the end of the list");
+        next.reset(node[index]);
+    } else if (node.IsMap() || node.IsNull()) {
+        next.reset(node[segment]);
+    } else {
+        override_error(file, reached, "cannot set a key inside a value");
+    }
+    return next;
+}
+
 // Applies `key.path=value` to the tree: map segments are created when missing, list segments
 // are indices. The value is YAML (`[0.4, 2]` is a list). Returns the key path.
 std::string apply_override(YAML::Node& root, const std::string& text, const std::string& file) {
     const size_t eq = text.find('=');
     const std::string path = eq == std::string::npos ? text : text.substr(0, eq);
-    const auto bad = [&](const std::string& problem) {
-        throw InputError(file + ":--set: " + (path.empty() ? "(set)" : path) + ": " + problem);
-    };
-    if (eq == std::string::npos || path.empty()) bad("expected key.path=value, got '" + text + "'");
+    if (eq == std::string::npos || path.empty()) {
+        override_error(file, path, "expected key.path=value, got '" + text + "'");
+    }
     std::vector<std::string> segments;
     std::stringstream ss(path);
     for (std::string s; std::getline(ss, s, '.');) {
-        if (s.empty()) bad("empty segment in the key path");
+        if (s.empty()) override_error(file, path, "empty segment in the key path");
         segments.push_back(s);
     }
     YAML::Node value;
     try {
         value = YAML::Load(text.substr(eq + 1));
     } catch (const YAML::Exception& e) {
-        bad("the value is not valid YAML (" + e.msg + ")");
+        override_error(file, path, "the value is not valid YAML (" + e.msg + ")");
     }
-    if (value.IsNull()) bad("missing value after '='");
+    if (value.IsNull()) override_error(file, path, "missing value after '='");
     YAML::Node node = root;
     std::string reached;
     for (size_t i = 0; i + 1 < segments.size(); ++i) {
+        node.reset(descend(node, segments[i], reached, file));
         reached = cases::child_key(reached, segments[i]);
-        YAML::Node next;
-        if (node.IsSequence()) {
-            size_t index = 0;
-            try {
-                index = std::stoul(segments[i]);
-            } catch (const std::exception&) {
-                bad(reached + " indexes a list: use a number");
-            }
-            if (index >= node.size()) bad(reached + " is past the end of the list");
-            next.reset(node[index]);
-        } else if (node.IsMap() || node.IsNull()) {
-            next.reset(node[segments[i]]);
-        } else {
-            bad(reached.substr(0, reached.rfind('.')) + " is a value, not a mapping");
-        }
-        node.reset(next);
     }
-    if (node.IsScalar()) bad("cannot set a key inside a value");
+    if (node.IsScalar()) override_error(file, path, "cannot set a key inside a value");
     if (node.IsSequence()) {
-        size_t index = 0;
-        try {
-            index = std::stoul(segments.back());
-        } catch (const std::exception&) {
-            bad("indexes a list: use a number");
-        }
-        if (index >= node.size()) bad("is past the end of the list");
-        node[index] = value;
+        YAML::Node item = descend(node, segments.back(), path, file);
+        item = value;
     } else {
         node[segments.back()] = value;
     }
@@ -121,8 +130,8 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
                  {"name", "description", "units", "points", "sections", "members", "constraints",
                   "loads", "gravity", "analysis", "discretization", "solver", "references"});
     Model model;
-    model.name = root["name"] ? r.string(root["name"], "name")
-                              : std::filesystem::path(file).stem().string();
+    model.name =
+        root["name"] ? r.string(root["name"], "name") : std::filesystem::path(file).stem().string();
     if (root["description"]) model.description = r.string(root["description"], "description");
     if (root["units"]) model.units = r.string(root["units"], "units");
     cases::read_points(r, root, model);

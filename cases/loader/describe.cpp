@@ -54,8 +54,8 @@ void describe_members(const Model& model, std::ostream& os) {
         const Member& m = model.members[i];
         const ReferenceGeometry g(model, static_cast<int>(i));
         os << "  " << m.name << ": " << model.points[m.start_point].name << " → "
-           << model.points[m.end_point].name << ", " << line_text(m) << ", length "
-           << g.length() << ", " << m.elements << " element(s)";
+           << model.points[m.end_point].name << ", " << line_text(m) << ", length " << g.length()
+           << ", " << m.elements << " element(s)";
         if (m.twist_start != 0.0 || m.twist_end != 0.0) {
             os << ", twist " << m.twist_start << " → " << m.twist_end << " rad";
         }
@@ -108,9 +108,8 @@ void describe_analysis(const Model& model, std::ostream& os) {
     const Analysis& a = model.analysis;
     os << "analysis: ";
     if (a.kind == AnalysisKind::dynamic) {
-        os << "dynamic, Δt " << a.dynamics.time_step << ", end " << a.dynamics.end_time
-           << ", ρ∞ " << a.dynamics.rho_infinity << ", initial state " << a.dynamics.initial_state
-           << "\n";
+        os << "dynamic, Δt " << a.dynamics.time_step << ", end " << a.dynamics.end_time << ", ρ∞ "
+           << a.dynamics.rho_infinity << ", initial state " << a.dynamics.initial_state << "\n";
     } else if (a.kind == AnalysisKind::modal && a.statics.load_factors.empty()) {
         os << "modal, " << a.modal.modes << " modes about the "
            << (a.modal.about_static_state ? "unloaded static state" : "reference configuration")

@@ -34,8 +34,7 @@ LoadFrame read_frame(const YamlReader& r, const YAML::Node& n, const std::string
                : LoadFrame::dead;
 }
 
-void read_table(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                TimeFunction& f) {
+void read_table(const YamlReader& r, const YAML::Node& n, const std::string& key, TimeFunction& f) {
     f.times = r.numbers(r.required(n, key, "times"), key + ".times");
     f.values = r.numbers(r.required(n, key, "values"), key + ".values");
     if (f.times.size() < 2) r.fail(n["times"], key + ".times", "a table needs at least 2 entries");
@@ -45,7 +44,8 @@ void read_table(const YamlReader& r, const YAML::Node& n, const std::string& key
                    std::to_string(f.times.size()));
     }
     for (size_t i = 1; i < f.times.size(); ++i) {
-        if (!(f.times[i] > f.times[i - 1])) r.fail(n["times"], key + ".times", "must increase strictly");
+        if (!(f.times[i] > f.times[i - 1]))
+            r.fail(n["times"], key + ".times", "must increase strictly");
     }
 }
 
@@ -57,15 +57,20 @@ TimeFunction read_time_function(const YamlReader& r, const YAML::Node& n, const 
         r.choice(n, key, {"constant"});  // the other kinds need parameters
         return f;
     }
-    r.expect_map(n, key,
-                 {"type", "value", "start", "duration", "amplitude", "omega", "phase", "times",
-                  "values"});
+    r.expect_map(
+        n, key,
+        {"type", "value", "start", "duration", "amplitude", "omega", "phase", "times", "values"});
     const std::string type =
         r.choice(r.required(n, key, "type"), key + ".type", {"constant", "ramp", "sine", "table"});
     const std::vector<std::pair<const char*, std::vector<std::string>>> owners = {
-        {"value", {"constant", "ramp"}}, {"start", {"ramp", "sine"}}, {"duration", {"ramp"}},
-        {"amplitude", {"sine"}},         {"omega", {"sine"}},         {"phase", {"sine"}},
-        {"times", {"table"}},            {"values", {"table"}}};
+        {"value", {"constant", "ramp"}},
+        {"start", {"ramp", "sine"}},
+        {"duration", {"ramp"}},
+        {"amplitude", {"sine"}},
+        {"omega", {"sine"}},
+        {"phase", {"sine"}},
+        {"times", {"table"}},
+        {"values", {"table"}}};
     for (const auto& [k, kinds] : owners) {
         if (n[k] && std::find(kinds.begin(), kinds.end(), type) == kinds.end()) {
             r.fail(n[k], child_key(key, k), "not a parameter of a " + type + " time function");
@@ -114,7 +119,8 @@ void read_constraints(const YamlReader& r, const YAML::Node& root, Model& model)
             if (!n["displacement"] && !n["rotation"]) {
                 r.fail(n, key + ".displacement", "missing required key (or rotation)");
             }
-            if (n["displacement"]) c.displacement = r.vec3(n["displacement"], key + ".displacement");
+            if (n["displacement"])
+                c.displacement = r.vec3(n["displacement"], key + ".displacement");
             if (n["rotation"]) c.rotation = r.vec3(n["rotation"], key + ".rotation");
             if (n["time"]) c.time = read_time_function(r, n["time"], key + ".time");
         }
@@ -130,16 +136,20 @@ void read_loads(const YamlReader& r, const YAML::Node& root, Model& model) {
         const std::string key = "loads." + item.first.Scalar();
         const YAML::Node& n = item.second;
         r.expect_map(n, key, {"point", "member", "force", "moment", "frame", "time"});
-        if (n["point"] && n["member"]) r.fail(n["member"], key + ".member", "give point or member, not both");
-        if (!n["point"] && !n["member"]) r.fail(n, key + ".point", "missing required key (or member)");
-        if (!n["force"] && !n["moment"]) r.fail(n, key + ".force", "missing required key (or moment)");
+        if (n["point"] && n["member"])
+            r.fail(n["member"], key + ".member", "give point or member, not both");
+        if (!n["point"] && !n["member"])
+            r.fail(n, key + ".point", "missing required key (or member)");
+        if (!n["force"] && !n["moment"])
+            r.fail(n, key + ".force", "missing required key (or moment)");
         const Vec3 force = n["force"] ? r.vec3(n["force"], key + ".force") : Vec3::Zero();
         const Vec3 moment = n["moment"] ? r.vec3(n["moment"], key + ".moment") : Vec3::Zero();
         const LoadFrame frame = read_frame(r, n, key);
-        const TimeFunction time = n["time"] ? read_time_function(r, n["time"], key + ".time")
-                                            : TimeFunction{};
+        const TimeFunction time =
+            n["time"] ? read_time_function(r, n["time"], key + ".time") : TimeFunction{};
         if (n["point"]) {
-            const std::string p = r.name_in(n["point"], key + ".point", point_names(model), "point");
+            const std::string p =
+                r.name_in(n["point"], key + ".point", point_names(model), "point");
             model.point_loads.push_back({model.point_index(p), force, moment, frame, time});
         } else {
             const std::string m =

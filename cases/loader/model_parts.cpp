@@ -1,6 +1,5 @@
 // Case loader: points, sections, members, constraints, loads (docs/case-format.md).
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 
@@ -61,52 +60,49 @@ Mat6 isotropic_stiffness(const YamlReader& r, const YAML::Node& n, const std::st
     return d.asDiagonal();
 }
 
-Section read_section(const YamlReader& r, const YAML::Node& n, const std::string& key) {
-    r.expect_map(n, key, {"isotropic", "stiffness", "compliance", "mass", "density", "damping"});
-    const int given = (n["isotropic"] ? 1 : 0) + (n["stiffness"] ? 1 : 0) + (n["compliance"] ? 1 : 0);
-    if (given != 1) {
-        r.fail(n, key, given == 0 ? "missing required key: one of isotropic, stiffness, compliance"
-                                  : "give exactly one of isotropic, stiffness, compliance");
+Mat6 read_stiffness(const YamlReader& r, const YAML::Node& n, const std::string& k) {
+    const Mat6 K = r.mat6(n, k);
+    if (!symmetric(K)) r.fail(n, k, "stiffness matrix is not symmetric");
+    if (relative_min_eigenvalue(K) <= kDefiniteness) {
+        r.fail(n, k, "stiffness matrix is not positive definite");
     }
-    Section s;
-    double area = 0.0;
-    Vec3 inertia = Vec3::Zero();
-    if (n["isotropic"]) {
-        const Mat6 K = isotropic_stiffness(r, n["isotropic"], key + ".isotropic", &area, &inertia);
-        s.stiffness = K;
-        s.compliance = K.inverse();
-    } else if (n["stiffness"]) {
-        const std::string k = key + ".stiffness";
-        const Mat6 K = r.mat6(n["stiffness"], k);
-        if (!symmetric(K)) r.fail(n["stiffness"], k, "stiffness matrix is not symmetric");
-        if (relative_min_eigenvalue(K) <= kDefiniteness) {
-            r.fail(n["stiffness"], k, "stiffness matrix is not positive definite");
-        }
-        s.stiffness = 0.5 * (K + K.transpose());
-        s.compliance = s.stiffness->inverse();
-    } else {
-        const std::string k = key + ".compliance";
-        const Mat6 C = r.mat6(n["compliance"], k);
-        if (!symmetric(C)) r.fail(n["compliance"], k, "compliance matrix is not symmetric");
-        // Zero rows are rigid modes; the rest must be positive definite.
-        std::vector<int> flexible;
-        for (int i = 0; i < 6; ++i) {
-            if (C.row(i).cwiseAbs().maxCoeff() > 0.0) flexible.push_back(i);
-        }
-        if (flexible.empty()) r.fail(n["compliance"], k, "compliance is zero: the section is rigid");
-        Eigen::MatrixXd sub(flexible.size(), flexible.size());
-        for (size_t i = 0; i < flexible.size(); ++i)
-            for (size_t j = 0; j < flexible.size(); ++j) sub(i, j) = C(flexible[i], flexible[j]);
-        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sub, Eigen::EigenvaluesOnly);
-        if (eig.eigenvalues().minCoeff() <= kDefiniteness * eig.eigenvalues().cwiseAbs().maxCoeff()) {
-            r.fail(n["compliance"], k, "compliance matrix (without its zero rows) is not positive definite");
-        }
-        s.compliance = 0.5 * (C + C.transpose());
-        if (flexible.size() == 6) s.stiffness = s.compliance.inverse();
+    return 0.5 * (K + K.transpose());
+}
+
+// A compliance may have zero rows (rigid modes); the rest must be positive definite. Sets the
+// stiffness when no row is zero.
+void read_compliance(const YamlReader& r, const YAML::Node& n, const std::string& k, Section& s) {
+    const Mat6 C = r.mat6(n, k);
+    if (!symmetric(C)) r.fail(n, k, "compliance matrix is not symmetric");
+    std::vector<int> flexible;
+    for (int i = 0; i < 6; ++i) {
+        if (C.row(i).cwiseAbs().maxCoeff() > 0.0) flexible.push_back(i);
     }
-    if (n["mass"] && n["density"]) r.fail(n["density"], key + ".density", "give mass or density, not both");
+    if (flexible.empty()) r.fail(n, k, "compliance is zero: the section is rigid");
+    const auto m = static_cast<Eigen::Index>(flexible.size());
+    Eigen::MatrixXd sub(m, m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+        for (Eigen::Index j = 0; j < m; ++j) {
+            sub(i, j) = C(flexible[static_cast<size_t>(i)], flexible[static_cast<size_t>(j)]);
+        }
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(sub, Eigen::EigenvaluesOnly);
+    if (eig.eigenvalues().minCoeff() <= kDefiniteness * eig.eigenvalues().cwiseAbs().maxCoeff()) {
+        r.fail(n, k, "compliance matrix (without its zero rows) is not positive definite");
+    }
+    s.compliance = 0.5 * (C + C.transpose());
+    if (flexible.size() == 6) s.stiffness = s.compliance.inverse();
+}
+
+// `mass` (6×6) or `density` (isotropic sections: ρA and the rotary inertias), and `damping`.
+void read_inertia_and_damping(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                              double area, const Vec3& inertia, Section& s) {
+    if (n["mass"] && n["density"])
+        r.fail(n["density"], key + ".density", "give mass or density, not both");
     if (n["density"]) {
-        if (!n["isotropic"]) r.fail(n["density"], key + ".density", "density needs an isotropic section; give mass");
+        if (!n["isotropic"]) {
+            r.fail(n["density"], key + ".density", "density needs an isotropic section; give mass");
+        }
         const double rho = r.positive(n["density"], key + ".density");
         Mat6 M = Mat6::Zero();
         M.diagonal() << rho * area, rho * area, rho * area, rho * inertia[0], rho * inertia[1],
@@ -122,8 +118,34 @@ Section read_section(const YamlReader& r, const YAML::Node& n, const std::string
     }
     if (n["damping"]) {
         s.damping = r.vec6(n["damping"], key + ".damping");
-        if (s.damping.minCoeff() < 0.0) r.fail(n["damping"], key + ".damping", "must not be negative");
+        if (s.damping.minCoeff() < 0.0)
+            r.fail(n["damping"], key + ".damping", "must not be negative");
     }
+}
+
+Section read_section(const YamlReader& r, const YAML::Node& n, const std::string& key) {
+    r.expect_map(n, key, {"isotropic", "stiffness", "compliance", "mass", "density", "damping"});
+    const int given =
+        (n["isotropic"] ? 1 : 0) + (n["stiffness"] ? 1 : 0) + (n["compliance"] ? 1 : 0);
+    if (given != 1) {
+        r.fail(n, key,
+               given == 0 ? "missing required key: one of isotropic, stiffness, compliance"
+                          : "give exactly one of isotropic, stiffness, compliance");
+    }
+    Section s;
+    double area = 0.0;
+    Vec3 inertia = Vec3::Zero();
+    if (n["isotropic"]) {
+        const Mat6 K = isotropic_stiffness(r, n["isotropic"], key + ".isotropic", &area, &inertia);
+        s.stiffness = K;
+        s.compliance = K.inverse();
+    } else if (n["stiffness"]) {
+        s.stiffness = read_stiffness(r, n["stiffness"], key + ".stiffness");
+        s.compliance = s.stiffness->inverse();
+    } else {
+        read_compliance(r, n["compliance"], key + ".compliance", s);
+    }
+    read_inertia_and_damping(r, n, key, area, inertia, s);
     return s;
 }
 
@@ -163,7 +185,8 @@ void read_member_sections(const YamlReader& r, const YAML::Node& n, const std::s
                           const SectionTable& sections, Member& m) {
     std::vector<std::string> names;
     for (const auto& [name, s] : sections) names.push_back(name);
-    if (n["section"] && n["sections"]) r.fail(n["sections"], key + ".sections", "give section or sections, not both");
+    if (n["section"] && n["sections"])
+        r.fail(n["sections"], key + ".sections", "give section or sections, not both");
     if (n["section"]) {
         const std::string name = r.name_in(n["section"], key + ".section", names, "section");
         m.sections.push_back({0.0, sections.at(name)});
@@ -184,7 +207,8 @@ void read_member_sections(const YamlReader& r, const YAML::Node& n, const std::s
             (!first && at <= m.sections.back().s_fraction)) {
             r.fail(list[i]["at"], ik + ".at", "stations must increase from 0 to 1 (s/L)");
         }
-        const std::string name = r.name_in(r.required(list[i], ik, "section"), ik + ".section", names, "section");
+        const std::string name =
+            r.name_in(r.required(list[i], ik, "section"), ik + ".section", names, "section");
         m.sections.push_back({at, sections.at(name)});
     }
 }
@@ -195,14 +219,18 @@ Member read_member(const YamlReader& r, const YAML::Node& n, const std::string& 
     Member m;
     m.name = name;
     const std::vector<std::string> points = point_names(model);
-    m.start_point = model.point_index(r.name_in(r.required(n, key, "from"), key + ".from", points, "point"));
-    m.end_point = model.point_index(r.name_in(r.required(n, key, "to"), key + ".to", points, "point"));
-    if (m.start_point == m.end_point) r.fail(n["to"], key + ".to", "a member must join two different points");
+    m.start_point =
+        model.point_index(r.name_in(r.required(n, key, "from"), key + ".from", points, "point"));
+    m.end_point =
+        model.point_index(r.name_in(r.required(n, key, "to"), key + ".to", points, "point"));
+    if (m.start_point == m.end_point)
+        r.fail(n["to"], key + ".to", "a member must join two different points");
     if (n["line"]) m.line = read_line(r, n["line"], key + ".line");
     if (n["e2"]) m.line.e2_hint = r.vec3(n["e2"], key + ".e2");
     if (const YAML::Node t = n["twist"]) {
         const std::vector<double> tw = r.numbers(t, key + ".twist");
-        if (tw.size() > 2) r.fail(t, key + ".twist", "expected one angle or [start, end] (radians)");
+        if (tw.size() > 2)
+            r.fail(t, key + ".twist", "expected one angle or [start, end] (radians)");
         m.twist_start = tw.front();
         m.twist_end = tw.back();
     }

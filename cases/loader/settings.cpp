@@ -18,30 +18,39 @@ namespace {
 
 // Keys of `analysis` and the analysis types each belongs to.
 const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKeys = {
-    {"load_factors", {"static", "modal"}},   {"substeps", {"static", "modal"}},
-    {"max_step_cuts", {"static", "modal"}},  {"time_step", {"dynamic"}},
-    {"end_time", {"dynamic"}},               {"output_interval", {"dynamic"}},
-    {"rho_infinity", {"dynamic"}},           {"integrator", {"dynamic"}},
-    {"initial_velocity", {"dynamic"}},       {"initial_state", {"dynamic"}},
+    {"load_factors", {"static", "modal"}},
+    {"substeps", {"static", "modal"}},
+    {"max_step_cuts", {"static", "modal"}},
+    {"time_step", {"dynamic"}},
+    {"end_time", {"dynamic"}},
+    {"output_interval", {"dynamic"}},
+    {"rho_infinity", {"dynamic"}},
+    {"integrator", {"dynamic"}},
+    {"initial_velocity", {"dynamic"}},
+    {"initial_state", {"dynamic"}},
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
     if (n["load_factors"] || required) {
-        s.load_factors = r.numbers(r.required(n, "analysis", "load_factors"), "analysis.load_factors");
-        if (s.load_factors.empty()) r.fail(n["load_factors"], "analysis.load_factors", "must not be empty");
+        s.load_factors =
+            r.numbers(r.required(n, "analysis", "load_factors"), "analysis.load_factors");
+        if (s.load_factors.empty())
+            r.fail(n["load_factors"], "analysis.load_factors", "must not be empty");
     }
     if (n["substeps"]) s.substeps = r.positive_integer(n["substeps"], "analysis.substeps");
     if (n["max_step_cuts"]) {
         s.max_step_cuts = r.integer(n["max_step_cuts"], "analysis.max_step_cuts");
-        if (s.max_step_cuts < 0) r.fail(n["max_step_cuts"], "analysis.max_step_cuts", "must not be negative");
+        if (s.max_step_cuts < 0)
+            r.fail(n["max_step_cuts"], "analysis.max_step_cuts", "must not be negative");
     }
 }
 
 void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) {
     d.time_step = r.positive(r.required(n, "analysis", "time_step"), "analysis.time_step");
     d.end_time = r.positive(r.required(n, "analysis", "end_time"), "analysis.end_time");
-    if (d.end_time < d.time_step) r.fail(n["end_time"], "analysis.end_time", "is shorter than time_step");
+    if (d.end_time < d.time_step)
+        r.fail(n["end_time"], "analysis.end_time", "is shorter than time_step");
     if (n["output_interval"]) {
         d.output_interval = r.non_negative(n["output_interval"], "analysis.output_interval");
     }
@@ -53,9 +62,11 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     }
     if (n["integrator"]) d.integrator = r.string(n["integrator"], "analysis.integrator");
     if (n["initial_state"]) {
-        d.initial_state = r.choice(n["initial_state"], "analysis.initial_state", {"rest", "static"});
+        d.initial_state =
+            r.choice(n["initial_state"], "analysis.initial_state", {"rest", "static"});
     }
-    if (n["initial_velocity"]) d.initial_velocity = r.vec3(n["initial_velocity"], "analysis.initial_velocity");
+    if (n["initial_velocity"])
+        d.initial_velocity = r.vec3(n["initial_velocity"], "analysis.initial_velocity");
 }
 
 std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::string& key,
@@ -79,7 +90,8 @@ void read_reference_where(const YamlReader& r, const YAML::Node& n, const std::s
                           const Model& model, ReferenceValue& ref) {
     const Analysis& a = model.analysis;
     if (ref.quantity == "frequency") {
-        if (a.kind != AnalysisKind::modal) r.fail(n["quantity"], key + ".quantity", "frequency needs a modal analysis");
+        if (a.kind != AnalysisKind::modal)
+            r.fail(n["quantity"], key + ".quantity", "frequency needs a modal analysis");
         ref.mode = r.positive_integer(r.required(n, key, "mode"), key + ".mode");
         if (ref.mode > a.modal.modes) r.fail(n["mode"], key + ".mode", "exceeds analysis.modes");
         return;
@@ -89,7 +101,8 @@ void read_reference_where(const YamlReader& r, const YAML::Node& n, const std::s
     ref.point = r.name_in(r.required(n, key, "point"), key + ".point", points, "point");
     if (a.kind == AnalysisKind::dynamic) {
         ref.time = r.non_negative(r.required(n, key, "time"), key + ".time");
-        if (*ref.time > a.dynamics.end_time) r.fail(n["time"], key + ".time", "is after analysis.end_time");
+        if (*ref.time > a.dynamics.end_time)
+            r.fail(n["time"], key + ".time", "is after analysis.end_time");
     } else {
         ref.load_factor = r.number(r.required(n, key, "load_factor"), key + ".load_factor");
         // A reference must name a reported step, unless --set replaced the steps (a quick run
@@ -103,14 +116,16 @@ void read_reference_where(const YamlReader& r, const YAML::Node& n, const std::s
 
 ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const std::string& key,
                               const Model& model) {
-    r.expect_map(n, key, {"quantity", "point", "load_factor", "time", "mode", "value", "components",
-                          "tolerance", "relative", "gated", "justification", "source", "applies_to"});
+    r.expect_map(n, key,
+                 {"quantity", "point", "load_factor", "time", "mode", "value", "components",
+                  "tolerance", "relative", "gated", "justification", "source", "applies_to"});
     ReferenceValue ref;
     ref.quantity = r.choice(r.required(n, key, "quantity"), key + ".quantity",
                             {"displacement", "position", "rotation_angle", "frequency"});
     for (const char* k : {"point", "load_factor", "time", "mode"}) {
         if (!n[k]) continue;
-        const bool ok = ref.quantity == "frequency" ? std::string(k) == "mode" : std::string(k) != "mode";
+        const bool ok =
+            ref.quantity == "frequency" ? std::string(k) == "mode" : std::string(k) != "mode";
         if (!ok) r.fail(n[k], child_key(key, k), "not used with quantity " + ref.quantity);
     }
     read_reference_where(r, n, key, model, ref);
@@ -119,14 +134,16 @@ ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const st
     if (n["components"]) {
         if (!vector) r.fail(n["components"], key + ".components", "only for vector quantities");
         for (double c : r.numbers(n["components"], key + ".components")) {
-            if (c != 0.0 && c != 1.0 && c != 2.0) r.fail(n["components"], key + ".components", "components are 0, 1, 2 (x, y, z)");
+            if (c != 0.0 && c != 1.0 && c != 2.0)
+                r.fail(n["components"], key + ".components", "components are 0, 1, 2 (x, y, z)");
             ref.components.push_back(static_cast<int>(c));
         }
     }
     const size_t expected = !vector ? 1 : ref.components.empty() ? 3 : ref.components.size();
     if (ref.value.size() != expected) {
-        r.fail(n["value"], key + ".value", "expected " + std::to_string(expected) + " number(s), got " +
-                                               std::to_string(ref.value.size()));
+        r.fail(n["value"], key + ".value",
+               "expected " + std::to_string(expected) + " number(s), got " +
+                   std::to_string(ref.value.size()));
     }
     ref.tolerance = r.positive(r.required(n, key, "tolerance"), key + ".tolerance");
     if (n["relative"]) ref.relative = r.boolean(n["relative"], key + ".relative");
@@ -135,8 +152,9 @@ ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const st
     ref.source = r.string(r.required(n, key, "source"), key + ".source");
     if (const YAML::Node at = n["applies_to"]) {
         const std::string ak = key + ".applies_to";
-        r.expect_map(at, ak, {"formulation", "rotation", "elements", "order", "quadrature",
-                              "quadrature_points", "interpolation", "update", "mass_rule"});
+        r.expect_map(at, ak,
+                     {"formulation", "rotation", "elements", "order", "quadrature",
+                      "quadrature_points", "interpolation", "update", "mass_rule"});
         for (const auto& item : at) {
             const std::string name = item.first.Scalar();
             ref.applies_to[name] = applies_value(r, item.second, ak + "." + name, name);
@@ -162,7 +180,8 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
         if (it == kAnalysisKeys.end()) {
             std::vector<std::string> names(allowed.begin(), allowed.end());
             const std::string s = closest_match(k, names);
-            r.fail(item.first, "analysis." + k, "unknown key" + (s.empty() ? "" : "; did you mean '" + s + "'?"));
+            r.fail(item.first, "analysis." + k,
+                   "unknown key" + (s.empty() ? "" : "; did you mean '" + s + "'?"));
         }
         if (std::find(it->second.begin(), it->second.end(), type) == it->second.end()) {
             r.fail(item.first, "analysis." + k, "not used by a " + type + " analysis");
@@ -180,7 +199,8 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
         read_static(r, n, a.statics, false);
         if (n["modes"]) a.modal.modes = r.positive_integer(n["modes"], "analysis.modes");
         if (n["about_static_state"]) {
-            a.modal.about_static_state = r.boolean(n["about_static_state"], "analysis.about_static_state");
+            a.modal.about_static_state =
+                r.boolean(n["about_static_state"], "analysis.about_static_state");
         }
     }
 }
@@ -189,19 +209,24 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     const YAML::Node n = root["discretization"];
     if (!n) return;
     const std::string k = "discretization";
-    r.expect_map(n, k, {"formulation", "rotation", "order", "quadrature", "quadrature_points",
-                        "interpolation", "update", "rescale", "mass_rule"});
+    r.expect_map(n, k,
+                 {"formulation", "rotation", "order", "quadrature", "quadrature_points",
+                  "interpolation", "update", "rescale", "mass_rule"});
     Discretization& d = model.discretization;
-    if (n["formulation"]) d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
+    if (n["formulation"])
+        d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
     if (n["rotation"]) d.rotation = r.choice(n["rotation"], k + ".rotation", kRotations);
     if (n["order"]) d.order = r.positive_integer(n["order"], k + ".order");
     if (n["quadrature"]) {
         const std::string q = r.choice(n["quadrature"], k + ".quadrature", kQuadratures);
-        const auto at = std::find(kQuadratures.begin(), kQuadratures.end(), q) - kQuadratures.begin();
+        const auto at =
+            std::find(kQuadratures.begin(), kQuadratures.end(), q) - kQuadratures.begin();
         d.quadrature = static_cast<Quadrature>(at);  // kQuadratures lists the enum in order
     }
-    if (n["quadrature_points"]) d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points");
-    if (n["interpolation"]) d.interpolation = r.choice(n["interpolation"], k + ".interpolation", kInterpolations);
+    if (n["quadrature_points"])
+        d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points");
+    if (n["interpolation"])
+        d.interpolation = r.choice(n["interpolation"], k + ".interpolation", kInterpolations);
     if (n["update"]) d.update = r.choice(n["update"], k + ".update", kUpdates);
     if (n["rescale"]) d.rescale = r.boolean(n["rescale"], k + ".rescale");
     if (n["mass_rule"]) d.mass_rule = r.choice(n["mass_rule"], k + ".mass_rule", kMassRules);
@@ -211,12 +236,16 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     const YAML::Node n = root["solver"];
     if (!n) return;
     const std::string k = "solver";
-    r.expect_map(n, k, {"residual_tolerance", "increment_tolerance", "max_iterations",
-                        "line_search", "driver", "force_scale", "length_scale"});
+    r.expect_map(n, k,
+                 {"residual_tolerance", "increment_tolerance", "max_iterations", "line_search",
+                  "driver", "force_scale", "length_scale"});
     SolverSettings& s = model.solver;
-    if (n["residual_tolerance"]) s.residual_tolerance = r.positive(n["residual_tolerance"], k + ".residual_tolerance");
-    if (n["increment_tolerance"]) s.increment_tolerance = r.positive(n["increment_tolerance"], k + ".increment_tolerance");
-    if (n["max_iterations"]) s.max_iterations = r.positive_integer(n["max_iterations"], k + ".max_iterations");
+    if (n["residual_tolerance"])
+        s.residual_tolerance = r.positive(n["residual_tolerance"], k + ".residual_tolerance");
+    if (n["increment_tolerance"])
+        s.increment_tolerance = r.positive(n["increment_tolerance"], k + ".increment_tolerance");
+    if (n["max_iterations"])
+        s.max_iterations = r.positive_integer(n["max_iterations"], k + ".max_iterations");
     if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
     if (n["driver"]) s.driver = r.choice(n["driver"], k + ".driver", {"newton", "kinsol"});
     if (n["force_scale"]) s.force_scale = r.non_negative(n["force_scale"], k + ".force_scale");

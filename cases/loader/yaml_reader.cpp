@@ -145,7 +145,8 @@ void YamlReader::expect_named_map(const YAML::Node& node, const std::string& key
         const bool ok = std::all_of(n.begin(), n.end(), [](char c) {
             return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
         });
-        if (!ok) fail(item.first, child_key(key, n), "names may contain only letters, digits, _ and -");
+        if (!ok)
+            fail(item.first, child_key(key, n), "names may contain only letters, digits, _ and -");
     }
 }
 
@@ -248,8 +249,9 @@ std::vector<double> YamlReader::numbers(const YAML::Node& node, const std::strin
 
 Vec3 YamlReader::vec3(const YAML::Node& node, const std::string& key) const {
     if (!node.IsSequence() || node.size() != 3) {
-        fail(node, key, "expected a list of 3 numbers, got " + kind_name(node) +
-                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+        fail(node, key,
+             "expected a list of 3 numbers, got " + kind_name(node) +
+                 (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
     }
     const std::vector<double> v = numbers(node, key);
     return Vec3(v[0], v[1], v[2]);
@@ -257,8 +259,9 @@ Vec3 YamlReader::vec3(const YAML::Node& node, const std::string& key) const {
 
 Vec6 YamlReader::vec6(const YAML::Node& node, const std::string& key) const {
     if (!node.IsSequence() || node.size() != 6) {
-        fail(node, key, "expected a list of 6 numbers, got " + kind_name(node) +
-                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+        fail(node, key,
+             "expected a list of 6 numbers, got " + kind_name(node) +
+                 (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
     }
     const std::vector<double> v = numbers(node, key);
     Vec6 out;
@@ -268,8 +271,9 @@ Vec6 YamlReader::vec6(const YAML::Node& node, const std::string& key) const {
 
 Mat6 YamlReader::mat6(const YAML::Node& node, const std::string& key) const {
     if (!node.IsSequence() || node.size() != 6) {
-        fail(node, key, "expected 6 rows of 6 numbers, got " + kind_name(node) +
-                            (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
+        fail(node, key,
+             "expected 6 rows of 6 numbers, got " + kind_name(node) +
+                 (node.IsSequence() ? " of " + std::to_string(node.size()) : ""));
     }
     Mat6 M;
     for (int i = 0; i < 6; ++i) {

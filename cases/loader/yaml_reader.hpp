@@ -27,7 +27,7 @@ int edit_distance(const std::string& a, const std::string& b);
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 class YamlReader {
-public:
+  public:
     YamlReader(std::string file, std::set<std::string> overridden_keys)
         : file_(std::move(file)), overridden_(std::move(overridden_keys)) {}
 
@@ -72,7 +72,7 @@ public:
     std::vector<double> numbers(const YAML::Node& node, const std::string& key) const;
     Mat6 mat6(const YAML::Node& node, const std::string& key) const;  // 6 rows of 6
 
-private:
+  private:
     std::string kind_name(const YAML::Node& node) const;
     std::string scalar(const YAML::Node& node, const std::string& key,
                        const std::string& expected) const;

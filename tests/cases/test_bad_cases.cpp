@@ -2,7 +2,6 @@
 // `FILE:LINE: KEY: problem` carrying the expected fragment, as an InputError — never a crash,
 // never another exception type.
 #include <boost/test/unit_test.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <map>

@@ -1,8 +1,7 @@
 // Case loader: the catalog loads and means what benchmarks.md says, --set overrides are applied
 // and validated like the file, describe_model names what `rotbeam check` must show.
-#include <boost/test/unit_test.hpp>
-
 #include <algorithm>
+#include <boost/test/unit_test.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,9 +43,9 @@ BOOST_AUTO_TEST_SUITE(case_loader)
 
 BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
     const std::vector<std::string> catalog = {
-        "cantilever-moment", "cantilever-moment-4", "bend-45",       "joined-beam",
-        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",  "helix",
-        "helix-precessing",  "tip-load-cantilever", "free-vibration"};
+        "cantilever-moment", "cantilever-moment-4",  "bend-45",       "joined-beam",
+        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",   "helix",
+        "helix-precessing",  "tip-load-cantilever",  "free-vibration"};
     for (const std::string& name : catalog) {
         BOOST_TEST_CONTEXT(name) {
             const Model m = load_case(case_path(name));
@@ -58,7 +57,8 @@ BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
         }
     }
     // Every *.yaml in cases/ is in the catalog list above (a new case gets a test line).
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(ROTBEAM_SOURCE_DIR) + "/cases")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(ROTBEAM_SOURCE_DIR) + "/cases")) {
         if (entry.path().extension() != ".yaml") continue;
         BOOST_TEST((std::find(catalog.begin(), catalog.end(), entry.path().stem().string()) !=
                     catalog.end()),
@@ -74,7 +74,8 @@ BOOST_AUTO_TEST_CASE(cantilever_moment_is_table_one) {
     const Mat6 K = *m.members[0].sections[0].section.stiffness;
     BOOST_TEST(K(4, 4) == 2.5e6, boost::test_tools::tolerance(1e-14));
     BOOST_TEST(K(1, 1) == 5.0 / 6.0 * 30e6 / 2.6, boost::test_tools::tolerance(1e-14));
-    BOOST_TEST(m.point_loads.at(0).moment.y() == -kPi * 2.5e6 / 12.0, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(m.point_loads.at(0).moment.y() == -kPi * 2.5e6 / 12.0,
+               boost::test_tools::tolerance(1e-15));
     // Table I: 6 analytical + 7 converged GEBT entries gated, 2 non-converged recorded.
     BOOST_TEST(m.references.size() == 15u);
     const auto gated = std::count_if(m.references.begin(), m.references.end(),
@@ -133,21 +134,27 @@ BOOST_AUTO_TEST_CASE(precessing_helix_takes_160_equal_steps_to_four_pi) {
 }
 
 BOOST_AUTO_TEST_CASE(overrides_set_values_lists_and_new_keys) {
-    const Model m = load_case(case_path("cantilever-moment"),
-                              {"discretization.order=6", "members.beam.elements=8",
-                               "analysis.load_factors=[0.4,2]", "loads.tip-moment.frame=follower",
-                               "discretization.rotation=rodrigues"});
+    const Model m = load_case(
+        case_path("cantilever-moment"),
+        {"discretization.order=6", "members.beam.elements=8", "analysis.load_factors=[0.4,2]",
+         "loads.tip-moment.frame=follower", "discretization.rotation=rodrigues"});
     BOOST_TEST(m.discretization.order == 6);
     BOOST_TEST(m.members[0].elements == 8);
     BOOST_TEST((m.analysis.statics.load_factors == std::vector<double>{0.4, 2.0}));
     BOOST_TEST(m.has_follower_loads());
     BOOST_TEST(m.discretization.rotation == "rodrigues");
     // A key absent from the file (and a section absent from the file) can be set.
-    const Model t = load_case(case_path("tip-load-cantilever"),
-                              {"solver.max_iterations=7", "gravity=[0,0,-9.81]",
-                               "sections.square.density=7850"});
+    const Model t = load_case(
+        case_path("tip-load-cantilever"),
+        {"solver.max_iterations=7", "gravity=[0,0,-9.81]", "sections.square.density=7850"});
     BOOST_TEST(t.solver.max_iterations == 7);
     BOOST_TEST(t.gravity.z() == -9.81);
+    // List items are addressed by index.
+    const Model b = load_case(case_path("blade-mh104"), {"sections.mh104.mass.4.4=3.0"});
+    BOOST_TEST((*b.members[0].sections[0].section.mass)(4, 4) == 3.0);
+    BOOST_TEST(!input_error([&] {
+                    load_case(case_path("blade-mh104"), {"sections.mh104.mass.6=[1]"});
+                }).empty());
 }
 
 BOOST_AUTO_TEST_CASE(overrides_are_validated_like_the_file) {
@@ -155,8 +162,10 @@ BOOST_AUTO_TEST_CASE(overrides_are_validated_like_the_file) {
     const std::string order = input_error([&] { load_case(path, {"discretization.order=0"}); });
     BOOST_TEST(order == path + ":--set: discretization.order: must be a positive integer, got '0'");
     const std::string typo = input_error([&] { load_case(path, {"discretization.ordr=3"}); });
-    BOOST_TEST(typo.find("discretization.ordr: unknown key; did you mean 'order'?") != std::string::npos);
-    const std::string rotation = input_error([&] { load_case(path, {"discretization.rotation=rodriguez"}); });
+    BOOST_TEST(typo.find("discretization.ordr: unknown key; did you mean 'order'?") !=
+               std::string::npos);
+    const std::string rotation =
+        input_error([&] { load_case(path, {"discretization.rotation=rodriguez"}); });
     BOOST_TEST(rotation.find("did you mean 'rodrigues'?") != std::string::npos);
     BOOST_TEST(!input_error([&] { load_case(path, {"no-equals-sign"}); }).empty());
     BOOST_TEST(!input_error([&] { load_case(path, {"analysis.load_factors=[1, nan]"}); }).empty());

@@ -1,7 +1,6 @@
 // Reference geometry: exact arc end points and tangents, orthonormal frames, curvature equal to
 // the finite-difference derivative of the frame, arc-length parameterization of key-point curves.
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -158,7 +157,8 @@ BOOST_AUTO_TEST_CASE(keypoint_curve_interpolates_points_and_is_unit_speed_in_s) 
     // The curve passes through the first key point: the distance function has a zero.
     for (int i = 0; i <= 4000; ++i) {
         const double s = g.length() * i / 4000.0;
-        min_distance = std::min(min_distance, (g.position(s) - m.members[0].line.keypoints[0]).norm());
+        min_distance =
+            std::min(min_distance, (g.position(s) - m.members[0].line.keypoints[0]).norm());
     }
     BOOST_TEST(min_distance < g.length() / 4000.0);
     check_curvature_against_frames(g);
