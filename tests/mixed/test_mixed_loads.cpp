@@ -4,6 +4,7 @@
 // on the roll-up (the tip moment of a planar roll-up stays normal to the plane).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <vector>
 
 #include "core/so3.hpp"
 #include "core/static_driver.hpp"
@@ -103,8 +104,8 @@ BOOST_AUTO_TEST_CASE(rigid_axial_and_shear_rows_give_euler_bernoulli_deflection)
     const double P = 1e-2;  // deflection ≈ 2.8e-6 L: linear range
     m.point_loads[0].force = Vec3(0, 0, P);
     form::MixedStatics<param::WienerMilenkovic> problem(m);
-    BOOST_TEST_REQUIRE((run_static(problem, {1.0}, tight(), nullptr).status ==
-                        SolveStatus::converged));
+    BOOST_TEST_REQUIRE(
+        (run_static(problem, {1.0}, tight(), nullptr).status == SolveStatus::converged));
     const double L = test::kRollupLength;
     const double exact = P * L * L * L / (3.0 * test::kRollupEI);
     const Vec3 u = problem.point_state(1).displacement;
@@ -121,13 +122,27 @@ BOOST_AUTO_TEST_CASE(prescribed_root_motion_moves_the_unloaded_beam_rigidly) {
     m.constraints[0].displacement = Vec3(0.3, -0.2, 0.5);
     m.constraints[0].rotation = Vec3(0.4, -1.1, 0.7);  // 1.36 rad, scaled by the load factor
     form::MixedStatics<param::Rodrigues> problem(m);
-    BOOST_TEST_REQUIRE((run_static(problem, {1.0}, tight(), nullptr).status ==
-                        SolveStatus::converged));
+    BOOST_TEST_REQUIRE(
+        (run_static(problem, {1.0}, tight(), nullptr).status == SolveStatus::converged));
     const Mat3 R = so3::exp_map(m.constraints[0].rotation);
     const Vec3 expected = m.constraints[0].displacement + (R - Mat3::Identity()) * Vec3(12, 0, 0);
     // A rigid motion is an exact solution of Eqs. 45–48 (F = M = 0, c constant): round-off only.
     BOOST_TEST((problem.point_state(1).displacement - expected).norm() < 1e-10);
     BOOST_TEST((problem.point_state(1).rotation - R).norm() < 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(section_resultants_of_rollup_are_the_applied_moment_everywhere) {
+    form::MixedStatics<param::WienerMilenkovic> problem(test::rollup_model(16));
+    BOOST_TEST_REQUIRE(
+        (run_static(problem, {1.2}, tight(), nullptr).status == SolveStatus::converged));
+    const Vec3 applied = 1.2 * test::rollup_model(16).point_loads[0].moment;
+    const std::vector<form::MixedElementResultants> r = problem.resultants();
+    BOOST_TEST(r.size() == 16u);
+    for (const form::MixedElementResultants& e : r) {
+        // Pure bending: zero force, the tip moment transmitted unchanged (inertial components).
+        BOOST_TEST(e.force.norm() < 1e-9 * applied.norm() / test::kRollupLength);
+        BOOST_TEST((e.moment - applied).norm() < 1e-9 * applied.norm());
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
