@@ -40,15 +40,20 @@ struct Rodrigues {
 
     static P identity() { return P::Zero(); }
 
+    // |p| beyond which φ is within kSingularGuard of π: π − φ = 2 atan(2/|p|), so the limit is
+    // 2/tan(kSingularGuard/2) = 4/kSingularGuard (tan x = x to 1e-25 relative at x ~ 1e-12).
+    // Comparing norms keeps atan out of every call; it is evaluated only to report a refusal.
+    static constexpr double kMaxNorm = 4.0 / detail::kSingularGuard;
+
     // Refuses non-finite p and p within kSingularGuard of φ = π; returns pᵀp.
     static double checked_squared_norm(const P& p, const char* function) {
         detail::require_finite(p, kName, function);
-        const double n = p.norm();
-        const double distance = 2.0 * std::atan2(2.0, n);  // π − φ, exact for large |p|
-        if (!(distance > detail::kSingularGuard)) {
+        const double s = p.squaredNorm();
+        if (!(s < kMaxNorm * kMaxNorm)) {
+            const double distance = 2.0 * std::atan2(2.0, std::sqrt(s));  // π − φ
             detail::refuse(kName, function, kPi - distance, "at the singular angle π");
         }
-        return n * n;
+        return s;
     }
 
     // (R1). Refuses what checked_squared_norm refuses.

@@ -43,15 +43,20 @@ struct WienerMilenkovic {
 
     static P identity() { return P::Zero(); }
 
+    // |c| beyond which φ is within kSingularGuard of 2π: 2π − φ = 4 atan(4/|c|), so the limit is
+    // 4/tan(kSingularGuard/4) = 16/kSingularGuard (tan x = x to 1e-25 relative at x ~ 1e-12).
+    // Comparing norms keeps atan out of every call; it is evaluated only to report a refusal.
+    static constexpr double kMaxNorm = 16.0 / detail::kSingularGuard;
+
     // Refuses non-finite c and c within kSingularGuard of φ = 2π; returns cᵀc.
     static double checked_squared_norm(const P& c, const char* function) {
         detail::require_finite(c, kName, function);
-        const double n = c.norm();
-        const double distance = 4.0 * std::atan2(4.0, n);  // 2π − φ, exact for large |c|
-        if (!(distance > detail::kSingularGuard)) {
+        const double s = c.squaredNorm();
+        if (!(s < kMaxNorm * kMaxNorm)) {
+            const double distance = 4.0 * std::atan2(4.0, std::sqrt(s));  // 2π − φ
             detail::refuse(kName, function, 2.0 * kPi - distance, "at the singular angle 2π");
         }
-        return n * n;
+        return s;
     }
 
     // (W1). Refuses what checked_squared_norm refuses.
@@ -162,8 +167,7 @@ struct WienerMilenkovic {
         checked_squared_norm(reference, "rescale");
         if (s == 0.0) return c;
         const P complement = (-16.0 / s) * c;
-        if (!complement.allFinite() ||
-            4.0 * std::atan2(4.0, complement.norm()) <= detail::kSingularGuard) {
+        if (!(complement.squaredNorm() < kMaxNorm * kMaxNorm)) {
             return c;
         }
         return (complement - reference).squaredNorm() < (c - reference).squaredNorm() ? complement
