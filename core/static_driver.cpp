@@ -46,21 +46,27 @@ double scaled_max_norm(const VecX& v, const VecX& scale) {
     return m;
 }
 
-double scaled_merit(const VecX& r, const VecX& scale) {
-    return 0.5 * (r.array() / scale.array()).matrix().squaredNorm();
+using SparseLU = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
+
+// Root-mean-square of v_i / scale_i (the increment norm of the monotonicity test).
+double scaled_rms(const VecX& v, const VecX& scale) {
+    return std::sqrt((v.array() / scale.array()).square().mean());
 }
 
-// Backtracking (Armijo) along the retraction: x ⊕ α δ with α = 1, ½, ¼, … For a Newton direction
-// the directional derivative of the merit ½‖r̂‖² is −‖r̂‖², so sufficient decrease reads
-// m(α) ≤ (1 − 2 c α) m(0). A parameterization refusing x ⊕ α δ counts as a failed trial.
-// Returns the accepted α, or 0 when no trial was accepted (state restored).
-double line_search(NonlinearSystem& system, const VecX& dx, double merit0, const VecX& rscale,
-                   VecX& r_trial, bool& saw_singular) {
-    constexpr double kArmijo = 1e-4;
-    constexpr int kMaxHalvings = 12;
+// Damping along the retraction by Deuflhard's natural monotonicity test (NLEQ-ERR): a trial
+// x ⊕ α δ is accepted when the simplified Newton correction there, δ̄ = −J(x)⁻¹ r(x ⊕ α δ)
+// (the factorization is reused), is smaller than the Newton correction: ‖δ̄‖ ≤ (1 − α/4)‖δ‖.
+// Unlike a residual-norm (Armijo) test this is affine invariant: it does not depend on how force
+// and moment rows are scaled, which is what made a residual test stall on the roll-up (moment
+// rows dominate after a large rotation). α starts from min(1, 4 α_previous) and is halved; a
+// parameterization refusing x ⊕ α δ counts as a failed trial. Returns the accepted α or 0.
+double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx,
+                   const VecX& xscale, double alpha_start, VecX& r_trial, VecX& dx_bar,
+                   bool& saw_singular) {
+    constexpr double kMinAlpha = 1.0 / 8192.0;
+    const double norm_dx = scaled_rms(dx, xscale);
     system.save_state(NonlinearSystem::kLineSearchSlot);
-    double alpha = 1.0;
-    for (int k = 0; k <= kMaxHalvings; ++k, alpha *= 0.5) {
+    for (double alpha = alpha_start; alpha >= kMinAlpha; alpha *= 0.5) {
         try {
             system.retract(alpha * dx);
             system.evaluate(r_trial, nullptr);
@@ -69,8 +75,13 @@ double line_search(NonlinearSystem& system, const VecX& dx, double merit0, const
             system.restore_state(NonlinearSystem::kLineSearchSlot);
             continue;
         }
-        const double m = scaled_merit(r_trial, rscale);
-        if (std::isfinite(m) && m <= (1.0 - 2.0 * kArmijo * alpha) * merit0) return alpha;
+        if (r_trial.allFinite()) {
+            dx_bar = -lu.solve(r_trial);
+            const double norm_bar = scaled_rms(dx_bar, xscale);
+            if (std::isfinite(norm_bar) && norm_bar <= (1.0 - 0.25 * alpha) * norm_dx) {
+                return alpha;
+            }
+        }
         system.restore_state(NonlinearSystem::kLineSearchSlot);
     }
     return 0.0;
@@ -81,9 +92,10 @@ double line_search(NonlinearSystem& system, const VecX& dx, double merit0, const
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
     const int n = system.size();
     NewtonOutcome out;
-    VecX r(n), r_trial(n), dx(n);
+    VecX r(n), r_trial(n), dx(n), dx_bar(n);
     SparseMatrix J(n, n);
-    Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+    SparseLU lu;
+    double previous_alpha = 1.0;
     bool analyzed = false;
     const VecX& rscale = system.residual_scale();
     const VecX& xscale = system.increment_scale();
@@ -101,6 +113,10 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
         const double rnorm = scaled_max_norm(r, rscale);
         out.scaled_residual = rnorm;
         out.iterations = it;
+        if (settings.trace) {
+            *settings.trace << "  newton " << it << ": scaled residual " << rnorm
+                            << ", last scaled increment " << last_increment << "\n";
+        }
         if (!std::isfinite(rnorm)) {
             out.failure = "non-finite residual";
             return out;
@@ -139,11 +155,13 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
         double alpha = 1.0;
         if (settings.line_search) {
             bool saw_singular = false;
-            alpha = line_search(system, dx, scaled_merit(r, rscale), rscale, r_trial, saw_singular);
+            alpha = damped_step(system, lu, dx, xscale, std::min(1.0, 4.0 * previous_alpha),
+                                r_trial, dx_bar, saw_singular);
+            if (settings.trace) *settings.trace << "    damping " << alpha << "\n";
             if (alpha == 0.0) {
                 out.failure = saw_singular ? "every line-search trial was refused by the "
                                              "parameterization (singular)"
-                                           : "line search found no decrease";
+                                           : "damping found no monotone step";
                 out.singular = saw_singular;
                 out.iterations = it + 1;
                 return out;
@@ -157,6 +175,7 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
                 return out;
             }
         }
+        previous_alpha = alpha;
         previous_residual = rnorm;
         last_increment = alpha * scaled_max_norm(dx, xscale);
     }
@@ -201,6 +220,7 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                                      ? target
                                      : lambda + h;
             problem.set_load_factor(trial);
+            if (settings.trace) *settings.trace << "load factor " << trial << "\n";
             last = solve_newton(problem, settings);
             if (last.converged) {
                 lambda = trial;
@@ -217,6 +237,7 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
             }
             problem.restore_state(NonlinearSystem::kStepSlot);
             problem.set_load_factor(lambda);
+            if (settings.trace) *settings.trace << "  step cut: " << last.failure << "\n";
             if (++cuts > settings.max_step_cuts) {
                 const bool singular = last.singular;
                 outcome.status = singular ? SolveStatus::singular : SolveStatus::diverged;

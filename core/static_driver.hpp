@@ -1,5 +1,6 @@
 // The shared static driver: load stepping with automatic step cutting around a damped Newton
-// method whose update is a retraction x ⊕ δ (rotations are composed, not added). Used by both
+// method whose update is a retraction x ⊕ δ (rotations are composed, not added). Damping uses
+// Deuflhard's natural monotonicity test (affine invariant; see damped_step in the .cpp). Used by both
 // formulations (through StaticProblem only).
 //
 // Convergence (both must hold): max_i |r_i| / residual_scale_i ≤ residual_tolerance and
@@ -30,6 +31,7 @@ struct NewtonSettings {
     bool line_search = true;
     int max_step_cuts = 12;
     int substeps = 1;
+    std::ostream* trace = nullptr;  // when set: one line per Newton iteration and step cut
 };
 
 NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics);
