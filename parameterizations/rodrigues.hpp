@@ -157,7 +157,10 @@ struct Rodrigues {
             const double p2 = phi * phi;
             return (1.0 + p2 / 12.0 + p2 * p2 / 120.0) * psi;
         }
-        return (2.0 * std::tan(0.5 * phi) / phi) * psi;
+        // tan may round |p| just past the norm limit right at the guard: check the result too.
+        const P p = (2.0 * std::tan(0.5 * phi) / phi) * psi;
+        checked_squared_norm(p, "from_rotation_vector");
+        return p;
     }
 
     // φ n with φ = 2 atan(|p|/2) ∈ [0, π). Refuses non-finite or singular p.

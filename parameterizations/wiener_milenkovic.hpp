@@ -187,7 +187,10 @@ struct WienerMilenkovic {
             const double p2 = phi * phi;
             return (1.0 + p2 / 48.0 + p2 * p2 / 1920.0) * psi;
         }
-        return (4.0 * std::tan(0.25 * phi) / phi) * psi;
+        // tan may round |p| just past the norm limit right at the guard: check the result too.
+        const P p = (4.0 * std::tan(0.25 * phi) / phi) * psi;
+        checked_squared_norm(p, "from_rotation_vector");
+        return p;
     }
 
     // φ n with φ = 4 atan(|c|/4) ∈ [0, 2π). Refuses non-finite or singular c.

@@ -81,6 +81,9 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_refuses_2pi_and_beyond) {
     const Vec3 inside = WM::from_rotation_vector((2.0 * kPi - 1e-6) * n);
     BOOST_TEST(WM::matrix(inside).allFinite());
     BOOST_TEST(WM::material_tangent_inverse(inside).allFinite());
+    const Vec3 edge = WM::from_rotation_vector((2.0 * kPi - 2e-12) * n);
+    BOOST_TEST(WM::material_tangent_inverse(edge).allFinite());
+    BOOST_CHECK_THROW(WM::from_rotation_vector((2.0 * kPi - 0.5e-12) * n), SingularityError);
 }
 
 BOOST_AUTO_TEST_CASE(rodrigues_refuses_pi_and_beyond) {
@@ -97,6 +100,10 @@ BOOST_AUTO_TEST_CASE(rodrigues_refuses_pi_and_beyond) {
     const Vec3 b = Rod::from_rotation_vector(0.5 * kPi * n);
     refusal_angle<Rod>([&] { Rod::compose(a, b); }, "compose");
     BOOST_TEST(Rod::matrix(Rod::from_rotation_vector((kPi - 1e-6) * n)).allFinite());
+    // The guard is 1e-12 rad, consistently for rotation vectors and parameters.
+    const Vec3 edge = Rod::from_rotation_vector((kPi - 2e-12) * n);
+    BOOST_TEST(Rod::material_tangent_inverse(edge).allFinite());
+    BOOST_CHECK_THROW(Rod::from_rotation_vector((kPi - 0.5e-12) * n), SingularityError);
 }
 
 BOOST_AUTO_TEST_CASE(rotation_vector_tangents_refuse_full_turns_but_its_matrix_does_not) {
