@@ -1,5 +1,6 @@
 #include "cases/loader/case_loader.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -125,6 +126,24 @@ std::string apply_override(YAML::Node& root, const std::string& text, const std:
     return path;
 }
 
+// Every point is an end of some member (a point nothing attaches to cannot carry a load or a
+// constraint), and a static analysis needs a constraint (else rigid-body motion is singular).
+void check_topology(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    for (size_t i = 0; i < model.points.size(); ++i) {
+        const bool used =
+            std::any_of(model.members.begin(), model.members.end(), [&](const Member& m) {
+                return m.start_point == static_cast<int>(i) || m.end_point == static_cast<int>(i);
+            });
+        if (!used) {
+            r.fail(root["points"], "points." + model.points[i].name, "is not an end of any member");
+        }
+    }
+    if (model.analysis.kind == AnalysisKind::static_ && model.constraints.empty()) {
+        r.fail(root["analysis"], "constraints",
+               "missing: a static analysis needs at least one constraint (rigid-body motion)");
+    }
+}
+
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
     r.expect_map(root, "",
                  {"name", "description", "units", "points", "sections", "members", "constraints",
@@ -144,6 +163,7 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     cases::read_discretization(r, root, model);
     cases::read_solver(r, root, model);
     cases::read_references(r, root, model);
+    check_topology(r, root, model);
     // Inertia is needed by dynamics, modal analysis and gravity: every section must have mass.
     if (model.needs_inertia() || model.gravity.norm() > 0.0) {
         for (const Member& m : model.members) {

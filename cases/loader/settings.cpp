@@ -170,6 +170,7 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     std::vector<const char*> allowed = {"type"};
     for (const auto& [k, kinds] : kAnalysisKeys) allowed.push_back(k);
     if (!n.IsMap()) r.fail(n, "analysis", "expected a mapping");
+    r.expect_unique_keys(n, "analysis");
     const std::string type = r.choice(r.required(n, "analysis", "type"), "analysis.type",
                                       {"static", "dynamic", "modal"});
     for (const auto& item : n) {

@@ -119,9 +119,20 @@ std::string YamlReader::kind_name(const YAML::Node& node) const {
     }
 }
 
+void YamlReader::expect_unique_keys(const YAML::Node& node, const std::string& key) const {
+    std::set<std::string> seen;
+    for (const auto& item : node) {
+        if (!item.first.IsScalar()) fail(item.first, key, "keys must be plain names");
+        if (!seen.insert(item.first.Scalar()).second) {
+            fail(item.first, child_key(key, item.first.Scalar()), "duplicate key");
+        }
+    }
+}
+
 void YamlReader::expect_map(const YAML::Node& node, const std::string& key,
                             std::initializer_list<const char*> allowed) const {
     if (!node.IsMap()) fail(node, key, "expected a mapping, got " + kind_name(node));
+    expect_unique_keys(node, key);
     const std::vector<std::string> names(allowed.begin(), allowed.end());
     for (const auto& item : node) {
         if (!item.first.IsScalar()) fail(item.first, key, "keys must be plain names");
@@ -137,6 +148,7 @@ void YamlReader::expect_map(const YAML::Node& node, const std::string& key,
 void YamlReader::expect_named_map(const YAML::Node& node, const std::string& key) const {
     if (!node.IsMap()) fail(node, key, "expected a mapping of names, got " + kind_name(node));
     if (node.size() == 0) fail(node, key, "must name at least one entry");
+    expect_unique_keys(node, key);
     for (const auto& item : node) {
         if (!item.first.IsScalar() || item.first.Scalar().empty()) {
             fail(item.first, key, "names must be non-empty plain scalars");

@@ -47,6 +47,8 @@ class YamlReader {
     // A mapping whose keys are all in `allowed` (else: unknown key, with a suggestion).
     void expect_map(const YAML::Node& node, const std::string& key,
                     std::initializer_list<const char*> allowed) const;
+    // A mapping in which no key appears twice (yaml-cpp keeps both silently).
+    void expect_unique_keys(const YAML::Node& node, const std::string& key) const;
     // A mapping with arbitrary (user-chosen) names as keys, each a valid identifier.
     void expect_named_map(const YAML::Node& node, const std::string& key) const;
     // The child `name` of `map`, which must be present.
