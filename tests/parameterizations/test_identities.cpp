@@ -184,6 +184,46 @@ BOOST_AUTO_TEST_CASE(quaternion_matrix_is_homogeneous_off_the_unit_sphere) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(wiener_milenkovic_matches_seed_002_as_printed) {
+    // Eq. 14 (C = Rᵀ), Eq. 24 (Q = H_m, the material tangent) and Eq. 25 (Q⁻¹), written out
+    // literally; the finite-difference tests prove that this Q satisfies Rᵀ δR = (Q δc)~.
+    using WM = param::WienerMilenkovic;
+    const Vec3 c = WM::from_rotation_vector(2.2 * generic_axis());
+    const double c0 = 2.0 - c.squaredNorm() / 8.0;
+    const double d = (4.0 - c0) * (4.0 - c0);
+    const double c1 = c[0], c2 = c[1], c3 = c[2];
+    Mat3 C;
+    C << c0 * c0 + c1 * c1 - c2 * c2 - c3 * c3, 2 * (c1 * c2 + c0 * c3), 2 * (c1 * c3 - c0 * c2),
+        2 * (c1 * c2 - c0 * c3), c0 * c0 - c1 * c1 + c2 * c2 - c3 * c3, 2 * (c2 * c3 + c0 * c1),
+        2 * (c1 * c3 + c0 * c2), 2 * (c2 * c3 - c0 * c1), c0 * c0 - c1 * c1 - c2 * c2 + c3 * c3;
+    C /= d;
+    const Mat3 Q = ((4.0 - c.squaredNorm() / 4.0) * Mat3::Identity() - 2.0 * so3::skew(c) +
+                    0.5 * c * c.transpose()) /
+                   d;
+    const Mat3 Q_inverse = (1.0 - c.squaredNorm() / 16.0) * Mat3::Identity() + 0.5 * so3::skew(c) +
+                           0.125 * c * c.transpose();
+    BOOST_TEST((WM::matrix(c) - C.transpose()).norm() <= 8.0 * kEps);
+    BOOST_TEST((WM::material_tangent(c) - Q).norm() <= 8.0 * kEps);
+    BOOST_TEST((WM::material_tangent_inverse(c) - Q_inverse).norm() <=
+               8.0 * kEps * Q_inverse.norm());
+}
+
+BOOST_AUTO_TEST_CASE(rodrigues_matches_the_gebt_formulas_of_design_md) {
+    // Rᵀ = [(1 − pᵀp/4) I − p̃ + p pᵀ/2]/(1 + pᵀp/4), Q = (I − p̃/2)/(1 + pᵀp/4),
+    // Q⁻¹ = I + p̃/2 + p pᵀ/4 (DESIGN.md §Conventions).
+    using Rod = param::Rodrigues;
+    const Vec3 p = Rod::from_rotation_vector(2.2 * generic_axis());
+    const double s = p.squaredNorm();
+    const Mat3 Rt = ((1.0 - s / 4.0) * Mat3::Identity() - so3::skew(p) + 0.5 * p * p.transpose()) /
+                    (1.0 + s / 4.0);
+    const Mat3 Q = (Mat3::Identity() - 0.5 * so3::skew(p)) / (1.0 + s / 4.0);
+    const Mat3 Q_inverse = Mat3::Identity() + 0.5 * so3::skew(p) + 0.25 * p * p.transpose();
+    BOOST_TEST((Rod::matrix(p).transpose() - Rt).norm() <= 8.0 * kEps);
+    BOOST_TEST((Rod::material_tangent(p) - Q).norm() <= 8.0 * kEps);
+    BOOST_TEST((Rod::material_tangent_inverse(p) - Q_inverse).norm() <=
+               8.0 * kEps * Q_inverse.norm());
+}
+
 BOOST_AUTO_TEST_CASE(wiener_milenkovic_rescale_uses_the_complementary_parameters) {
     // Past π: c' = 4 tan((φ − 2π)/4) n (DESIGN.md), the same R.
     using WM = param::WienerMilenkovic;
