@@ -1,6 +1,71 @@
-// The rotbeam program: see cases/runner/cli.cpp (being written).
+// The rotbeam program. Bad input → one line on stderr naming the file/option and the problem, exit
+// code 2, no partial output; anything unexpected → exit 3 with the message (a bug).
 #include <iostream>
-int main() {
-    std::cerr << "rotbeam: commands are being assembled\n";
-    return 2;
+#include <map>
+#include <string>
+#include <vector>
+
+#include "arguments.hpp"
+#include "commands.hpp"
+#include "core/errors.hpp"
+#include "core/version.hpp"
+
+namespace {
+
+using Command = int (*)(const rotbeam::cli::Args&);
+
+const std::map<std::string, std::pair<Command, const char*>>& commands() {
+    using namespace rotbeam::cli;
+    static const std::map<std::string, std::pair<Command, const char*>> table = {
+        {"list", {command_list, "list cases, parameterizations and formulations"}},
+        {"check", {command_check, "validate a case file and describe the model"}},
+        {"run", {command_run, "run a case with one parameterization and formulation"}},
+        {"suite", {command_suite, "run the benchmark suite and write the report"}},
+        {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},
+        {"reference", {command_reference, "continuum reference solution of a static case"}},
+        {"study", {command_study, "run a study (rotations)"}},
+    };
+    return table;
+}
+
+void print_usage(std::ostream& os) {
+    os << "rotbeam " << rotbeam::kGitDescribe
+       << " — verification testbed for geometrically exact beams\n\nusage: rotbeam COMMAND "
+          "[options]   (rotbeam COMMAND --help for details)\n\ncommands:\n";
+    for (const auto& [name, entry] : commands()) {
+        std::string left = "  " + name;
+        left.resize(14, ' ');
+        os << left << entry.second << "\n";
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::vector<std::string> all(argv + 1, argv + argc);
+    if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
+        print_usage(std::cout);
+        return all.empty() ? 2 : 0;
+    }
+    if (all[0] == "--version") {
+        std::cout << "rotbeam " << rotbeam::kGitDescribe << "\n";
+        return 0;
+    }
+    const auto it = commands().find(all[0]);
+    try {
+        if (it == commands().end()) {
+            std::vector<std::string> names;
+            for (const auto& [name, entry] : commands()) names.push_back(name);
+            const std::string guess = rotbeam::cli::closest_match(all[0], names);
+            throw rotbeam::InputError("rotbeam: unknown command '" + all[0] + "'" +
+                                      (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+        }
+        return it->second.first(std::vector<std::string>(all.begin() + 1, all.end()));
+    } catch (const rotbeam::InputError& e) {
+        std::cerr << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "rotbeam: internal error: " << e.what() << "\n";
+        return 3;
+    }
 }

@@ -1,0 +1,153 @@
+#include "arguments.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace rotbeam::cli {
+
+std::optional<std::string> ParsedArguments::value(const std::string& name) const {
+    const auto it = values_.find(name);
+    if (it == values_.end() || it->second.empty()) return std::nullopt;
+    return it->second.back();
+}
+
+std::vector<std::string> ParsedArguments::values(const std::string& name) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? std::vector<std::string>{} : it->second;
+}
+
+std::optional<int> ParsedArguments::positive_int(const std::string& command,
+                                                 const std::string& name) const {
+    const std::optional<std::string> v = value(name);
+    if (!v) return std::nullopt;
+    size_t used = 0;
+    long n = 0;
+    try {
+        n = std::stol(*v, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != v->size() || n <= 0 || n > 1000000) {
+        throw InputError("rotbeam " + command + ": --" + name +
+                         ": expected a positive integer, got '" + *v + "'");
+    }
+    return static_cast<int>(n);
+}
+
+namespace {
+
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+const OptionSpec* find_option(const CommandSpec& spec, const std::string& name) {
+    for (const OptionSpec& o : spec.options) {
+        if (o.name == name) return &o;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const size_t d = edit_distance(word, c);
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args) {
+    ParsedArguments parsed;
+    const std::string prefix = "rotbeam " + spec.name + ": ";
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--help" || a == "-h") {
+            parsed.help = true;
+            continue;
+        }
+        if (a.rfind("--", 0) != 0 || a.size() == 2) {
+            parsed.positional.push_back(a);
+            continue;
+        }
+        std::string name = a.substr(2);
+        std::optional<std::string> inline_value;
+        if (const size_t eq = name.find('='); eq != std::string::npos) {
+            inline_value = name.substr(eq + 1);
+            name = name.substr(0, eq);
+        }
+        const OptionSpec* option = find_option(spec, name);
+        if (!option) {
+            std::vector<std::string> names;
+            for (const OptionSpec& o : spec.options) names.push_back(o.name);
+            const std::string guess = closest_match(name, names);
+            throw InputError(prefix + "unknown option '--" + name + "'" +
+                             (guess.empty() ? "" : " (did you mean '--" + guess + "'?)") +
+                             "; see 'rotbeam " + spec.name + " --help'");
+        }
+        if (option->value_name.empty()) {
+            if (inline_value) throw InputError(prefix + "--" + name + " takes no value");
+            parsed.values_[name].push_back("true");
+            continue;
+        }
+        std::string value;
+        if (inline_value) {
+            value = *inline_value;
+        } else {
+            if (i + 1 >= args.size()) {
+                throw InputError(prefix + "--" + name + " needs a value (" + option->value_name + ")");
+            }
+            value = args[++i];
+        }
+        if (!option->repeatable && parsed.values_.count(name)) {
+            throw InputError(prefix + "--" + name + " given more than once");
+        }
+        parsed.values_[name].push_back(value);
+    }
+    if (parsed.help) return parsed;
+    const int n = static_cast<int>(parsed.positional.size());
+    if (n < spec.min_positional) {
+        throw InputError(prefix + "missing " + spec.positional + "; see 'rotbeam " + spec.name +
+                         " --help'");
+    }
+    if (spec.max_positional >= 0 && n > spec.max_positional) {
+        throw InputError(prefix + "unexpected argument '" + parsed.positional.back() + "'");
+    }
+    return parsed;
+}
+
+std::string help_text(const CommandSpec& spec) {
+    std::ostringstream s;
+    s << "usage: rotbeam " << spec.name;
+    if (!spec.positional.empty()) s << " " << spec.positional;
+    if (!spec.options.empty()) s << " [options]";
+    s << "\n\n" << spec.summary << "\n";
+    if (!spec.options.empty()) s << "\noptions:\n";
+    for (const OptionSpec& o : spec.options) {
+        std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+        if (left.size() < 30) left.resize(30, ' ');
+        s << left << " " << o.help << (o.repeatable ? " (repeatable)" : "") << "\n";
+    }
+    s << "  --help                       print this help\n";
+    return s.str();
+}
+
+}  // namespace rotbeam::cli

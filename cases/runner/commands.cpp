@@ -1,0 +1,223 @@
+#include "commands.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "arguments.hpp"
+#include "cases/loader/case_loader.hpp"
+#include "continuum_json.hpp"
+#include "core/errors.hpp"
+#include "core/results.hpp"
+#include "parameterizations/registry.hpp"
+#include "parameterizations/rotation_study.hpp"
+#include "run_case.hpp"
+
+namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
+
+std::string catalog_directory() {
+    if (const char* env = std::getenv("ROTBEAM_CASES"); env && *env) return env;
+    return ROTBEAM_CASES_DIR;
+}
+
+std::vector<std::string> catalog_cases() {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(catalog_directory(), ec)) {
+        if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string resolve_case_path(const std::string& argument) {
+    if (fs::exists(argument)) return argument;
+    const fs::path in_catalog = fs::path(catalog_directory()) / (argument + ".yaml");
+    if (argument.find('/') == std::string::npos && fs::exists(in_catalog)) return in_catalog;
+    const std::string guess = closest_match(fs::path(argument).stem().string(), catalog_cases());
+    throw InputError(argument + ": no such case file" +
+                     (guess.empty() ? "" : " (did you mean the catalog case '" + guess + "'?)"));
+}
+
+namespace {
+
+const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
+                            "override any case key, validated like the file", true};
+
+// The shorthand options of `run` become --set overrides, validated by the loader.
+std::vector<std::string> overrides_from(const ParsedArguments& a) {
+    std::vector<std::string> overrides;
+    const std::pair<const char*, const char*> shorthands[] = {
+        {"rotation", "discretization.rotation"},
+        {"formulation", "discretization.formulation"},
+        {"order", "discretization.order"},
+        {"interpolation", "discretization.interpolation"}};
+    for (const auto& [option, key] : shorthands) {
+        if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
+    }
+    for (const std::string& s : a.values("set")) overrides.push_back(s);
+    return overrides;
+}
+
+Model load_with_options(const std::string& command, const std::string& path,
+                        const ParsedArguments& a) {
+    Model model = load_case(path, overrides_from(a));
+    if (const auto n = a.positive_int(command, "elements")) {
+        for (Member& m : model.members) m.elements = *n;
+    }
+    return model;
+}
+
+void print_run_summary(const nlohmann::json& r, std::ostream& os) {
+    os << r["case"].get<std::string>() << " | " << r["rotation"].get<std::string>() << " | "
+       << r["formulation"].get<std::string>() << " | " << r["elements"] << " elements, order "
+       << r["order"] << ", " << r["dofs"] << " unknowns\n";
+    os << "status: " << r["status"].get<std::string>() << " — " << r["message"].get<std::string>()
+       << "\n";
+    os << std::setprecision(10);
+    for (const auto& step : r["steps"]) {
+        if (step.contains("load_factor")) os << "  load factor " << step["load_factor"].get<double>();
+        if (step.contains("time")) os << "  t = " << step["time"].get<double>();
+        os << "  (" << step["newton_iterations"] << " Newton iterations)\n";
+        for (const auto& [name, p] : step["points"].items()) {
+            const auto& u = p["displacement"];
+            os << "    " << std::left << std::setw(8) << name << std::right << " u = ["
+               << u[0].get<double>() << ", " << u[1].get<double>() << ", " << u[2].get<double>()
+               << "]  angle = " << p["rotation_angle"].get<double>() << " rad\n";
+        }
+    }
+    os << "wall time: " << r["wall_seconds"].get<double>() << " s\n";
+}
+
+void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
+    if (const auto file = a.value("json")) write_file_atomically(*file, r.dump(2) + "\n");
+    if (const auto dir = a.value("out")) {
+        const std::string name = r["case"].get<std::string>() + "_" +
+                                 r["rotation"].get<std::string>() + "_" +
+                                 r["formulation"].get<std::string>() + ".json";
+        write_file_atomically((fs::path(*dir) / name).string(), r.dump(2) + "\n");
+    }
+}
+
+}  // namespace
+
+int command_list(const Args& args) {
+    const CommandSpec spec{"list", "", 0, 0,
+                           "List the catalog cases, the parameterizations and the formulations.",
+                           {}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    std::cout << "cases (" << catalog_directory() << "):\n";
+    for (const std::string& c : catalog_cases()) std::cout << "  " << c << "\n";
+    std::cout << "parameterizations:\n";
+    for (const std::string& p : param::parameterization_names()) std::cout << "  " << p << "\n";
+    std::cout << "formulations:\n";
+    for (const std::string& f : formulation_names()) std::cout << "  " << f << "\n";
+    return 0;
+}
+
+int command_check(const Args& args) {
+    const CommandSpec spec{"check", "CASE.yaml", 1, 1,
+                           "Validate a case file (with any --set overrides) and describe the "
+                           "model: points, members, elements, sections, loads, analysis.",
+                           {kSetOption}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    const std::string path = resolve_case_path(a.positional[0]);
+    const Model model = load_case(path, a.values("set"));
+    std::cout << describe_model(model);
+    return 0;
+}
+
+int command_run(const Args& args) {
+    const CommandSpec spec{
+        "run", "CASE.yaml", 1, 1,
+        "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
+        "result (DESIGN.md contract). Exit 0 whatever the solver status, 2 on bad input.",
+        {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
+         {"formulation", "NAME", "displacement | mixed"},
+         {"elements", "N", "elements per member (overrides the case)"},
+         {"order", "P", "element order (displacement formulation)"},
+         {"interpolation", "NAME", "relative | direct"},
+         kSetOption,
+         {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
+         {"json", "FILE", "write the result JSON to FILE"},
+         {"quiet", "", "print nothing on success"},
+         {"trace-newton", "", "print every Newton iteration and step cut to stderr"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    const std::string path = resolve_case_path(a.positional[0]);
+    const Model model = load_with_options("run", path, a);
+    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
+    write_outputs(a, result);
+    if (!a.has("quiet")) print_run_summary(result, std::cout);
+    return 0;
+}
+
+int command_reference(const Args& args) {
+    const CommandSpec spec{
+        "reference", "CASE.yaml", 1, 1,
+        "Continuum reference solution of a static single-member case with tip loads (shooting on "
+        "the Cosserat rod equations with GSL), in the same JSON contract as `run`.",
+        {kSetOption, {"json", "FILE", "write the result JSON to FILE"},
+         {"out", "DIR", "write DIR/<case>_continuum.json"}, {"quiet", "", "print nothing"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    const std::string path = resolve_case_path(a.positional[0]);
+    const Model model = load_case(path, a.values("set"));
+    nlohmann::json result = continuum_result_json(model, path);
+    if (const auto file = a.value("json")) write_file_atomically(*file, result.dump(2) + "\n");
+    if (const auto dir = a.value("out")) {
+        write_file_atomically((fs::path(*dir) / (model.name + "_continuum.json")).string(),
+                              result.dump(2) + "\n");
+    }
+    if (!a.has("quiet")) print_run_summary(result, std::cout);
+    return 0;
+}
+
+int command_study(const Args& args) {
+    const CommandSpec spec{
+        "study", "rotations", 1, 1,
+        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for every "
+        "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
+        "errors, and where each is defined.",
+        {{"json", "FILE", "write the study JSON to FILE"},
+         {"samples", "N", "angles in the sweep (default 721)"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    if (a.positional[0] != "rotations") {
+        throw InputError("rotbeam study: unknown study '" + a.positional[0] +
+                         "' (available: rotations)");
+    }
+    const int samples = a.positive_int("study", "samples").value_or(721);
+    const nlohmann::json study = param::rotation_study(samples);
+    if (const auto file = a.value("json")) {
+        write_file_atomically(*file, study.dump(1) + "\n");
+        std::cout << "wrote " << *file << "\n";
+    } else {
+        std::cout << study.dump(1) << "\n";
+    }
+    return 0;
+}
+
+}  // namespace rotbeam::cli

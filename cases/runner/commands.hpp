@@ -1,0 +1,27 @@
+// The rotbeam program's commands (DESIGN.md §Program and results contract). Each returns the exit
+// code: 0 ran (whatever the solver status), 1 a verify miss, 2 bad input (InputError, caught in
+// main with its one-line message).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rotbeam::cli {
+
+using Args = std::vector<std::string>;
+
+int command_list(const Args& args);
+int command_check(const Args& args);
+int command_run(const Args& args);
+int command_suite(const Args& args);
+int command_verify(const Args& args);
+int command_reference(const Args& args);
+int command_study(const Args& args);
+
+// Catalog folder: $ROTBEAM_CASES, else the source tree's cases/ (compile-time).
+std::string catalog_directory();
+// A case argument is a path, or the name of a catalog case ("bend-45" → cases/bend-45.yaml).
+std::string resolve_case_path(const std::string& argument);
+std::vector<std::string> catalog_cases();
+
+}  // namespace rotbeam::cli

@@ -1,0 +1,43 @@
+#include "make_problem.hpp"
+
+#include <type_traits>
+
+#include "core/errors.hpp"
+#include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/mixed/mixed_statics.hpp"
+#include "parameterizations/registry.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+// The parameterizations formulations/mixed/mixed_statics.cpp instantiates (the quaternion and the
+// rotation vector in the mixed formulation are issue 8).
+template <class P>
+constexpr bool kMixedAvailable =
+    std::is_same_v<P, param::WienerMilenkovic> || std::is_same_v<P, param::Rodrigues>;
+
+}  // namespace
+
+std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
+    const Discretization& d = model.discretization;
+    return param::dispatch_parameterization(
+        d.rotation, [&]<class P>() -> std::unique_ptr<StaticProblem> {
+            if (d.formulation == "displacement") {
+                return std::make_unique<form::DisplacementStatics<P>>(model);
+            }
+            if (d.formulation == "mixed") {
+                if constexpr (kMixedAvailable<P>) {
+                    return std::make_unique<form::MixedStatics<P>>(model);
+                } else {
+                    throw InputError("discretization.rotation: the mixed formulation is not "
+                                     "available with '" + d.rotation +
+                                     "' yet (wiener-milenkovic | rodrigues)");
+                }
+            }
+            throw InputError("discretization.formulation: unknown formulation '" +
+                             d.formulation + "' (displacement | mixed)");
+        });
+}
+
+}  // namespace rotbeam

@@ -1,0 +1,16 @@
+// The one place where the runtime choice of parameterization and formulation is made
+// (DESIGN.md §Formulations): below this switch nothing dispatches on the parameterization.
+#pragma once
+
+#include <memory>
+
+#include "core/model.hpp"
+#include "core/nonlinear_system.hpp"
+
+namespace rotbeam {
+
+// A static problem for model.discretization.{formulation, rotation}. Throws InputError for an
+// unknown name or a combination that does not exist.
+std::unique_ptr<StaticProblem> make_static_problem(const Model& model);
+
+}  // namespace rotbeam

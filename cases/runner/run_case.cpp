@@ -1,0 +1,127 @@
+#include "run_case.hpp"
+
+#include <chrono>
+#include <iostream>
+
+#include "core/errors.hpp"
+#include "core/results.hpp"
+#include "core/static_driver.hpp"
+#include "core/version.hpp"
+#include "make_problem.hpp"
+
+namespace rotbeam {
+
+std::vector<std::string> formulation_names() { return {"displacement", "mixed"}; }
+
+namespace {
+
+const char* quadrature_name(Quadrature q) {
+    switch (q) {
+        case Quadrature::automatic: return "automatic";
+        case Quadrature::reduced: return "reduced";
+        case Quadrature::full: return "full";
+        case Quadrature::gll: return "gll";
+    }
+    return "automatic";
+}
+
+nlohmann::json result_header(const RunRequest& request) {
+    const Model& m = request.model;
+    const Discretization& d = m.discretization;
+    int elements = 0;
+    nlohmann::json per_member = nlohmann::json::object();
+    for (const Member& member : m.members) {
+        elements += member.elements;
+        per_member[member.name] = member.elements;
+    }
+    return {{"case", m.name},
+            {"case_file", request.case_path},
+            {"rotation", d.rotation},
+            {"formulation", d.formulation},
+            {"elements", elements},
+            {"elements_per_member", per_member},
+            {"order", d.order},
+            {"dofs", 0},
+            {"status", "error"},
+            {"message", ""},
+            {"wall_seconds", 0.0},
+            {"version", kGitDescribe},
+            {"options",
+             {{"interpolation", d.interpolation},
+              {"update", d.update},
+              {"rescale", d.rescale},
+              {"quadrature", quadrature_name(d.quadrature)},
+              {"quadrature_points", d.quadrature_points},
+              {"mass_rule", d.mass_rule},
+              {"driver", m.solver.driver},
+              {"residual_tolerance", m.solver.residual_tolerance},
+              {"increment_tolerance", m.solver.increment_tolerance}}},
+            {"steps", nlohmann::json::array()}};
+}
+
+void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
+    std::unique_ptr<StaticProblem> problem = make_static_problem(model);
+    result["dofs"] = problem->size();
+    RotationUnwrapper unwrapper(model.points.size());
+    std::vector<PointState> states(model.points.size());
+    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
+    if (trace) settings.trace = &std::cerr;
+    const StaticOutcome outcome =
+        run_static(*problem, model.analysis.statics.load_factors, settings,
+                   [&](const StepRecord& step) {
+                       for (size_t i = 0; i < model.points.size(); ++i) {
+                           states[i] = problem->point_state(static_cast<int>(i));
+                       }
+                       result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
+                                                           step.newton_iterations, states,
+                                                           unwrapper));
+                   });
+    result["status"] = to_string(outcome.status);
+    result["message"] = outcome.message;
+    result["counters"] = counters_json(problem->counters());
+}
+
+}  // namespace
+
+nlohmann::json run_case(const RunRequest& request) {
+    const Model& model = request.model;
+    nlohmann::json result = result_header(request);
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        switch (model.analysis.kind) {
+            case AnalysisKind::static_:
+                run_static_case(model, request.trace_newton, result);
+                break;
+            case AnalysisKind::dynamic:
+            case AnalysisKind::modal:
+                // Not a solver failure: the analysis does not exist yet in this formulation
+                // (issues 6 and 9). `verify` reports such references as unavailable.
+                result["available"] = false;
+                result["status"] = "error";
+                result["message"] = std::string(model.analysis.kind == AnalysisKind::dynamic
+                                                    ? "dynamic"
+                                                    : "modal") +
+                                    " analysis is not available yet in the " +
+                                    model.discretization.formulation + " formulation";
+                break;
+        }
+    } catch (const SingularityError& e) {
+        result["status"] = "singular";
+        result["message"] = e.what();
+    } catch (const SolverError& e) {
+        result["status"] = "error";
+        result["message"] = e.what();
+    }
+    result["wall_seconds"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!all_finite(result)) {
+        // A result never prints NaN: drop the numbers, say what happened.
+        result["status"] = "error";
+        result["message"] = "non-finite values in the solution (" +
+                            result["message"].get<std::string>() + ")";
+        result["steps"] = nlohmann::json::array();
+    }
+    return result;
+}
+
+}  // namespace rotbeam

@@ -1,0 +1,26 @@
+// Running one case with one combination (parameterization × formulation × options) and producing
+// the result JSON of DESIGN.md's contract. Used by `run`, `verify` and `suite`.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/model.hpp"
+
+namespace rotbeam {
+
+struct RunRequest {
+    std::string case_path;  // for the record
+    Model model;            // with every override already applied
+    bool trace_newton = false;  // print the Newton iterations to stderr
+};
+
+// Runs the analysis. Never throws for numerical failure: the status says it (`converged`,
+// `diverged`, `singular`, `error`). Throws InputError only for input the formulation refuses
+// (e.g. a rigid section in the displacement formulation).
+nlohmann::json run_case(const RunRequest& request);
+
+// "displacement", "mixed": what the program offers.
+std::vector<std::string> formulation_names();
+
+}  // namespace rotbeam

@@ -1,0 +1,179 @@
+// `rotbeam suite`: the main job. Runs every catalog case (matching --cases) with every
+// parameterization × formulation, in parallel over --jobs worker threads, writes one result file
+// per run (skipped on a rerun when its inputs and the rotbeam version are unchanged), the rotation
+// study, and a report (index.md + index.html) with the runs table and the plots made by gnuplot
+// scripts in reports/.
+#include <fnmatch.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "arguments.hpp"
+#include "cases/loader/case_loader.hpp"
+#include "commands.hpp"
+#include "core/errors.hpp"
+#include "core/results.hpp"
+#include "core/version.hpp"
+#include "parameterizations/registry.hpp"
+#include "parameterizations/rotation_study.hpp"
+#include "report.hpp"
+#include "run_case.hpp"
+
+namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct PlannedRun {
+    std::string case_name, case_path, rotation, formulation;
+    std::string output;  // result file
+    std::string key;     // hash of the inputs
+};
+
+std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string input_key(const std::string& case_text, const std::string& rotation,
+                      const std::string& formulation) {
+    const size_t h = std::hash<std::string>{}(case_text + "\n" + rotation + "\n" + formulation +
+                                              "\n" + kGitDescribe);
+    std::ostringstream s;
+    s << std::hex << h;
+    return s.str();
+}
+
+bool up_to_date(const PlannedRun& run) {
+    if (!fs::exists(run.output)) return false;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(read_file(run.output));
+        return j.value("input_key", "") == run.key;
+    } catch (const std::exception&) {
+        return false;  // a damaged file is simply run again
+    }
+}
+
+std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir,
+                                  bool quick) {
+    std::vector<PlannedRun> runs;
+    for (const std::string& name : catalog_cases()) {
+        if (fnmatch(glob.c_str(), name.c_str(), 0) != 0) continue;
+        const std::string path = resolve_case_path(name);
+        const Model model = load_case(path, {});
+        if (model.analysis.kind != AnalysisKind::static_) continue;  // dynamics: issues 6 and 9
+        if (quick && name != "cantilever-moment" && name != "bend-45") continue;
+        const std::string text = read_file(path);
+        for (const std::string& formulation : formulation_names()) {
+            for (const std::string& rotation : param::parameterization_names()) {
+                PlannedRun run{name, path, rotation, formulation, "", ""};
+                run.output = (fs::path(out_dir) / "runs" /
+                              (name + "_" + rotation + "_" + formulation + ".json"))
+                                 .string();
+                run.key = input_key(text, rotation, formulation);
+                runs.push_back(run);
+            }
+        }
+    }
+    return runs;
+}
+
+nlohmann::json execute(const PlannedRun& run) {
+    Model model;
+    try {
+        model = load_case(run.case_path, {"discretization.rotation=" + run.rotation,
+                                          "discretization.formulation=" + run.formulation});
+    } catch (const InputError& e) {
+        return {{"case", run.case_name}, {"rotation", run.rotation},
+                {"formulation", run.formulation}, {"status", "error"}, {"message", e.what()},
+                {"steps", nlohmann::json::array()}, {"wall_seconds", 0.0}};
+    }
+    try {
+        return run_case(RunRequest{run.case_path, model});
+    } catch (const InputError& e) {
+        // The combination does not exist for this case (e.g. a formulation not built yet).
+        return {{"case", run.case_name}, {"rotation", run.rotation},
+                {"formulation", run.formulation}, {"status", "error"}, {"message", e.what()},
+                {"steps", nlohmann::json::array()}, {"wall_seconds", 0.0}};
+    }
+}
+
+void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
+    std::atomic<size_t> next{0}, done{0};
+    std::mutex print;
+    const auto start = std::chrono::steady_clock::now();
+    const bool terminal = isatty(STDOUT_FILENO);
+    auto worker = [&]() {
+        for (size_t i = next++; i < runs.size(); i = next++) {
+            const PlannedRun& run = runs[i];
+            if (force || !up_to_date(run)) {
+                nlohmann::json result = execute(run);
+                result["input_key"] = run.key;
+                write_file_atomically(run.output, result.dump(1) + "\n");
+            }
+            const size_t d = ++done;
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::lock_guard<std::mutex> lock(print);
+            if (terminal) {
+                std::cout << "\r[" << d << "/" << runs.size() << "] " << std::fixed
+                          << std::setprecision(1) << elapsed << " s elapsed, ETA "
+                          << elapsed / d * (runs.size() - d) << " s   " << std::flush;
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < jobs; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    if (terminal) std::cout << "\n";
+}
+
+}  // namespace
+
+int command_suite(const Args& args) {
+    const CommandSpec spec{
+        "suite", "", 0, 0,
+        "Run the benchmark suite: every static catalog case with every parameterization and "
+        "formulation, the rotation study, and the report (DIR/index.md, DIR/index.html, plots). "
+        "Finished runs whose inputs are unchanged are skipped on a rerun.",
+        {{"out", "DIR", "output folder (default: out)"},
+         {"jobs", "N", "worker threads (default: all cores)"},
+         {"cases", "GLOB", "only catalog cases matching GLOB (default: *)"},
+         {"force", "", "rerun everything"},
+         {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    const std::string out = a.value("out").value_or("out");
+    const int jobs = a.positive_int("suite", "jobs")
+                         .value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const std::vector<PlannedRun> runs =
+        plan_runs(a.value("cases").value_or("*"), out, a.has("quick"));
+    std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
+              << "\n";
+    run_all(runs, jobs, a.has("force"));
+    write_file_atomically((fs::path(out) / "rotation-study.json").string(),
+                          param::rotation_study(721).dump(1) + "\n");
+    std::vector<std::string> files;
+    for (const PlannedRun& r : runs) files.push_back(r.output);
+    write_report(out, files);
+    std::cout << "report: " << (fs::path(out) / "index.md").string() << "\n";
+    return 0;
+}
+
+}  // namespace rotbeam::cli

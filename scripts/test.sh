@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Install what is missing, build rotbeam in Release and run every test (unit, verification and the
+# published-tolerance gate). Usage: scripts/test.sh [extra ctest arguments, e.g. -L unit]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release -j "$(nproc)"
+ctest --preset release -j "$(nproc)" "$@"

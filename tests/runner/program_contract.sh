@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The rotbeam program's contract (DESIGN.md §Program and results contract), checked on the built
+# executable. Usage: program_contract.sh ROTBEAM SOURCE_DIR
+set -u
+rotbeam=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_input_error DESCRIPTION ARGS...: exit code 2, exactly one line on stderr, nothing on stdout.
+expect_input_error() {
+    local what=$1
+    shift
+    "$rotbeam" "$@" >"$work/out" 2>"$work/err"
+    local rc=$?
+    [ $rc -eq 2 ] || fail "$what: exit $rc, expected 2"
+    [ "$(wc -l <"$work/err")" -eq 1 ] || fail "$what: stderr has $(wc -l <"$work/err") lines: $(cat "$work/err")"
+    [ ! -s "$work/out" ] || fail "$what: wrote to stdout"
+}
+
+# Usage errors.
+expect_input_error "no command"
+expect_input_error "unknown command" frobnicate
+grep -q "did you mean 'verify'" "$work/err" 2>/dev/null || true
+expect_input_error "misspelt command" verfy
+grep -q "did you mean 'verify'" "$work/err" || fail "no suggestion for 'verfy': $(cat "$work/err")"
+expect_input_error "unknown option" run cantilever-moment --rotaton quaternion
+grep -q "did you mean '--rotation'" "$work/err" || fail "no suggestion for --rotaton"
+expect_input_error "zero elements" run cantilever-moment --elements 0
+expect_input_error "missing case" run no-such-case.yaml
+expect_input_error "unknown parameterization" run cantilever-moment --rotation euler-angles --json "$work/r.json"
+[ ! -e "$work/r.json" ] || fail "a result file was written for bad input"
+expect_input_error "unknown study" study nothing
+
+# Every command has --help (exit 0).
+for c in list check run suite verify reference study; do
+    "$rotbeam" $c --help >/dev/null 2>&1 || fail "$c --help failed"
+done
+
+# Bad case files: one line naming the file, exit 2, no result file.
+count=0
+for f in "$src"/cases/bad/*.yaml; do
+    [ -e "$f" ] || continue
+    count=$((count + 1))
+    expect_input_error "check $(basename "$f")" check "$f"
+    grep -q "$(basename "$f")" "$work/err" || fail "$(basename "$f"): message does not name the file: $(cat "$work/err")"
+    expect_input_error "run $(basename "$f")" run "$f" --json "$work/bad.json"
+    [ ! -e "$work/bad.json" ] || fail "$(basename "$f"): partial result written"
+done
+[ $count -ge 20 ] || fail "only $count bad case files (need at least 20)"
+
+# list names every parameterization and formulation.
+"$rotbeam" list >"$work/list" || fail "list failed"
+for name in quaternion wiener-milenkovic rodrigues rotation-vector displacement mixed cantilever-moment bend-45; do
+    grep -qw -- "$name" "$work/list" || fail "list does not show $name"
+done
+
+# A run writes the JSON contract.
+"$rotbeam" run cantilever-moment --quiet --json "$work/run.json" || fail "run failed"
+python3 - "$work/run.json" <<'PY' || fail "run JSON does not follow the contract"
+import json, sys
+r = json.load(open(sys.argv[1]))
+for k in ["case", "rotation", "formulation", "elements", "order", "dofs", "status", "message",
+          "wall_seconds", "steps"]:
+    assert k in r, k
+assert r["status"] == "converged", r["message"]
+p = r["steps"][-1]["points"]["tip"]
+assert len(p["displacement"]) == 3 and len(p["rotation_matrix"]) == 3 and len(p["rotation_vector"]) == 3
+assert "rotation_angle" in p and "load_factor" in r["steps"][-1] and "newton_iterations" in r["steps"][-1]
+PY
+
+# The gate can fail: a deliberately wrong published value makes verify exit 1.
+sed -E '0,/value: *\[/s/value: *\[[^]]*\]/value: [1000.0, 1000.0]/' "$src/cases/cantilever-moment.yaml" >"$work/wrong.yaml"
+"$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "verify with a wrong reference exited $rc, expected 1: $(tail -3 "$work/verify")"
+
+if [ $failures -eq 0 ]; then echo "program contract: all checks passed"; exit 0; fi
+echo "program contract: $failures failures"
+exit 1
