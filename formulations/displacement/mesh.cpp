@@ -82,7 +82,6 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
         e.dN.col(q) = d / jac;
         QuadraturePoint& p = e.qp[q];
         p.weight = rule.weights[q] * jac;
-        p.x0_prime = g.tangent(s);
         p.Rr = g.frame(s);
         section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star);
     }
@@ -120,6 +119,13 @@ void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis&
         nodes.push_back(left);
         MeshElement e = make_element(model, member, g, s0, s1, basis, rule);
         e.nodes = std::move(nodes);
+        // x^r′ from the nodal reference positions (seed 000's equivalent strain): with u
+        // interpolated by the same functions, a rigid motion is strain-free exactly.
+        for (size_t q = 0; q < e.qp.size(); ++q) {
+            Vec3 t = Vec3::Zero();
+            for (size_t j = 0; j < e.nodes.size(); ++j) t += e.dN(j, q) * mesh.nodes[e.nodes[j]].x0;
+            e.qp[q].x0_prime = t;
+        }
         mesh.elements.push_back(std::move(e));
     }
 }

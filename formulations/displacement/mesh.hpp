@@ -1,8 +1,9 @@
 // The displacement formulation's mesh: Legendre spectral finite elements (LSFE) of order p with
 // nodes at the p+1 Gauss–Lobatto–Legendre points, several per member, members joined rigidly at
 // shared named points (one node per point, shared by every member that ends there), and the
-// quadrature-point data that does not change during a solve (shape functions, reference tangent
-// and frame from the exact reference line, material section matrices).
+// quadrature-point data that does not change during a solve (shape functions, the reference
+// tangent interpolated from the nodes — which lie on the exact reference line — the frame R^r
+// from the exact line, material section matrices).
 //
 // Stiffness quadrature (Discretization::quadrature): `automatic` = p+1 Gauss points for p ≥ 3,
 // p points (reduced) for p ≤ 2 (against shear locking); `full` = p+1 Gauss; `reduced` = p Gauss;
@@ -28,7 +29,7 @@ struct MeshNode {
 
 struct QuadraturePoint {
     double weight = 0.0;         // Gauss weight × ds/dξ
-    Vec3 x0_prime = Vec3::Zero();  // x^r′(s): the exact unit tangent of the reference line
+    Vec3 x0_prime = Vec3::Zero();  // x^r′ = Σ N_j′ x^r_j (interpolated from the nodes)
     Mat3 Rr = Mat3::Identity();    // R^r(s)
     Mat6 C_star = Mat6::Zero();    // material-axis stiffness
     double mass = 0.0;             // mass per unit length (gravity), 0 when no mass is given
