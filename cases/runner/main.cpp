@@ -43,9 +43,13 @@ void print_usage(std::ostream& os) {
 
 int main(int argc, char** argv) {
     const std::vector<std::string> all(argv + 1, argv + argc);
-    if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
+    if (all.empty()) {
+        std::cerr << "rotbeam: missing command; see 'rotbeam --help'\n";
+        return 2;
+    }
+    if (all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
         print_usage(std::cout);
-        return all.empty() ? 2 : 0;
+        return 0;
     }
     if (all[0] == "--version") {
         std::cout << "rotbeam " << rotbeam::kGitDescribe << "\n";
