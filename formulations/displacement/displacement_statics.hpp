@@ -82,6 +82,7 @@ private:
     double lambda_ = 0.0;
     double force_scale_ = 1.0;
     double unit_force_scale_ = 1.0;  // at λ = 1
+    double axial_stiffness_ = 0.0;   // largest EA-like diagonal entry
     bool fixed_force_scale_ = false;
     double length_scale_ = 1.0;
     VecX residual_scale_;

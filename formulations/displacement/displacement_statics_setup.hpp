@@ -122,6 +122,7 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
         for (const QuadraturePoint& q : e.qp) {
             F = std::max(F, q.mass * model.gravity.norm() * L);
             stiffness = std::max(stiffness, q.C_star.block<3, 3>(3, 3).diagonal().maxCoeff());
+            axial_stiffness_ = std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
         }
     }
     if (!(F > 0.0)) {
@@ -151,8 +152,15 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
 // (EA ε_mach per term). The values change in place (drivers hold a reference).
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::update_residual_scale() {
-    force_scale_ = fixed_force_scale_ ? unit_force_scale_
-                                      : std::max(1.0, std::abs(lambda_)) * unit_force_scale_;
+    // Floor: the residual's round-off is ~c ε_mach EA (c ≲ 1e3: sums over quadrature points
+    // weighted by |N′| ~ p²/h). With F ≥ 1e-4 EA that floor stays ≤ 2e-9 scaled, which the
+    // driver's round-off acceptance (≤ 1e4 × tolerance with a negligible increment) admits;
+    // below it, a small load on a stiff member (13 lbf on EA = 1e7) could never converge.
+    constexpr double kRoundoffFloor = 1e-4;
+    force_scale_ = fixed_force_scale_
+                       ? unit_force_scale_
+                       : std::max(std::max(1.0, std::abs(lambda_)) * unit_force_scale_,
+                                  kRoundoffFloor * axial_stiffness_);
     for (int i = 0; i < mesh_.unknowns; i += 6) {
         residual_scale_.segment<3>(i).setConstant(force_scale_);
         residual_scale_.segment<3>(i + 3).setConstant(force_scale_ * length_scale_);
