@@ -200,7 +200,8 @@ std::string failure_message(const char* what, size_t step, double target, double
 
 StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
-                         const std::function<void(const StepRecord&)>& on_step) {
+                         const std::function<void(const StepRecord&)>& on_step,
+                         const StepSolver& solver) {
     StaticOutcome outcome;
     double lambda = 0.0;
     problem.set_load_factor(lambda);
@@ -221,7 +222,7 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                                      : lambda + h;
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
-            last = solve_newton(problem, settings);
+            last = solver ? solver(problem, settings) : solve_newton(problem, settings);
             if (last.converged) {
                 lambda = trial;
                 record.newton_iterations += last.iterations;

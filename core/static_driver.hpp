@@ -34,6 +34,11 @@ struct NewtonSettings {
     std::ostream* trace = nullptr;  // when set: one line per Newton iteration and step cut
 };
 
+struct NewtonOutcome;
+// The nonlinear solver run_static calls at each load (sub-)step: solve_newton by default; the
+// runner substitutes KINSOL for additive systems (solver.driver: kinsol).
+using StepSolver = std::function<NewtonOutcome(NonlinearSystem&, const NewtonSettings&)>;
+
 NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics);
 
 struct NewtonOutcome {
@@ -64,6 +69,7 @@ struct StaticOutcome {
 // at that state).
 StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
-                         const std::function<void(const StepRecord&)>& on_step);
+                         const std::function<void(const StepRecord&)>& on_step,
+                         const StepSolver& solver = {});
 
 }  // namespace rotbeam
