@@ -1,12 +1,15 @@
-// Explicit instantiations of the mixed statics for every three-parameter parameterization (the
-// quaternion and the rotation vector need their own kinematics: issue 8).
+// Explicit instantiations of the mixed statics for every three-parameter parameterization: Wiener–
+// Milenković and Rodrigues (seed 002, Q⁻¹ of Eq. 25) and the rotation vector (issue 8: the material
+// tangent inverse dexp⁻¹ of rotation_vector.hpp Eq. V4 in place of Q⁻¹ in Eq. 48).
 #include "formulations/mixed/mixed_statics_impl.hpp"
 #include "parameterizations/rodrigues.hpp"
+#include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 
 namespace rotbeam::form {
 
 template class MixedStatics<param::WienerMilenkovic>;
 template class MixedStatics<param::Rodrigues>;
+template class MixedStatics<param::RotationVector>;
 
 }  // namespace rotbeam::form

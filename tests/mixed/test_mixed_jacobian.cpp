@@ -7,12 +7,14 @@
 #include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/rodrigues.hpp"
+#include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
-using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues>;
+using Parameterizations =
+    std::tuple<param::WienerMilenkovic, param::Rodrigues, param::RotationVector>;
 
 namespace {
 
