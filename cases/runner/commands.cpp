@@ -12,6 +12,7 @@
 #include "continuum_json.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
+#include "history_csv.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "run_case.hpp"
@@ -95,12 +96,20 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
 }
 
 void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
-    if (const auto file = a.value("json")) write_file_atomically(*file, r.dump(2) + "\n");
+    // A dynamic run also writes its time history as CSV next to each JSON file.
+    const bool history = has_time_history(r);
+    auto write = [&](const fs::path& json_path) {
+        write_file_atomically(json_path.string(), r.dump(2) + "\n");
+        if (history) {
+            write_file_atomically(fs::path(json_path).replace_extension(".csv").string(),
+                                  history_csv(r));
+        }
+    };
+    if (const auto file = a.value("json")) write(*file);
     if (const auto dir = a.value("out")) {
-        const std::string name = r["case"].get<std::string>() + "_" +
-                                 r["rotation"].get<std::string>() + "_" +
-                                 r["formulation"].get<std::string>() + ".json";
-        write_file_atomically((fs::path(*dir) / name).string(), r.dump(2) + "\n");
+        write(fs::path(*dir) / (r["case"].get<std::string>() + "_" +
+                                r["rotation"].get<std::string>() + "_" +
+                                r["formulation"].get<std::string>() + ".json"));
     }
 }
 

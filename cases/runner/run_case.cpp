@@ -8,6 +8,7 @@
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
+#include "analyses.hpp"
 #include "make_problem.hpp"
 
 namespace rotbeam {
@@ -109,6 +110,15 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
 
 }  // namespace
 
+void report_unavailable(const Model& model, nlohmann::json& result) {
+    result["available"] = false;
+    result["status"] = "error";
+    result["message"] =
+        std::string(model.analysis.kind == AnalysisKind::dynamic ? "dynamic" : "modal") +
+        " analysis is not available yet in the " + model.discretization.formulation +
+        " formulation";
+}
+
 nlohmann::json run_case(const RunRequest& request) {
     const Model& model = request.model;
     nlohmann::json result = result_header(request);
@@ -119,16 +129,18 @@ nlohmann::json run_case(const RunRequest& request) {
                 run_static_case(model, request.trace_newton, result);
                 break;
             case AnalysisKind::dynamic:
+                if (model.discretization.formulation == "mixed") {
+                    run_mixed_dynamic(model, request.trace_newton, result);
+                } else {
+                    run_displacement_dynamic(model, request.trace_newton, result);
+                }
+                break;
             case AnalysisKind::modal:
-                // Not a solver failure: the analysis does not exist yet in this formulation
-                // (issues 6 and 9). `verify` reports such references as unavailable.
-                result["available"] = false;
-                result["status"] = "error";
-                result["message"] = std::string(model.analysis.kind == AnalysisKind::dynamic
-                                                    ? "dynamic"
-                                                    : "modal") +
-                                    " analysis is not available yet in the " +
-                                    model.discretization.formulation + " formulation";
+                if (model.discretization.formulation == "mixed") {
+                    run_mixed_modal(model, request.trace_newton, result);
+                } else {
+                    run_displacement_modal(model, request.trace_newton, result);
+                }
                 break;
         }
     } catch (const SingularityError& e) {

@@ -1,0 +1,36 @@
+// The dynamic and modal analyses of each formulation (issues 6 and 9), called by run_case. Each
+// file that defines them holds that formulation's parameterization switch for its analyses (as
+// make_problem.cpp does for statics), so nothing below dispatches on the parameterization.
+//
+// Each function fills the result JSON of DESIGN.md's contract (run_case has written the header):
+//   `dofs`, `status` (converged | diverged | singular | error), `message`, `counters`;
+//   dynamic: `steps`, one per output time, built with step_json(model, nullopt, t, iterations, …)
+//            (run writes the CSV time history from them);
+//   modal:   `frequencies_hz` (ascending, model.analysis.modal.modes of them), `modes` (per mode:
+//            `frequency_hz`, `growth_rate` (Re s, mixed) and `points`: each named point's
+//            displacement [3] and rotation [3] amplitude, normalized to a largest component of 1),
+//            and `steps` holding the static state the modes are computed about (if loaded).
+// Numerical failure is a status, never an exception; bad input throws InputError; a singular
+// parameterization throws SingularityError (run_case turns it into status `singular`).
+// `available: false` with status `error` says the analysis does not exist in the formulation.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "core/model.hpp"
+
+namespace rotbeam {
+
+// cases/runner/run_displacement_dynamics.cpp (issue 6)
+void run_displacement_dynamic(const Model& model, bool trace, nlohmann::json& result);
+void run_displacement_modal(const Model& model, bool trace, nlohmann::json& result);
+
+// cases/runner/run_mixed_dynamics.cpp (issue 9)
+void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result);
+void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result);
+
+// What a formulation without the analysis reports (not a solver failure: `verify` counts the
+// references it would check as unavailable).
+void report_unavailable(const Model& model, nlohmann::json& result);
+
+}  // namespace rotbeam

@@ -1,0 +1,38 @@
+#include "history_csv.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+namespace rotbeam {
+
+bool has_time_history(const nlohmann::json& result) {
+    const nlohmann::json& steps = result["steps"];
+    return !steps.empty() && steps[0].contains("time");
+}
+
+std::string history_csv(const nlohmann::json& result) {
+    std::ostringstream os;
+    os << std::setprecision(17);
+    const nlohmann::json& steps = result["steps"];
+    os << "time";
+    if (!steps.empty()) {
+        for (const auto& [name, point] : steps[0]["points"].items()) {
+            for (const char* c : {"ux", "uy", "uz", "rx", "ry", "rz", "angle"}) {
+                os << "," << name << "_" << c;
+            }
+        }
+    }
+    os << "\n";
+    for (const nlohmann::json& step : steps) {
+        os << step["time"].get<double>();
+        for (const auto& [name, point] : step["points"].items()) {
+            for (int i = 0; i < 3; ++i) os << "," << point["displacement"][i].get<double>();
+            for (int i = 0; i < 3; ++i) os << "," << point["rotation_vector"][i].get<double>();
+            os << "," << point["rotation_angle"].get<double>();
+        }
+        os << "\n";
+    }
+    return os.str();
+}
+
+}  // namespace rotbeam

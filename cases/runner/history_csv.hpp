@@ -1,0 +1,17 @@
+// The CSV time history of a dynamic run (DESIGN.md §Program and results contract), built from
+// the result JSON's `steps`: one row per output time; per named point the displacement, the
+// principal rotation vector and the unwrapped rotation angle.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace rotbeam {
+
+// True when the result holds a time history (its steps carry `time`).
+bool has_time_history(const nlohmann::json& result);
+
+// Header line `time,<point>_ux,…,<point>_angle` and one line per step, full precision.
+std::string history_csv(const nlohmann::json& result);
+
+}  // namespace rotbeam
