@@ -1,8 +1,10 @@
 // Static analysis with the displacement-based GEBT formulation (seed 000; Kynema, BeamDyn):
 // Legendre spectral finite elements (mesh.hpp), nodal rotations stored in the parameterization P
-// and updated by composing the spatial increment, p ← exp(δψ) ⊗ p (the retraction), `direct`
-// rotation interpolation (interpolate_rotation.hpp), and the exact consistent Jacobian of the
-// residual through that retraction.
+// and updated by composing the spatial increment, p ← exp(δψ) ⊗ p (the retraction), `relative`
+// (default, objective) or `direct` rotation interpolation (interpolate_rotation.hpp), and the
+// exact consistent Jacobian of the residual through that retraction. With `relative` and
+// discretization.rescale the nodal parameters are kept in their short chart (angle ≤ π) after
+// every retraction: they enter only through R_j, so no element chart is split.
 //
 // Unknowns: per unconstrained node [δu; δψ] (6). Residual rows per node: [force; moment],
 //   r_a = Σ_q w_q (N_a′ F^E1 + N_a F^E2 − N_a f_ext) − (point loads at the node),
@@ -103,6 +105,10 @@ private:
     std::vector<Vec3> ue_;
     std::vector<param::TangentInverse<P::kSize>> Me_;
     std::vector<Mat3> A_;
+    std::vector<Mat3> K_;
+    Mat3 R0_ = Mat3::Identity();  // relative: the element's reference-node rotation
+    bool relative_ = true;
+    bool rescale_nodes_ = false;
     std::vector<Mat6> D_;
     std::vector<Eigen::Matrix<double, 3, 6>> E_;
 

@@ -33,17 +33,23 @@ void DisplacementStatics<P>::evaluate(VecX& r, SparseMatrix* J) {
     assemble_point_loads(r, J);
 }
 
-// Nodal parameters aligned to the element's first node (σ_j), displacements, and M_j = σ_j H_s⁺.
+// direct: nodal parameters aligned to the element's first node (σ_j); relative: the parameters
+// r_j of R_0ᵀ R_j. Displacements, and M_j = H_s⁺ of what is interpolated (σ_j included).
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::gather_element(const MeshElement& e, bool jacobian) {
-    const Params& p0 = p_[e.nodes[0]];
-    for (size_t j = 0; j < e.nodes.size(); ++j) {
-        const Params& p = p_[e.nodes[j]];
-        const double sigma = chart_sign<P>(p, p0);
-        pe_[j] = sigma * p;
+    const int nn = static_cast<int>(e.nodes.size());
+    for (int j = 0; j < nn; ++j) {
         ue_[j] = u_[e.nodes[j]];
-        if (jacobian) Me_[j] = sigma * P::spatial_tangent_inverse(p);
+        pe_[j] = p_[e.nodes[j]];
     }
+    if (relative_) {
+        R0_ = P::matrix(pe_[0]);
+        relative_parameters<P>(pe_.data(), nn, pe_.data());
+    } else {
+        for (int j = 1; j < nn; ++j) pe_[j] *= chart_sign<P>(pe_[j], pe_[0]);
+    }
+    if (!jacobian) return;
+    for (int j = 0; j < nn; ++j) Me_[j] = P::spatial_tangent_inverse(pe_[j]);
 }
 
 template <param::RotationParameterization P>
@@ -98,7 +104,11 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
         const QuadraturePoint& qp = e.qp[q];
         const double* N = e.N.col(q).data();
         const double* dN = e.dN.col(q).data();
-        interpolate_rotation<P>(pe_.data(), N, dN, nn, rot);
+        if (relative_) {
+            interpolate_relative<P>(pe_.data(), N, dN, nn, R0_, rot);
+        } else {
+            interpolate_rotation<P>(pe_.data(), N, dN, nn, rot);
+        }
         Vec3 up = Vec3::Zero();
         for (int j = 0; j < nn; ++j) up += dN[j] * ue_[j];
         const Vec3 xp = qp.x0_prime + up;
@@ -116,13 +126,13 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
         if (!jac) continue;
         const StiffnessBlocks B = calculate_stiffness_blocks(C, F.FE1, xp, rot.kappa);
         const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
-        Mat3 K;
+        for (int b = 0; b < nn; ++b) rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K_[b]);
+        if (relative_) relative_maps(R0_, rot.kappa, nn, A_.data(), K_.data());
         for (int b = 0; b < nn; ++b) {
-            rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K);
             D_[b].leftCols<3>() = C.leftCols<3>() * dN[b];
-            D_[b].rightCols<3>() = C.rightCols<3>() * K + B.O * A_[b];
+            D_[b].rightCols<3>() = C.rightCols<3>() * K_[b] + B.O * A_[b];
             E_[b].leftCols<3>() = B.Pu * dN[b];
-            E_[b].rightCols<3>() = B.Pk * K + B.Qp * A_[b];
+            E_[b].rightCols<3>() = B.Pk * K_[b] + B.Qp * A_[b];
         }
         for (int a = 0; a < nn; ++a) {
             if (mesh_.nodes[e.nodes[a]].dof < 0) continue;

@@ -45,11 +45,19 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
             }
         }
     }
+    const std::string& interpolation = model.discretization.interpolation;
+    if (interpolation != "relative" && interpolation != "direct") {
+        throw InputError("unknown rotation interpolation '" + interpolation +
+                         "' (relative | direct)");
+    }
+    relative_ = interpolation == "relative";
+    rescale_nodes_ = relative_ && model.discretization.rescale && P::kCanRescale;
     const size_t nn = static_cast<size_t>(mesh_.order) + 1;
     pe_.resize(nn);
     ue_.resize(nn);
     Me_.resize(nn);
     A_.resize(nn);
+    K_.resize(nn);
     D_.resize(nn);
     E_.resize(nn);
     build_pattern();
@@ -188,6 +196,7 @@ void DisplacementStatics<P>::retract(const Eigen::Ref<const VecX>& dx) {
         const Vec3 dpsi = dx.segment<3>(d + 3);
         p_trial_[i] = P::compose(P::from_rotation_vector(dpsi), p_[i]);
         if constexpr (P::kSize == 4) p_trial_[i].normalize();
+        if (rescale_nodes_) p_trial_[i] = P::rescale(p_trial_[i], P::identity());
     }
     for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
         const int d = mesh_.nodes[i].dof;

@@ -1,5 +1,7 @@
-// Rotation interpolation of the displacement formulation, `direct` strategy (as Kynema): the
-// nodal parameters of an element, aligned to one chart, are interpolated component-wise,
+// Rotation interpolation of the displacement formulation. Two strategies (docs/displacement-
+// formulation.md §Rotation interpolation).
+//
+// `direct` (as Kynema): the nodal parameters of an element, aligned to one chart, are interpolated component-wise,
 //   p̄(s) = Σ_j N_j(s) σ_j p_j,   R(s) = R(p̄(s)),   κ(s) = axial(R′Rᵀ) = H_s(p̄) p̄′,
 // with σ_j = ±1 the quaternion sign alignment to the element's first node (σ_j = 1 for the
 // three-parameter types). For the quaternion R(·) is the homogeneous form R(q) = R(q/|q|)
@@ -11,8 +13,20 @@
 //   δψ(s) = Σ_j A_j δψ_j,  A_j = N_j H_s(p̄) M_j
 //   δκ(s) = Σ_j K_j δψ_j,  K_j = N_j ∂(H_s(p̄) p̄′)/∂p̄ M_j + N_j′ H_s(p̄) M_j
 // (the interpolated-spin approximation would use A_j = N_j I, K_j = N_j′ I − N_j κ̃).
+//
+// `relative` (as BeamDyn; objective): with R_0 the element's first node, r_j the parameters of
+// R_0ᵀ R_j (r_0 = identity; chart of r_j nearest r_{j−1}, so the chart follows the element),
+//   r̄(s) = Σ_j N_j r_j,   R(s) = R_0 R(r̄),   κ(s) = R_0 H_s(r̄) r̄′.
+// δψ_j changes R_0ᵀ R_j by the spatial increment R_0ᵀ (δψ_j − δψ_0), hence with
+// M_j = σ_j H_s⁺(r_j) and the `direct` maps Â_j, K̂_j of r̄ (above):
+//   A_j = R_0 Â_j R_0ᵀ,  K_j = R_0 K̂_j R_0ᵀ  for every j, then
+//   A_0 += I − Σ_j A_j,  K_0 += −κ̃ − Σ_j K_j   (δR Rᵀ ∋ δψ_0, δκ ∋ δψ_0 × κ).
+// A superposed rigid rotation Q (R_j → Q R_j) leaves every r_j unchanged, so R → Q R and
+// κ → Q κ exactly: material strains are invariant (objective). A parameterization is singular only when the rotation *inside one
+// element* reaches its singular angle; nodal parameters are used only through R_j.
 #pragma once
 
+#include "core/so3.hpp"
 #include "parameterizations/concept.hpp"
 
 namespace rotbeam::form {
@@ -65,6 +79,48 @@ void rotation_maps(const InterpolatedRotation<P>& r, const param::Tangent<P::kSi
     const Mat3 HM = r.Hs * M;
     A = N * HM;
     K = N * (T * M) + dN * HM;
+}
+
+// Relative interpolation: interpolate the relative parameters r (as `direct`) and rotate back.
+// out.Hs stays H_s(r̄) (the relative tangent) for rotation_maps.
+template <param::RotationParameterization P>
+void interpolate_relative(const param::Params<P::kSize>* r, const double* N, const double* dN,
+                          int nodes, const Mat3& R0, InterpolatedRotation<P>& out) {
+    interpolate_rotation<P>(r, N, dN, nodes, out);
+    out.R = R0 * out.R;
+    out.kappa = R0 * out.kappa;
+}
+
+// Turns the `direct` maps of r̄ (A[j], K[j] for j < nodes, computed with M_j = σ_j H_s⁺(r_j))
+// into the maps of the relative strategy; kappa is the (rotated) curvature κ = R_0 κ_r.
+inline void relative_maps(const Mat3& R0, const Vec3& kappa, int nodes, Mat3* A, Mat3* K) {
+    Mat3 sumA = Mat3::Zero();
+    Mat3 sumK = Mat3::Zero();
+    for (int j = 0; j < nodes; ++j) {
+        A[j] = R0 * A[j] * R0.transpose();
+        K[j] = R0 * K[j] * R0.transpose();
+        sumA += A[j];
+        sumK += K[j];
+    }
+    A[0] += Mat3::Identity() - sumA;
+    K[0] -= so3::skew(kappa) + sumK;
+}
+
+// Relative parameters of the element's nodes: r_j = params(R_0ᵀ R_j) in the chart nearest
+// r_{j−1} (quaternion: hemisphere of r_{j−1}; WM/rotation vector: rescale; Rodrigues has one).
+template <param::RotationParameterization P>
+void relative_parameters(const param::Params<P::kSize>* p, int nodes,
+                         param::Params<P::kSize>* r) {
+    const param::Params<P::kSize> inv0 = P::inverse(p[0]);
+    r[0] = P::identity();
+    for (int j = 1; j < nodes; ++j) {
+        r[j] = P::compose(inv0, p[j]);
+        if constexpr (P::kSize == 4) {
+            r[j] *= chart_sign<P>(r[j], r[j - 1]);
+        } else if constexpr (P::kCanRescale) {
+            r[j] = P::rescale(r[j], r[j - 1]);
+        }
+    }
 }
 
 }  // namespace rotbeam::form
