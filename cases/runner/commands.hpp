@@ -17,6 +17,7 @@ int command_suite(const Args& args);
 int command_verify(const Args& args);
 int command_reference(const Args& args);
 int command_study(const Args& args);
+int command_bench(const Args& args);  // bench_command.cpp
 
 // Catalog folder: $ROTBEAM_CASES, else the source tree's cases/ (compile-time).
 std::string catalog_directory();

@@ -140,6 +140,10 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
 
 }  // namespace
 
+bool run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
+    return gnuplot(script, vars);
+}
+
 void write_report(const std::string& out_dir, const std::vector<std::string>& run_files) {
     std::vector<nlohmann::json> runs;
     for (const std::string& f : run_files) {

@@ -2,6 +2,7 @@
 // plots (PNG and SVG, made by the gnuplot scripts in reports/ from data files the report writes).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,5 +13,9 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
 // The report's Markdown (headings, paragraphs, pipe tables, images) as one self-contained HTML
 // page, images embedded (report_html.cpp).
 std::string markdown_page_html(const std::string& markdown, const std::string& out_dir);
+
+// Runs reports/<script> with gnuplot and string variables (-e "k='v'"); false when gnuplot is
+// missing or fails. Shared with the studies and the benchmark (study_common.cpp).
+bool run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars);
 
 }  // namespace rotbeam::cli

@@ -1,0 +1,195 @@
+// `rotbeam bench`: runs every target of bench.cpp for every combination, the start-up timing, and
+// prints the table against issue 13's targets. JSON to --json (default out/bench.json); with
+// --history a copy goes to reports/history/<date>-<machine>.json (committed, compared
+// like-for-like: the machine tag names host, CPU and core count).
+#include <unistd.h>
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <thread>
+
+#include "arguments.hpp"
+#include "bench.hpp"
+#include "cases/loader/case_loader.hpp"
+#include "commands.hpp"
+#include "core/results.hpp"
+#include "core/version.hpp"
+#include "make_problem.hpp"
+#include "timing.hpp"
+
+namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    }
+    return "unknown cpu";
+}
+
+nlohmann::json machine_json() {
+    char host[256] = {0};
+    gethostname(host, sizeof(host) - 1);
+    const unsigned cores = std::thread::hardware_concurrency();
+    std::string tag = std::string(host) + "-" + std::to_string(cores) + "core";
+    for (char& ch : tag)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-') ch = '_';
+    return {{"host", host}, {"cpu", cpu_model()}, {"cores", cores}, {"tag", tag}};
+}
+
+std::string utc(const char* format) {
+    const std::time_t t = std::time(nullptr);
+    std::ostringstream s;
+    s << std::put_time(std::gmtime(&t), format);
+    return s.str();
+}
+
+// Start-up: reading a case and building the model. Whole process: `rotbeam check` (read,
+// validate, describe) against `rotbeam --version` (the bare process); in process: load_case plus
+// the static problem's construction.
+nlohmann::json bench_startup(int repeats) {
+    const std::string path = resolve_case_path("cantilever-moment");
+    const Timing bare = time_whole_process({"--version"}, repeats, 3.0);
+    const Timing check = time_whole_process({"check", path}, repeats, 3.0);
+    const Timing in = time_in_process([&] { make_static_problem(load_case(path)); }, repeats, 2.0);
+    return {{"case", "cantilever-moment"},
+            {"whole_process_seconds", check.median_seconds},
+            {"bare_process_seconds", bare.median_seconds},
+            {"in_process_seconds", in.median_seconds},
+            {"peak_rss_kb", check.peak_rss_kb},
+            {"target_seconds", 0.002}};
+}
+
+std::string ms(double seconds) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(seconds < 0.1 ? 2 : 1) << seconds * 1e3;
+    return s.str();
+}
+
+void print_row(const nlohmann::json& r, std::ostream& os) {
+    os << "  " << std::left << std::setw(30)
+       << (r["formulation"].get<std::string>() + "/" + r["rotation"].get<std::string>());
+    const std::string status = r["status"].get<std::string>();
+    if (status != "reached") {
+        os << status << ": " << r.value("reason", "") << "\n";
+        if (r.contains("best_error_per_budget")) {
+            os << "  " << std::setw(30) << "" << "best error within";
+            for (const auto& b : r["best_error_per_budget"]) {
+                os << "  " << ms(b["budget_seconds"].get<double>()) << " ms: "
+                   << (b["best_error"].is_null() ? std::string("—")
+                                                 : sci(b["best_error"].get<double>()));
+            }
+            os << "\n";
+        }
+        return;
+    }
+    const auto& w = r["winner"];
+    os << std::right << std::setw(9) << ms(r["whole_process_seconds"].get<double>()) << std::setw(9)
+       << ms(r["in_process_seconds"].get<double>()) << std::setw(10)
+       << sci(w["error"].get<double>()) << std::setw(5) << w["elements"].get<int>()
+       << std::setw(4) << w["order"].get<int>() << std::setw(4) << w["substeps"].get<int>()
+       << std::setw(7) << w["dofs"].get<int>() << std::setw(6) << w["newton_iterations"].get<int>()
+       << std::setw(8) << r["peak_rss_kb"].get<long>() << "\n";
+}
+
+// The best whole-process time among the combinations that reached a target.
+void print_target_summary(const BenchTarget& t, const nlohmann::json& rows, std::ostream& os) {
+    double best = kNoValue;
+    std::string who = "none";
+    for (const auto& r : rows) {
+        if (r["status"] != "reached") continue;
+        const double s = r["whole_process_seconds"].get<double>();
+        if (!(s >= best)) {
+            best = s;
+            who = r["formulation"].get<std::string>() + "/" + r["rotation"].get<std::string>();
+        }
+    }
+    os << "  best: " << who;
+    if (std::isfinite(best)) os << " " << ms(best) << " ms";
+    if (t.target_seconds > 0.0) {
+        os << "   target ≤ " << ms(t.target_seconds) << " ms: "
+           << (best <= t.target_seconds ? "met" : "MISSED");
+    }
+    os << "\n\n";
+}
+
+}  // namespace
+
+int command_bench(const Args& args) {
+    const CommandSpec spec{
+        "bench", "", 0, 0,
+        "Benchmark the static targets (issue 13): for every parameterization × formulation the "
+        "cheapest discretization reaching the target accuracy (roll-up λ = 0.4, 1.6, 2.0 to "
+        "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
+        "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up.",
+        {{"json", "FILE", "write the results (default out/bench.json)"},
+         {"history", "", "also write reports/history/<date>-<machine>.json"},
+         {"repeats", "N", "timing repeats (default 11, --quick 5)"},
+         {"quick", "", "a smaller search grid and fewer repeats"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    const bool quick = a.has("quick");
+    const int repeats = a.positive_int("bench", "repeats").value_or(quick ? 5 : 11);
+    nlohmann::json out = {{"version", kGitDescribe}, {"date", utc("%Y-%m-%d %H:%M UTC")},
+                          {"machine", machine_json()}, {"quick", quick}, {"repeats", repeats}};
+    out["startup"] = bench_startup(repeats);
+    std::cout << "start-up (read + validate cantilever-moment): whole process "
+              << ms(out["startup"]["whole_process_seconds"].get<double>()) << " ms (bare process "
+              << ms(out["startup"]["bare_process_seconds"].get<double>()) << " ms), in process "
+              << ms(out["startup"]["in_process_seconds"].get<double>()) << " ms; target ≤ 2 ms\n\n";
+    out["targets"] = nlohmann::json::array();
+    for (const BenchTarget& t : bench_targets()) {
+        const nlohmann::json reference =
+            t.case_name == "bend-45"
+                ? continuum_reference(t.case_name, {kExactBendTip, "analysis.load_factors=[600]"})
+                : nlohmann::json();
+        if (!reference.is_null() && (reference.value("status", "") != "converged" ||
+                                     reference["steps"].empty())) {
+            std::cout << t.name << ": no continuum reference (" << reference.value("message", "")
+                      << "); skipped\n\n";
+            continue;
+        }
+        std::cout << t.name << " (" << t.measure << " ≤ " << sci(t.accuracy, 0) << ")\n  "
+                  << std::left << std::setw(30) << "combination" << std::right << std::setw(9)
+                  << "whole ms" << std::setw(9) << "in ms" << std::setw(10) << "error"
+                  << std::setw(5) << "N" << std::setw(4) << "p" << std::setw(4) << "ss"
+                  << std::setw(7) << "dofs" << std::setw(6) << "iter" << std::setw(8) << "RSS kB"
+                  << "\n";
+        nlohmann::json rows = nlohmann::json::array();
+        for (const Combination& c : all_combinations(false)) {
+            rows.push_back(bench_combination(t, c, reference, quick, repeats));
+            print_row(rows.back(), std::cout);
+            std::cout << std::flush;
+        }
+        print_target_summary(t, rows, std::cout);
+        out["targets"].push_back({{"name", t.name}, {"case", t.case_name},
+                                  {"load_factor", t.load_factor}, {"accuracy", t.accuracy},
+                                  {"target_seconds", t.target_seconds}, {"results", rows}});
+    }
+    const std::string file = a.value("json").value_or("out/bench.json");
+    fs::create_directories(fs::path(file).parent_path().empty() ? fs::path(".")
+                                                                 : fs::path(file).parent_path());
+    write_file_atomically(file, out.dump(1) + "\n");
+    std::cout << "wrote " << file << "\n";
+    if (a.has("history")) {
+        const fs::path h = fs::path(ROTBEAM_REPORTS_DIR) / "history" /
+                           (utc("%Y-%m-%d") + "-" + out["machine"]["tag"].get<std::string>() + ".json");
+        fs::create_directories(h.parent_path());
+        write_file_atomically(h.string(), out.dump(1) + "\n");
+        std::cout << "wrote " << h.string() << "\n";
+    }
+    return 0;
+}
+
+}  // namespace rotbeam::cli

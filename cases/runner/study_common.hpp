@@ -1,0 +1,75 @@
+// What the studies share: the combinations (formulation × parameterization × interpolation), one
+// run through run_case() (the code path of `rotbeam run`) with --set-style overrides, the error
+// measures against the exact roll-up and the continuum reference, and the output helpers (data
+// files, gnuplot, Markdown tables).
+//
+// Extension point for the dynamic/modal studies: a study is a function `nlohmann::json
+// study_<name>(const StudyOptions&)` that writes DIR/study-<name>.md (+ data and figures) and is
+// registered in study_commands.cpp's table; the suite's report includes every study-*.md found.
+#pragma once
+
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/model.hpp"
+#include "core/types.hpp"
+
+namespace rotbeam::cli {
+
+constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
+
+struct StudyOptions {
+    std::string out_dir = "out";
+    bool quick = false;
+};
+
+struct Combination {
+    std::string formulation;
+    std::string rotation;
+    std::string interpolation;  // displacement only; empty = the case's
+    std::string label() const;  // e.g. "displacement/quaternion/relative"
+};
+
+// Every formulation × parameterization the program lists (availability is found by running:
+// make_problem's InputError reads "unavailable"); with_interpolation doubles the displacement ones
+// (relative, direct).
+std::vector<Combination> all_combinations(bool with_interpolation);
+
+struct RunSpec {
+    std::string case_name;  // catalog name or path
+    Combination combination;
+    std::vector<std::string> overrides;  // key.path=value, as `--set`
+    int elements = 0;                    // > 0: elements of every member
+};
+
+Model build_model(const RunSpec& spec);
+// run_case() on the spec's model. A combination the program refuses (InputError, e.g. "not
+// available") comes back as {"status": "unavailable", "message": ...} with no steps.
+nlohmann::json run_spec(const RunSpec& spec);
+bool converged_steps_exist(const nlohmann::json& result);
+
+// Straight length between a single member's end points (the cases the studies use).
+double member_length(const Model& model);
+
+Vec3 point_displacement(const nlohmann::json& step, const std::string& point = "tip");
+// ‖u_tip − u_exact‖/L of a roll-up step (core/oracles/rollup.hpp at the step's load factor).
+double rollup_tip_error(const nlohmann::json& step, double length);
+// ‖u_tip − u_ref‖ / scale against the reference step with the same load factor (NaN if absent).
+double reference_tip_error(const nlohmann::json& step, const nlohmann::json& reference,
+                           double scale);
+// The continuum reference (`rotbeam reference`) of a case with overrides.
+nlohmann::json continuum_reference(const std::string& case_name,
+                                   const std::vector<std::string>& overrides);
+
+int total_newton_iterations(const nlohmann::json& result);
+
+// Output: text files under the study folder, gnuplot (reports/<script>), numbers for tables.
+void write_text(const StudyOptions& o, const std::string& relative_path, const std::string& text);
+std::string out_path(const StudyOptions& o, const std::string& relative_path);
+bool plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
+std::string sci(double value, int digits = 2);  // "—" for NaN
+std::string quoted(const std::string& s);        // for gnuplot data-file titles
+
+}  // namespace rotbeam::cli

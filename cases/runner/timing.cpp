@@ -1,0 +1,110 @@
+#include "timing.hpp"
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/errors.hpp"
+
+namespace rotbeam::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One child run: returns its wall time; sets the child's max RSS and exit code.
+double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& exit_code) {
+    std::vector<char*> argv;
+    std::string self = "/proc/self/exe";
+    argv.push_back(self.data());
+    std::vector<std::string> copy = arguments;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const Clock::time_point start = Clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) throw SolverError("timing: fork failed");
+    if (pid == 0) {
+        const int null_fd = open("/dev/null", O_WRONLY);
+        if (null_fd >= 0) {
+            dup2(null_fd, STDOUT_FILENO);
+            dup2(null_fd, STDERR_FILENO);
+        }
+        execv("/proc/self/exe", argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    if (wait4(pid, &status, 0, &usage) != pid) throw SolverError("timing: wait4 failed");
+    const double elapsed = seconds_since(start);
+    rss_kb = usage.ru_maxrss;
+    exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return elapsed;
+}
+
+Timing summarize(std::vector<double> samples) {
+    Timing t;
+    t.repeats = static_cast<int>(samples.size());
+    t.min_seconds = *std::min_element(samples.begin(), samples.end());
+    t.median_seconds = median(std::move(samples));
+    return t;
+}
+
+}  // namespace
+
+double median(std::vector<double> samples) {
+    ROTBEAM_VERIFY(!samples.empty(), "median of no samples");
+    const size_t n = samples.size();
+    std::nth_element(samples.begin(), samples.begin() + n / 2, samples.end());
+    const double upper = samples[n / 2];
+    if (n % 2 == 1) return upper;
+    const double lower = *std::max_element(samples.begin(), samples.begin() + n / 2);
+    return 0.5 * (lower + upper);
+}
+
+long peak_rss_self_kb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+Timing time_in_process(const std::function<void()>& work, int repeats, double budget_seconds) {
+    std::vector<double> samples;
+    const Clock::time_point begin = Clock::now();
+    for (int i = 0; i < std::max(1, repeats); ++i) {
+        const Clock::time_point start = Clock::now();
+        work();
+        samples.push_back(seconds_since(start));
+        if (budget_seconds > 0.0 && seconds_since(begin) > budget_seconds) break;
+    }
+    Timing t = summarize(std::move(samples));
+    t.peak_rss_kb = peak_rss_self_kb();
+    return t;
+}
+
+Timing time_whole_process(const std::vector<std::string>& arguments, int repeats,
+                          double budget_seconds) {
+    std::vector<double> samples;
+    long peak = 0;
+    int exit_code = 0;
+    const Clock::time_point begin = Clock::now();
+    for (int i = 0; i < std::max(1, repeats); ++i) {
+        long rss = 0;
+        samples.push_back(run_child(arguments, rss, exit_code));
+        peak = std::max(peak, rss);
+        if (budget_seconds > 0.0 && seconds_since(begin) > budget_seconds) break;
+    }
+    Timing t = summarize(std::move(samples));
+    t.peak_rss_kb = peak;
+    t.exit_code = exit_code;
+    return t;
+}
+
+}  // namespace rotbeam::cli

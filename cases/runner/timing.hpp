@@ -1,0 +1,40 @@
+// The one timing harness (issue 11 item 2, issue 13 item 1): medians of repeated runs, in-process
+// time, whole-process time (the rotbeam executable itself run as a child through /proc/self/exe)
+// and peak memory (getrusage / wait4 of the child). Used by the studies and by `rotbeam bench`.
+//
+// Why medians: the machine is shared (2 cores, other builds running); the median of repeats is
+// robust against the occasional descheduled run, where the mean is not.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rotbeam::cli {
+
+// Median of the samples (mean of the two middle ones for an even count). API misuse (ROTBEAM_VERIFY)
+// when empty.
+double median(std::vector<double> samples);
+
+struct Timing {
+    double median_seconds = 0.0;
+    double min_seconds = 0.0;
+    int repeats = 0;
+    long peak_rss_kb = 0;  // whole-process: largest child max RSS; in-process: this process's
+    int exit_code = 0;     // whole-process: the child's exit code of the last repeat
+};
+
+// Wall time (steady clock) of `work`, repeated `repeats` times (at least once), median.
+// `budget_seconds` > 0 stops repeating once that much time has been spent (after one run).
+Timing time_in_process(const std::function<void()>& work, int repeats,
+                       double budget_seconds = 0.0);
+
+// Whole-process wall time: fork + exec of this executable with `arguments` (stdout/stderr to
+// /dev/null), wait4 for it; the median over `repeats`, and the child's peak RSS.
+Timing time_whole_process(const std::vector<std::string>& arguments, int repeats,
+                          double budget_seconds = 0.0);
+
+// This process's peak resident set [kB] so far (getrusage RUSAGE_SELF).
+long peak_rss_self_kb();
+
+}  // namespace rotbeam::cli
