@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 #include <string>
+#include <vector>
 
 #include "core/types.hpp"
 
@@ -69,6 +70,18 @@ struct PointState {
     Mat3 rotation = Mat3::Identity();
 };
 
+// Section resultants at one station of a member: the internal force and moment the part beyond
+// the station (larger arc length) exerts on the part before it, in inertial and in material
+// (deformed section) components.
+struct SectionResultants {
+    int member = -1;   // index into Model::members
+    double s = 0.0;    // arc length along the member's reference line
+    Vec3 force = Vec3::Zero();
+    Vec3 moment = Vec3::Zero();
+    Vec3 force_material = Vec3::Zero();
+    Vec3 moment_material = Vec3::Zero();
+};
+
 // A formulation set up for a static analysis of a model.
 class StaticProblem : public NonlinearSystem {
 public:
@@ -77,6 +90,9 @@ public:
     virtual AssemblyCounters counters() const = 0;
     // Largest rotation angle [rad] held in the state (for messages).
     virtual double max_rotation_angle() const { return 0.0; }
+    // Section resultants along the members at the formulation's natural stations (mixed: element
+    // mid-points, where F and M are unknowns); empty when the formulation does not provide them.
+    virtual std::vector<SectionResultants> section_resultants() const { return {}; }
 };
 
 }  // namespace rotbeam

@@ -61,6 +61,22 @@ nlohmann::json result_header(const RunRequest& request) {
             {"steps", nlohmann::json::array()}};
 }
 
+// Section resultants of the last converged state, per member, ordered by arc length.
+nlohmann::json sections_json(const Model& model, double load_factor,
+                             const std::vector<SectionResultants>& sections) {
+    auto vec = [](const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
+    nlohmann::json stations = nlohmann::json::array();
+    for (const SectionResultants& r : sections) {
+        stations.push_back({{"member", model.members[static_cast<size_t>(r.member)].name},
+                            {"s", r.s},
+                            {"force", vec(r.force)},
+                            {"moment", vec(r.moment)},
+                            {"force_material", vec(r.force_material)},
+                            {"moment_material", vec(r.moment_material)}});
+    }
+    return {{"load_factor", load_factor}, {"stations", stations}};
+}
+
 // KINSOL (line search, scaling, KLU) in place of the in-house Newton, for additive systems.
 NewtonOutcome kinsol_step_solver(NonlinearSystem& system, const NewtonSettings& settings) {
     KinsolSettings k;
@@ -106,6 +122,13 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     result["status"] = to_string(outcome.status);
     result["message"] = outcome.message;
     result["counters"] = counters_json(problem->counters());
+    if (!outcome.steps.empty()) {
+        const std::vector<SectionResultants> sections = problem->section_resultants();
+        if (!sections.empty()) {
+            result["section_resultants"] =
+                sections_json(model, outcome.last_converged_load_factor, sections);
+        }
+    }
 }
 
 }  // namespace

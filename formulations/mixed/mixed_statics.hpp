@@ -48,6 +48,7 @@ class MixedStatics : public StaticProblem {
     PointState point_state(int point_index) const override;
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
+    std::vector<SectionResultants> section_resultants() const override;
 
     const MixedLayout& layout() const { return layout_; }
     MixedElementState element_state(int e) const;

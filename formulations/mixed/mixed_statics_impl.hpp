@@ -187,4 +187,17 @@ std::vector<MixedElementResultants> MixedStatics<P>::resultants() const {
     return out;
 }
 
+// F and M are element unknowns in the deformed material frame (seed 002 Eq. 45's b axes).
+template <param::RotationParameterization P>
+std::vector<SectionResultants> MixedStatics<P>::section_resultants() const {
+    std::vector<SectionResultants> out;
+    for (int e = 0; e < layout_.element_count(); ++e) {
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        const MixedElementState st = element_state(e);
+        const Mat3 A = P::matrix(st.c) * el.Cab;
+        out.push_back({el.member, el.s_mid, A * st.F, A * st.M, st.F, st.M});
+    }
+    return out;
+}
+
 }  // namespace rotbeam::form

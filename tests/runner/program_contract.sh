@@ -82,6 +82,14 @@ r = json.load(open(sys.argv[1]))
 assert r["status"] == "converged", r["message"]
 u = r["steps"][-1]["points"]["tip"]["displacement"]
 assert abs(u[0] + 14.2403) < 1e-4 and abs(u[2] - 1.6287) < 1e-4, u
+# Section resultants along the beam: the pure tip moment is carried unchanged (1.6·(−πEI/L) about
+# y, a rotation about y leaves the material y axis in place) with no force, at 16 stations.
+sec = r["section_resultants"]
+assert sec["load_factor"] == 1.6 and len(sec["stations"]) == 16, sec
+for st in sec["stations"]:
+    for key in ("moment", "moment_material"):
+        assert abs(st[key][1] - 1.6 * -654498.4694978736) < 1e-6 * 654498.0, st
+    assert max(abs(f) for f in st["force"]) < 1e-6, st
 PY
 expect_input_error "kinsol with rotations composed" run cantilever-moment --set solver.driver=kinsol
 
