@@ -16,6 +16,7 @@
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "run_case.hpp"
+#include "studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -203,20 +204,25 @@ int command_reference(const Args& args) {
 
 int command_study(const Args& args) {
     const CommandSpec spec{
-        "study", "rotations", 1, 1,
+        "study", "NAME", 1, 1,
         "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for every "
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
-        "errors, and where each is defined.",
-        {{"json", "FILE", "write the study JSON to FILE"},
-         {"samples", "N", "angles in the sweep (default 721)"}}};
+        "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
+        "`speed-accuracy` (or `all`): the static studies of docs/studies.md, written to --out "
+        "(study-NAME.md, .json, figures).",
+        {{"json", "FILE", "write the study JSON to FILE (rotations)"},
+         {"samples", "N", "angles in the sweep (default 721, rotations)"},
+         {"out", "DIR", "output folder of the static studies (default out)"},
+         {"quick", "", "the static studies' smaller variant (CI smoke test)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
         return 0;
     }
     if (a.positional[0] != "rotations") {
-        throw InputError("rotbeam study: unknown study '" + a.positional[0] +
-                         "' (available: rotations)");
+        run_named_study(a.positional[0], StudyOptions{a.value("out").value_or("out"),
+                                                      a.has("quick")});
+        return 0;
     }
     const int samples = a.positive_int("study", "samples").value_or(721);
     const nlohmann::json study = param::rotation_study(samples);

@@ -111,6 +111,26 @@ int total_newton_iterations(const nlohmann::json& result) {
     return n;
 }
 
+std::string write_series(const StudyOptions& o, const std::string& relative_path,
+                         const Series& series) {
+    std::ostringstream s;
+    s.precision(12);
+    s << "# " << series.label << ": elements dofs seconds error\n";
+    for (size_t i = 0; i < series.error.size(); ++i) {
+        if (!std::isfinite(series.error[i])) continue;
+        s << series.elements[i] << " " << series.dofs[i] << " " << series.seconds[i] << " "
+          << std::max(series.error[i], 1e-17) << "\n";  // log axes: exact zero drawn at 1e-17
+    }
+    write_text(o, relative_path, s.str());
+    return out_path(o, relative_path);
+}
+
+std::string join_words(const std::vector<std::string>& words) {
+    std::string s;
+    for (const std::string& w : words) s += (s.empty() ? "" : " ") + w;
+    return s;
+}
+
 std::string out_path(const StudyOptions& o, const std::string& relative_path) {
     return (fs::path(o.out_dir) / relative_path).string();
 }

@@ -65,6 +65,24 @@ nlohmann::json continuum_reference(const std::string& case_name,
 
 int total_newton_iterations(const nlohmann::json& result);
 
+// One curve of a study: x values (elements, unknowns, time, ...) against an error, with a label
+// free of spaces (gnuplot takes the titles as a word list).
+struct Series {
+    std::string label;
+    std::vector<double> elements, dofs, seconds, error;
+    void add(double n, double d, double s, double e) {
+        elements.push_back(n);
+        dofs.push_back(d);
+        seconds.push_back(s);
+        error.push_back(e);
+    }
+};
+// Writes "elements dofs seconds error" rows (finite errors only); returns the path.
+std::string write_series(const StudyOptions& o, const std::string& relative_path,
+                         const Series& series);
+// Joins words with single spaces (the gnuplot word lists).
+std::string join_words(const std::vector<std::string>& words);
+
 // Output: text files under the study folder, gnuplot (reports/<script>), numbers for tables.
 void write_text(const StudyOptions& o, const std::string& relative_path, const std::string& text);
 std::string out_path(const StudyOptions& o, const std::string& relative_path);

@@ -1,0 +1,32 @@
+// The static studies of issue 12 (`rotbeam study NAME`, and the suite's report). Each study is one
+// function: it runs through run_case() (the code path of `rotbeam run`), writes
+// DIR/study-<name>.json (the data), DIR/study-<name>.md (tables, figures, what they show) and the
+// figures (reports/study_<name>.gp), and returns its JSON.
+//
+// Extension point: the dynamic and modal studies (the joined-beam frequencies, the manufactured
+// solutions in time, Δt / IDA-tolerance vs accuracy) are further functions of this signature,
+// added to static_studies() — the command and the report pick them up from there.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "study_common.hpp"
+
+namespace rotbeam::cli {
+
+nlohmann::json study_convergence(const StudyOptions& o);     // study_convergence.cpp
+nlohmann::json study_singularity(const StudyOptions& o);     // study_singularity.cpp
+nlohmann::json study_extremes(const StudyOptions& o);        // study_extremes.cpp
+nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
+
+using StudyFunction = nlohmann::json (*)(const StudyOptions&);
+// The studies in report order (study_commands.cpp).
+const std::vector<std::pair<std::string, StudyFunction>>& static_studies();
+
+// Runs the named study (InputError for an unknown name) or, for "all", every study.
+void run_named_study(const std::string& name, const StudyOptions& o);
+
+}  // namespace rotbeam::cli

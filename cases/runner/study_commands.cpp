@@ -1,0 +1,39 @@
+// The registry of the static studies (studies.hpp) behind `rotbeam study NAME` and the suite.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include "core/errors.hpp"
+#include "studies.hpp"
+
+namespace rotbeam::cli {
+
+const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
+    static const std::vector<std::pair<std::string, StudyFunction>> table = {
+        {"convergence", study_convergence},
+    };
+    return table;
+}
+
+void run_named_study(const std::string& name, const StudyOptions& o) {
+    std::filesystem::create_directories(o.out_dir);
+    bool found = false;
+    for (const auto& [study, function] : static_studies()) {
+        if (name != "all" && name != study) continue;
+        found = true;
+        const auto start = std::chrono::steady_clock::now();
+        function(o);
+        std::cout << "study " << study << ": "
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+                  << " s → " << (std::filesystem::path(o.out_dir) / ("study-" + study + ".md")).string()
+                  << "\n";
+    }
+    if (!found) {
+        std::string names = "rotations";
+        for (const auto& entry : static_studies()) names += ", " + entry.first;
+        throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
+                         ", all)");
+    }
+}
+
+}  // namespace rotbeam::cli
