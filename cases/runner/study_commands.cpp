@@ -11,6 +11,7 @@ namespace rotbeam::cli {
 const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
     static const std::vector<std::pair<std::string, StudyFunction>> table = {
         {"convergence", study_convergence},
+        {"singularity", study_singularity},
     };
     return table;
 }

@@ -67,13 +67,17 @@ std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vecto
 }
 
 Reach classify_reach(const std::vector<ConvergedStep>& steps, const std::string& status,
-                     int target_steps, double tolerance) {
+                     int target_steps, double tolerance, double jump_factor) {
     Reach reach;
+    double previous = kNaN;
     for (const ConvergedStep& s : steps) {
         if (!std::isfinite(s.error) || s.error > tolerance) {
-            reach.stopped = "wrong branch";
+            const bool jumped = !std::isfinite(s.error) || !std::isfinite(previous) ||
+                                s.error > jump_factor * previous;
+            reach.stopped = jumped ? "wrong branch" : "lost accuracy";
             return reach;
         }
+        previous = s.error;
         reach.load_factor = s.load_factor;
         ++reach.steps_reached;
     }

@@ -36,11 +36,14 @@ struct Reach {
 };
 
 // Classifies a continuation: walks the converged steps in order; the first whose error exceeds
-// `tolerance` (or is not finite) ends the reach as "wrong branch" (converged, but off the answer).
+// `tolerance` (or is not finite) ends the reach. It is a "wrong branch" (converged, but on another
+// equilibrium) when the error jumped there — by more than `jump_factor` over the previous step's,
+// or at the first step — and "lost accuracy" when the error grew smoothly past the tolerance (a
+// discretization error accumulating along the path, e.g. the precession phase of a coarse helix).
 // Otherwise the reach is the last step, stopped by the run's `status` ("converged" with every
 // target step reached reads "completed").
 Reach classify_reach(const std::vector<ConvergedStep>& steps, const std::string& status,
-                     int target_steps, double tolerance);
+                     int target_steps, double tolerance, double jump_factor = 10.0);
 
 // Index of the smallest error of a refinement sequence, i.e. where refining stops paying (the
 // round-off floor when the errors before it fell at the discretization order). −1 when empty.

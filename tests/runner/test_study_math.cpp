@@ -52,7 +52,7 @@ BOOST_AUTO_TEST_CASE(pareto_front_keeps_exactly_the_non_dominated_points) {
     BOOST_TEST((pareto_front({1.0, 1.0}, {2.0, 2.0}) == std::vector<bool>{true, true}));
 }
 
-BOOST_AUTO_TEST_CASE(classify_reach_names_how_a_continuation_stopped) {
+BOOST_AUTO_TEST_CASE(classify_reach_tells_wrong_branch_from_lost_accuracy_and_solver_stops) {
     const std::vector<ConvergedStep> good = {{0.5, 1e-8}, {1.0, 2e-8}, {1.5, 3e-8}};
     Reach r = classify_reach(good, "converged", 3, 1e-3);
     BOOST_TEST(r.stopped == "completed");
@@ -66,6 +66,11 @@ BOOST_AUTO_TEST_CASE(classify_reach_names_how_a_continuation_stopped) {
     r = classify_reach(wrong, "converged", 3, 1e-3);
     BOOST_TEST(r.stopped == "wrong branch");
     BOOST_TEST(r.load_factor == 0.5);
+    // A smooth growth past the tolerance is lost accuracy, not a branch switch.
+    const std::vector<ConvergedStep> drift = {{0.5, 4e-4}, {1.0, 8e-4}, {1.5, 1.6e-3}};
+    r = classify_reach(drift, "converged", 3, 1e-3);
+    BOOST_TEST(r.stopped == "lost accuracy");
+    BOOST_TEST(r.load_factor == 1.0);
     r = classify_reach({{0.5, NAN}}, "converged", 1, 1e-3);
     BOOST_TEST(r.stopped == "wrong branch");
     BOOST_TEST(r.steps_reached == 0);
