@@ -12,6 +12,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
     static const std::vector<std::pair<std::string, StudyFunction>> table = {
         {"convergence", study_convergence},
         {"singularity", study_singularity},
+        {"extremes", study_extremes},
     };
     return table;
 }

@@ -1,0 +1,146 @@
+// `rotbeam study extremes`, second half: the roll-up in ONE load step to λ = 1, 2, 4 with step
+// cutting disabled (the damped Newton alone: how robust is it?), and mesh refinement of the
+// roll-up until round-off dominates (where the error stops falling, and why); then the study
+// function that assembles the four parts.
+#include <cmath>
+
+#include "study_extremes.hpp"
+#include "study_math.hpp"
+#include "studies.hpp"
+
+namespace rotbeam::cli {
+
+namespace {
+
+struct Refined {
+    std::string label;
+    Combination combination;
+    int order;
+    std::vector<int> elements;
+};
+
+std::vector<Refined> round_off_series(bool quick) {
+    const int top = quick ? 128 : 1024;
+    std::vector<int> n2, n4, nm;
+    for (int n = 2; n <= top; n *= 2) n2.push_back(n);
+    for (int n = 1; n <= top / 4; n *= 2) n4.push_back(n);
+    for (int n = 16; n <= (quick ? 256 : 2048); n *= 2) nm.push_back(n);
+    return {{"displacement/quaternion/p2", {"displacement", "quaternion", ""}, 2, n2},
+            {"displacement/quaternion/p4", {"displacement", "quaternion", ""}, 4, n4},
+            {"displacement/rotation-vector/p4", {"displacement", "rotation-vector", ""}, 4, n4},
+            {"mixed/rotation-vector", {"mixed", "rotation-vector", ""}, 1, nm}};
+}
+
+}  // namespace
+
+nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& md) {
+    const std::vector<double> lambdas = {1.0, 2.0, 4.0};
+    md << "### One load step\n\nThe roll-up (catalog mesh: 16 elements, displacement order 4) "
+          "solved in a single load step to λ = 1, 2 and 4 with step cutting disabled "
+          "(`analysis.max_step_cuts=0`): the damped Newton alone. Entries: Newton iterations and "
+          "tip error ‖Δu‖/L, or how it failed.\n\n| combination | λ = 1 | λ = 2 | λ = 4 |\n"
+          "|---|---|---|---|\n";
+    nlohmann::json out = nlohmann::json::array();
+    std::vector<std::string> files, titles;
+    for (const Combination& c : all_combinations(true)) {
+        std::ostringstream row, data;
+        data << "# lambda newton_iterations\n";
+        bool unavailable = false;
+        for (double lambda : lambdas) {
+            const RunSpec spec{"cantilever-moment", c,
+                               {"analysis.load_factors=[" + sci(lambda, 3) + "]",
+                                "analysis.substeps=1", "analysis.max_step_cuts=0"},
+                               0};
+            const nlohmann::json r = run_spec(spec);
+            const std::string status = r.value("status", "error");
+            unavailable = status == "unavailable";
+            if (unavailable) break;
+            const bool ok = status == "converged" && converged_steps_exist(r);
+            const double e = ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue;
+            const int it = total_newton_iterations(r);
+            row << " " << (ok ? std::to_string(it) + " it, " + sci(e) : status) << " |";
+            if (ok) data << lambda << " " << it << "\n";
+            out.push_back({{"combination", c.label()}, {"lambda", lambda}, {"status", status},
+                           {"newton_iterations", it},
+                           {"error", ok ? nlohmann::json(e) : nlohmann::json()},
+                           {"message", r.value("message", "")}});
+        }
+        if (unavailable) continue;
+        md << "| " << c.label() << " |" << row.str() << "\n";
+        const std::string rel = "data/extremes_single_" + std::to_string(files.size()) + ".dat";
+        write_text(o, rel, data.str());
+        files.push_back(out_path(o, rel));
+        titles.push_back(c.label());
+    }
+    plot("study_lines.gp",
+         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
+          {"ycol", "2"}, {"xlabel", "load factor λ reached in one step"},
+          {"ylabel", "Newton iterations (converged runs only)"},
+          {"plottitle", "Roll-up in one load step, no step cutting: Newton iterations"},
+          {"outbase", out_path(o, "extremes-single-step")}, {"logx", "0"}, {"logy", "0"}});
+    md << "\n![extremes-single-step.png](extremes-single-step.png)\n\n";
+    return out;
+}
+
+nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md) {
+    md << "### Refinement down to round-off\n\nThe roll-up at λ = 0.8 (exact) refined by "
+          "doubling the elements. `floor` is the smallest error and where it occurs; `order "
+          "before` the observed order up to it; `slope after` the log-log slope of the error past "
+          "it (positive: it grows again).\n\n| series | elements | floor | at N | order before | "
+          "slope after |\n|---|---|---|---|---|---|\n";
+    nlohmann::json out = nlohmann::json::array();
+    std::vector<std::string> files, titles;
+    for (const Refined& s : round_off_series(o.quick)) {
+        Series series{s.label, {}, {}, {}, {}};
+        for (int n : s.elements) {
+            std::vector<std::string> ov = {"analysis.load_factors=[0.8]", "analysis.substeps=2"};
+            if (s.combination.formulation == "displacement") {
+                ov.push_back("discretization.order=" + std::to_string(s.order));
+            }
+            const nlohmann::json r = run_spec({"cantilever-moment", s.combination, ov, n});
+            const bool ok = r.value("status", "") == "converged" && converged_steps_exist(r);
+            series.add(n, r.value("dofs", 0), r.value("wall_seconds", 0.0),
+                       ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue);
+        }
+        const int f = floor_index(series.error);
+        const size_t fi = static_cast<size_t>(std::max(f, 0));
+        const std::vector<double> n_before(series.elements.begin(), series.elements.begin() + fi + 1);
+        const std::vector<double> e_before(series.error.begin(), series.error.begin() + fi + 1);
+        const std::vector<double> n_after(series.elements.begin() + fi, series.elements.end());
+        const std::vector<double> e_after(series.error.begin() + fi, series.error.end());
+        const double before = fit_order(n_before, e_before);
+        const double after = n_after.size() >= 2 ? -fit_order(n_after, e_after) : kNoValue;
+        md << "| " << s.label << " | " << s.elements.front() << " … " << s.elements.back() << " | "
+           << (f >= 0 ? sci(series.error[fi]) : "—") << " | "
+           << (f >= 0 ? std::to_string(static_cast<int>(series.elements[fi])) : "—") << " | "
+           << sci(before, 2) << " | " << sci(after, 2) << " |\n";
+        out.push_back({{"series", s.label}, {"elements", series.elements},
+                       {"error", series.error}, {"floor_index", f}, {"order_before", before},
+                       {"slope_after", after}});
+        files.push_back(write_series(o, "data/extremes_roundoff_" + std::to_string(files.size()) +
+                                            ".dat", series));
+        titles.push_back(s.label);
+    }
+    plot("study_lines.gp",
+         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
+          {"ycol", "4"}, {"xlabel", "elements N"}, {"ylabel", "tip error ‖Δu‖/L [-]"},
+          {"plottitle", "Roll-up λ = 0.8: refinement until round-off dominates"},
+          {"outbase", out_path(o, "extremes-round-off")}, {"logx", "1"}, {"logy", "1"}});
+    md << "\n![extremes-round-off.png](extremes-round-off.png)\n\n";
+    return out;
+}
+
+nlohmann::json study_extremes(const StudyOptions& o) {
+    std::ostringstream md;
+    md << "## Study: the extremes\n\n";
+    nlohmann::json out = {{"study", "extremes"}, {"quick", o.quick}};
+    out["slenderness"] = extremes_slenderness(o, md);
+    out["tiny_loads"] = extremes_tiny_loads(o, md);
+    out["single_step"] = extremes_single_step(o, md);
+    out["round_off"] = extremes_round_off(o, md);
+    write_text(o, "study-extremes.md", md.str());
+    write_text(o, "study-extremes.json", out.dump(1) + "\n");
+    return out;
+}
+
+}  // namespace rotbeam::cli
