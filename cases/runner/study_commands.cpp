@@ -13,6 +13,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"convergence", study_convergence},
         {"singularity", study_singularity},
         {"extremes", study_extremes},
+        {"speed-accuracy", study_speed_accuracy},
     };
     return table;
 }
