@@ -14,6 +14,7 @@
 
 #include "core/results.hpp"
 #include "core/version.hpp"
+#include "studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -186,6 +187,11 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     md << "\n## Figures\n\n";
     if (figures.empty()) md << "(no figures: gnuplot missing or no data)\n";
     for (const Figure& f : figures) md << "![" << f.caption << "](" << f.file << ")\n\n" << f.caption << "\n\n";
+    // The studies (issue 12), each a section written by its study function, when present.
+    for (const auto& entry : static_studies()) {
+        std::ifstream study(fs::path(out_dir) / ("study-" + entry.first + ".md"));
+        if (study) md << "\n" << study.rdbuf() << "\n";
+    }
     write_file_atomically((fs::path(out_dir) / "index.md").string(), md.str());
     write_file_atomically((fs::path(out_dir) / "index.html").string(), markdown_page_html(md.str(), out_dir));
 }

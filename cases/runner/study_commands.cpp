@@ -1,7 +1,9 @@
 // The registry of the static studies (studies.hpp) behind `rotbeam study NAME` and the suite.
 #include <chrono>
 #include <filesystem>
+#include <atomic>
 #include <iostream>
+#include <thread>
 
 #include "core/errors.hpp"
 #include "studies.hpp"
@@ -37,6 +39,21 @@ void run_named_study(const std::string& name, const StudyOptions& o) {
         throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
                          ", all)");
     }
+}
+
+void run_suite_studies(const StudyOptions& o, int jobs) {
+    std::vector<std::string> parallel;
+    for (const auto& entry : static_studies()) {
+        if (entry.first != "speed-accuracy") parallel.push_back(entry.first);
+    }
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < parallel.size(); i = next++) run_named_study(parallel[i], o);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < std::max(1, jobs); ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    run_named_study("speed-accuracy", o);
 }
 
 }  // namespace rotbeam::cli

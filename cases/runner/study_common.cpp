@@ -99,8 +99,14 @@ double reference_tip_error(const nlohmann::json& step, const nlohmann::json& ref
     return kNoValue;
 }
 
+std::mutex& gsl_mutex() {
+    static std::mutex m;
+    return m;
+}
+
 nlohmann::json continuum_reference(const std::string& case_name,
                                    const std::vector<std::string>& overrides) {
+    const std::lock_guard<std::mutex> lock(gsl_mutex());
     const std::string path = resolve_case_path(case_name);
     return continuum_result_json(load_case(path, overrides), path);
 }

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <limits>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -59,7 +60,10 @@ double rollup_tip_error(const nlohmann::json& step, double length);
 // ‖u_tip − u_ref‖ / scale against the reference step with the same load factor (NaN if absent).
 double reference_tip_error(const nlohmann::json& step, const nlohmann::json& reference,
                            double scale);
-// The continuum reference (`rotbeam reference`) of a case with overrides.
+// Serializes GSL users of the studies (the continuum solver, the Timoshenko oracle): their guards
+// swap GSL's process-wide error handler, which races when studies run in parallel threads.
+std::mutex& gsl_mutex();
+// The continuum reference (`rotbeam reference`) of a case with overrides (under gsl_mutex).
 nlohmann::json continuum_reference(const std::string& case_name,
                                    const std::vector<std::string>& overrides);
 

@@ -34,6 +34,7 @@ struct SquareSection {
         b.length = kLength;
         b.bending_stiffness = kE * inertia;
         b.shear_stiffness = kShearFactor * kE / (2.0 * (1.0 + kNu)) * area;
+        const std::lock_guard<std::mutex> lock(gsl_mutex());
         return oracle::timoshenko_tip_deflection(b, force);
     }
 };

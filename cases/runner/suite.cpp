@@ -28,6 +28,7 @@
 #include "parameterizations/rotation_study.hpp"
 #include "report.hpp"
 #include "run_case.hpp"
+#include "studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -153,7 +154,9 @@ int command_suite(const Args& args) {
          {"jobs", "N", "worker threads (default: all cores)"},
          {"cases", "GLOB", "only catalog cases matching GLOB (default: *)"},
          {"force", "", "rerun everything"},
-         {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"}}};
+         {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"},
+         {"studies", "", "run the static studies even with --cases (default: only without)"},
+         {"no-studies", "", "skip the static studies (docs/studies.md)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -169,6 +172,10 @@ int command_suite(const Args& args) {
     run_all(runs, jobs, a.has("force"));
     write_file_atomically((fs::path(out) / "rotation-study.json").string(),
                           param::rotation_study(721).dump(1) + "\n");
+    // The studies (issue 12) belong to the main job: on by default for the whole catalog, off
+    // for a --cases selection unless --studies asks for them.
+    const bool studies = !a.has("no-studies") && (a.has("studies") || !a.has("cases"));
+    if (studies) run_suite_studies(StudyOptions{out, a.has("quick")}, jobs);
     std::vector<std::string> files;
     for (const PlannedRun& r : runs) files.push_back(r.output);
     write_report(out, files);
