@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "timing.hpp"
 
 namespace {
 
@@ -44,6 +45,7 @@ void print_usage(std::ostream& os) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    rotbeam::cli::report_peak_rss_at_exit();  // only under `rotbeam bench` (timing.hpp)
     const std::vector<std::string> all(argv + 1, argv + argc);
     if (all.empty()) {
         std::cerr << "rotbeam: missing command; see 'rotbeam --help'\n";

@@ -7,6 +7,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 
 #include "core/errors.hpp"
 
@@ -20,8 +24,30 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One child run: returns its wall time; sets the child's max RSS and exit code.
+constexpr const char* kPeakRssVariable = "ROTBEAM_PEAK_RSS_FILE";
+
+long read_vm_hwm_kb(const char* status_path) {
+    std::ifstream in(status_path);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
+    }
+    return 0;
+}
+
+void write_peak_rss() {
+    const char* file = std::getenv(kPeakRssVariable);
+    if (!file) return;
+    if (std::FILE* f = std::fopen(file, "w")) {
+        std::fprintf(f, "%ld\n", read_vm_hwm_kb("/proc/self/status"));
+        std::fclose(f);
+    }
+}
+
+// One child run: returns its wall time; sets the child's own peak RSS (reported through
+// ROTBEAM_PEAK_RSS_FILE, see report_peak_rss_at_exit) and exit code.
 double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& exit_code) {
+    const std::string rss_file = "/tmp/rotbeam-peak-rss-" + std::to_string(getpid()) + ".txt";
     std::vector<char*> argv;
     std::string self = "/proc/self/exe";
     argv.push_back(self.data());
@@ -37,6 +63,7 @@ double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& e
             dup2(null_fd, STDOUT_FILENO);
             dup2(null_fd, STDERR_FILENO);
         }
+        setenv(kPeakRssVariable, rss_file.c_str(), 1);  // single-threaded caller: safe here
         execv("/proc/self/exe", argv.data());
         _exit(127);
     }
@@ -44,7 +71,10 @@ double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& e
     rusage usage{};
     if (wait4(pid, &status, 0, &usage) != pid) throw SolverError("timing: wait4 failed");
     const double elapsed = seconds_since(start);
-    rss_kb = usage.ru_maxrss;
+    std::ifstream reported(rss_file);
+    rss_kb = 0;
+    if (!(reported >> rss_kb)) rss_kb = usage.ru_maxrss;  // an older binary: the kernel's figure
+    std::remove(rss_file.c_str());
     exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     return elapsed;
 }
@@ -67,6 +97,10 @@ double median(std::vector<double> samples) {
     if (n % 2 == 1) return upper;
     const double lower = *std::max_element(samples.begin(), samples.begin() + n / 2);
     return 0.5 * (lower + upper);
+}
+
+void report_peak_rss_at_exit() {
+    if (std::getenv(kPeakRssVariable)) std::atexit(write_peak_rss);
 }
 
 long peak_rss_self_kb() {

@@ -37,4 +37,11 @@ Timing time_whole_process(const std::vector<std::string>& arguments, int repeats
 // This process's peak resident set [kB] so far (getrusage RUSAGE_SELF).
 long peak_rss_self_kb();
 
+// Why the child reports its own peak: the kernel's ru_maxrss of a child (wait4) includes the
+// RSS the child inherited from this process at fork (Linux keeps the high-water mark across
+// exec), so a benchmark with a large parent would report the parent's size. The rotbeam program
+// calls this first thing in main: when ROTBEAM_PEAK_RSS_FILE is set it writes its own VmHWM [kB]
+// (/proc/self/status, a fresh mm after exec) to that file at exit.
+void report_peak_rss_at_exit();
+
 }  // namespace rotbeam::cli
