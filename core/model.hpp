@@ -159,6 +159,9 @@ struct Discretization {
     std::string update = "multiplicative";     // multiplicative | additive
     bool rescale = true;
     std::string mass_rule = "consistent";      // consistent | midpoint | lumped
+    // Mixed formulation with Wiener–Milenković: `plain` (seed 002 as published; singular at
+    // φ = 2π) or `continuous` (GXBeam's continuous rescaling map, wm_continuous.hpp).
+    std::string wm_map = "plain";
 };
 
 struct SolverSettings {

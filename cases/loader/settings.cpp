@@ -212,7 +212,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     const std::string k = "discretization";
     r.expect_map(n, k,
                  {"formulation", "rotation", "order", "quadrature", "quadrature_points",
-                  "interpolation", "update", "rescale", "mass_rule"});
+                  "interpolation", "update", "rescale", "mass_rule", "wm_map"});
     Discretization& d = model.discretization;
     if (n["formulation"])
         d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
@@ -231,6 +231,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     if (n["update"]) d.update = r.choice(n["update"], k + ".update", kUpdates);
     if (n["rescale"]) d.rescale = r.boolean(n["rescale"], k + ".rescale");
     if (n["mass_rule"]) d.mass_rule = r.choice(n["mass_rule"], k + ".mass_rule", kMassRules);
+    if (n["wm_map"]) d.wm_map = r.choice(n["wm_map"], k + ".wm_map", {"plain", "continuous"});
 }
 
 void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {

@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/registry.hpp"
 
 namespace rotbeam {
@@ -28,6 +29,12 @@ std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
                 return std::make_unique<form::DisplacementStatics<P>>(model);
             }
             if (d.formulation == "mixed") {
+                if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
+                    if (d.wm_map == "continuous") {
+                        return std::make_unique<
+                            form::MixedStatics<param::WienerMilenkovicContinuous>>(model);
+                    }
+                }
                 if constexpr (kMixedAvailable<P>) {
                     return std::make_unique<form::MixedStatics<P>>(model);
                 } else {

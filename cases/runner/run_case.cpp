@@ -52,6 +52,7 @@ nlohmann::json result_header(const RunRequest& request) {
              {{"interpolation", d.interpolation},
               {"update", d.update},
               {"rescale", d.rescale},
+              {"wm_map", d.wm_map},
               {"quadrature", quadrature_name(d.quadrature)},
               {"quadrature_points", d.quadrature_points},
               {"mass_rule", d.mass_rule},

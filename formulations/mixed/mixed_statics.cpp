@@ -2,6 +2,7 @@
 // Milenković and Rodrigues (seed 002, Q⁻¹ of Eq. 25) and the rotation vector (issue 8: the material
 // tangent inverse dexp⁻¹ of rotation_vector.hpp Eq. V4 in place of Q⁻¹ in Eq. 48).
 #include "formulations/mixed/mixed_statics_impl.hpp"
+#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -11,5 +12,6 @@ namespace rotbeam::form {
 template class MixedStatics<param::WienerMilenkovic>;
 template class MixedStatics<param::Rodrigues>;
 template class MixedStatics<param::RotationVector>;
+template class MixedStatics<param::WienerMilenkovicContinuous>;  // GXBeam's continuous rescale
 
 }  // namespace rotbeam::form

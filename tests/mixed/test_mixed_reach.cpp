@@ -9,7 +9,9 @@
 
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rotation_vector.hpp"
+#include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -25,7 +27,8 @@ NewtonSettings reach_settings() {
     return s;
 }
 
-double tip_error(const form::MixedStatics<param::RotationVector>& problem, double lambda) {
+template <class P>
+double tip_error(const form::MixedStatics<P>& problem, double lambda) {
     const Vec3 u = problem.point_state(1).displacement;
     return (u - test::rollup_exact_tip(lambda)).norm() / test::kRollupLength;
 }
@@ -36,8 +39,9 @@ struct Reach {
 };
 
 // Load steps of 0.1 from 0.1 to `lambda_end`; the driver cuts a failing step up to 8 times.
+template <class P>
 Reach rollup_reach(int elements, double lambda_end) {
-    form::MixedStatics<param::RotationVector> problem(test::rollup_model(elements));
+    form::MixedStatics<P> problem(test::rollup_model(elements));
     std::vector<double> loads;
     for (int k = 1; k <= static_cast<int>(std::lround(10.0 * lambda_end)); ++k) {
         loads.push_back(0.1 * k);
@@ -46,7 +50,7 @@ Reach rollup_reach(int elements, double lambda_end) {
     r.outcome = run_static(problem, loads, reach_settings(), [&](const StepRecord& step) {
         r.worst_error = std::max(r.worst_error, tip_error(problem, step.load_factor));
     });
-    BOOST_TEST_MESSAGE("rotation-vector, N = " << elements << ": " << r.outcome.status
+    BOOST_TEST_MESSAGE(P::kName << ", N = " << elements << ": " << r.outcome.status
                                                << ", last λ = "
                                                << r.outcome.last_converged_load_factor
                                                << ", worst ‖Δu‖/L = " << r.worst_error << "; "
@@ -88,13 +92,27 @@ BOOST_AUTO_TEST_CASE(rotation_vector_rollup_converges_with_order_two) {
 // within the guard of 2π (k(2i + 1) = 10240 has no solution with 2i + 1 odd > 1 and k ≤ 40), so
 // every step converges and the continuation passes 2π and reaches 4π.
 BOOST_AUTO_TEST_CASE(rotation_vector_rollup_reaches_lambda_four_within_1e_4) {
-    const Reach r = rollup_reach(256, 4.0);
+    const Reach r = rollup_reach<param::RotationVector>(256, 4.0);
     BOOST_TEST_REQUIRE((r.outcome.status == SolveStatus::converged));
     BOOST_TEST(r.outcome.last_converged_load_factor == 4.0, boost::test_tools::tolerance(1e-12));
     BOOST_TEST(r.outcome.steps.size() == 40u);
     // 256 elements: the midpoint-rule error ≈ 3.8e-6 at λ = 1.6 grows ∝ λ² at most.
     BOOST_TEST(r.worst_error <= 1e-4);
     BOOST_TEST(r.worst_error > 1e-7);  // the measurement is not vacuous (an O(ΔL²) error remains)
+}
+
+// Plain WM stops at its fold below λ = 2 (docs: λ*(256) ≈ 1.990); with GXBeam's continuous map
+// the unknowns pass |θ| = 4 (φ = π) and 8 (φ = 2π) and the continuation is measured to λ = 4.
+BOOST_AUTO_TEST_CASE(plain_wm_stops_before_lambda_two_and_continuous_wm_reaches_lambda_four) {
+    const Reach plain = rollup_reach<param::WienerMilenkovic>(256, 4.0);
+    BOOST_TEST((plain.outcome.status == SolveStatus::diverged ||
+                plain.outcome.status == SolveStatus::singular));
+    BOOST_TEST(plain.outcome.last_converged_load_factor < 2.0);
+    BOOST_TEST(plain.worst_error <= 1e-4);
+    const Reach continuous = rollup_reach<param::WienerMilenkovicContinuous>(256, 4.0);
+    BOOST_TEST_REQUIRE((continuous.outcome.status == SolveStatus::converged));
+    BOOST_TEST(continuous.outcome.steps.size() == 40u);
+    BOOST_TEST(continuous.worst_error <= 1e-4);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
