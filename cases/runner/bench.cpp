@@ -15,6 +15,8 @@ namespace {
 // Above this single-run time a candidate's larger neighbours are not tried (the search stays in
 // seconds per combination; a discretization this slow cannot win against the 8 ms targets).
 constexpr double kSlowCandidateSeconds = 1.5;
+// A converged answer this far off (‖Δu‖/L) is another equilibrium, not a coarse mesh.
+constexpr double kOtherEquilibrium = 1e-2;
 // Time budgets for "best accuracy reached within t" when the target is unreachable.
 constexpr double kBudgets[] = {0.01, 0.1, 1.0};
 
@@ -112,6 +114,13 @@ std::string unreachable_reason(const std::vector<Candidate>& tried, double accur
     }
     const double order = fit_order(n, e, 1e-14);
     const int best = floor_index(e);
+    if (e[static_cast<size_t>(best)] > kOtherEquilibrium) {
+        std::ostringstream s;
+        s.precision(2);
+        s << "every converged discretization is on another equilibrium (best error "
+          << e[static_cast<size_t>(best)] << "): the load path crosses the singular angle";
+        return s.str();
+    }
     std::ostringstream s;
     s.precision(2);
     s << "best " << e[static_cast<size_t>(best)] << " at " << n[static_cast<size_t>(best)]

@@ -21,23 +21,23 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
 }
 
 void run_named_study(const std::string& name, const StudyOptions& o) {
-    std::filesystem::create_directories(o.out_dir);
-    bool found = false;
+    bool found = name == "all";
+    for (const auto& entry : static_studies()) found = found || entry.first == name;
+    if (!found) {
+        std::string names = "rotations";
+        for (const auto& entry : static_studies()) names += ", " + entry.first;
+        throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
+                         ", all)");
+    }
+    std::filesystem::create_directories(o.out_dir);  // only for a valid study: no stray output
     for (const auto& [study, function] : static_studies()) {
         if (name != "all" && name != study) continue;
-        found = true;
         const auto start = std::chrono::steady_clock::now();
         function(o);
         std::cout << "study " << study << ": "
                   << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
                   << " s → " << (std::filesystem::path(o.out_dir) / ("study-" + study + ".md")).string()
                   << "\n";
-    }
-    if (!found) {
-        std::string names = "rotations";
-        for (const auto& entry : static_studies()) names += ", " + entry.first;
-        throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
-                         ", all)");
     }
 }
 
