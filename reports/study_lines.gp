@@ -4,7 +4,7 @@
 # labelled hlabel).
 set terminal pngcairo size 1000,600 enhanced font ",10"
 set output outbase.'.png'
-if (logx eq '1') { set logscale x }
+if (logx eq '1') { set logscale x; set format x "10^{%L}" }
 if (logy eq '1') { set logscale y; set format y "10^{%L}" }
 set xlabel xlabel
 set ylabel ylabel

@@ -113,14 +113,15 @@ std::string path_data(const StudyOptions& o, const std::string& name, const Path
 void path_plots(const StudyOptions& o, const PathCase& c, const std::vector<std::string>& files,
                 const std::vector<std::string>& titles, nlohmann::json& figures) {
     const std::string xlabel = c.angle_unit == "λ" ? "load factor λ (tip rotation λπ rad)"
-                                                   : "κL (tip rotation angle) [rad]";
+                                                   : "load factor κL [rad] (the tip angle for "
+                                                     "the isotropic helix)";
     const std::string base = "singularity-" + c.key;
     plot("study_lines.gp",
          {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
           {"ycol", "2"}, {"xlabel", xlabel}, {"ylabel", "tip error ‖Δu‖/L [-]"},
           {"plottitle", c.title + ": error along the path (every converged step)"},
           {"outbase", out_path(o, base + "-error")}, {"logx", "0"}, {"logy", "1"},
-          {"hline", sci(kWrongBranchTolerance)}, {"hlabel", "wrong-branch tolerance"}});
+          {"hline", sci(kWrongBranchTolerance)}, {"hlabel", "accuracy tolerance (wrong branch / lost accuracy)"}});
     plot("study_lines.gp",
          {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
           {"ycol", "3"}, {"xlabel", xlabel}, {"ylabel", "Newton iterations per reported step"},
