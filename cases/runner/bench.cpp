@@ -31,14 +31,14 @@ std::vector<std::string> overrides_for(const BenchTarget& t, const GridPoint& g,
                                        const Combination& c) {
     std::vector<std::string> o = t.overrides;
     const std::vector<std::string> own = {"analysis.load_factors=[" + number(t.load_factor) + "]",
-                                  "analysis.substeps=" + std::to_string(g.substeps)};
+                                          "analysis.substeps=" + std::to_string(g.substeps)};
     o.insert(o.end(), own.begin(), own.end());
-    if (c.formulation == "displacement") o.push_back("discretization.order=" + std::to_string(g.order));
+    if (c.formulation == "displacement")
+        o.push_back("discretization.order=" + std::to_string(g.order));
     return o;
 }
 
-double target_error(const nlohmann::json& step, double length,
-                    const nlohmann::json& reference) {
+double target_error(const nlohmann::json& step, double length, const nlohmann::json& reference) {
     if (reference.is_null()) return rollup_tip_error(step, length);
     const Vec3 u_ref = point_displacement(reference["steps"].back());
     return reference_tip_error(step, reference, u_ref.norm());
@@ -58,26 +58,32 @@ Candidate try_candidate(const BenchTarget& t, const Combination& c, const GridPo
     const double length = member_length(build_model(spec));
     Candidate k;
     k.grid = g;
-    const Timing timing = time_in_process([&] {
-        const nlohmann::json r = run_spec(spec);
-        k.status = r.value("status", "error");
-        k.message = r.value("message", "");
-        k.dofs = r.value("dofs", 0);
-        k.iterations = total_newton_iterations(r);
-        if (k.status == "converged" && converged_steps_exist(r)) {
-            k.error = target_error(r["steps"].back(), length, reference);
-        }
-    }, 1);
+    const Timing timing = time_in_process(
+        [&] {
+            const nlohmann::json r = run_spec(spec);
+            k.status = r.value("status", "error");
+            k.message = r.value("message", "");
+            k.dofs = r.value("dofs", 0);
+            k.iterations = total_newton_iterations(r);
+            if (k.status == "converged" && converged_steps_exist(r)) {
+                k.error = target_error(r["steps"].back(), length, reference);
+            }
+        },
+        1);
     k.seconds = timing.median_seconds;
     k.reached = std::isfinite(k.error) && k.error <= t.accuracy;
     return k;
 }
 
 nlohmann::json candidate_json(const Candidate& k) {
-    return {{"elements", k.grid.elements}, {"order", k.grid.order},
-            {"substeps", k.grid.substeps},  {"status", k.status},
-            {"seconds", k.seconds},         {"error", std::isfinite(k.error) ? nlohmann::json(k.error) : nlohmann::json()},
-            {"dofs", k.dofs},               {"newton_iterations", k.iterations},
+    return {{"elements", k.grid.elements},
+            {"order", k.grid.order},
+            {"substeps", k.grid.substeps},
+            {"status", k.status},
+            {"seconds", k.seconds},
+            {"error", std::isfinite(k.error) ? nlohmann::json(k.error) : nlohmann::json()},
+            {"dofs", k.dofs},
+            {"newton_iterations", k.iterations},
             {"reached", k.reached}};
 }
 
@@ -128,8 +134,8 @@ std::string unreachable_reason(const std::vector<Candidate>& tried, double accur
     if (std::isfinite(order) && order > 0.0) {
         const double needed = n[static_cast<size_t>(best)] *
                               std::pow(e[static_cast<size_t>(best)] / accuracy, 1.0 / order);
-        s << "; observed order " << order << " in unknowns, so " << accuracy << " needs ~"
-          << needed << " unknowns (beyond the searched grid and the time budget)";
+        s << "; observed order " << order << " in unknowns, so " << accuracy << " needs ~" << needed
+          << " unknowns (beyond the searched grid and the time budget)";
     }
     return s.str();
 }
@@ -141,8 +147,9 @@ nlohmann::json best_per_budget(const std::vector<Candidate>& tried) {
         for (const Candidate& k : tried) {
             if (k.seconds <= budget && std::isfinite(k.error) && !(k.error >= best)) best = k.error;
         }
-        out.push_back({{"budget_seconds", budget},
-                       {"best_error", std::isfinite(best) ? nlohmann::json(best) : nlohmann::json()}});
+        out.push_back(
+            {{"budget_seconds", budget},
+             {"best_error", std::isfinite(best) ? nlohmann::json(best) : nlohmann::json()}});
     }
     return out;
 }
@@ -156,7 +163,12 @@ std::vector<BenchTarget> bench_targets() {
     return {{"rollup-0.4", "cantilever-moment", 0.4, 1e-9, rollup, 0.0, {}},
             {"rollup-1.6", "cantilever-moment", 1.6, 1e-9, rollup, 0.0, {}},
             {"rollup-2.0", "cantilever-moment", 2.0, 1e-9, rollup, 0.008, {}},
-            {"bend-45-600", "bend-45", 600.0, 1e-6, "‖Δu_tip‖/‖u_ref‖ vs continuum", 0.008,
+            {"bend-45-600",
+             "bend-45",
+             600.0,
+             1e-6,
+             "‖Δu_tip‖/‖u_ref‖ vs continuum",
+             0.008,
              {kExactBendTip}}};
 }
 
@@ -166,7 +178,8 @@ std::vector<BenchTarget> bench_targets() {
 std::vector<GridPoint> bench_grid(const std::string& formulation, bool quick) {
     std::vector<GridPoint> grid;
     if (formulation == "displacement") {
-        const std::vector<int> elements = quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
+        const std::vector<int> elements =
+            quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
         const std::vector<int> orders =
             quick ? std::vector<int>{8, 10, 12, 14} : std::vector<int>{6, 8, 10, 12, 14, 16};
         for (int n : elements)
@@ -185,9 +198,11 @@ namespace {
 
 std::vector<std::string> child_arguments(const BenchTarget& t, const Combination& c,
                                          const GridPoint& g) {
-    std::vector<std::string> a = {"run", resolve_case_path(t.case_name), "--formulation",
-                                  c.formulation, "--rotation", c.rotation, "--elements",
-                                  std::to_string(g.elements), "--quiet"};
+    std::vector<std::string> a = {"run",           resolve_case_path(t.case_name),
+                                  "--formulation", c.formulation,
+                                  "--rotation",    c.rotation,
+                                  "--elements",    std::to_string(g.elements),
+                                  "--quiet"};
     for (const std::string& o : overrides_for(t, g, c)) {
         a.push_back("--set");
         a.push_back(o);
@@ -219,8 +234,10 @@ const Candidate& pick_winner(const BenchTarget& t, const Combination& c,
 nlohmann::json bench_combination(const BenchTarget& t, const Combination& c,
                                  const nlohmann::json& reference, bool quick, int repeats) {
     const std::vector<Candidate> tried = search(t, c, quick, reference);
-    nlohmann::json out = {{"target", t.name}, {"formulation", c.formulation},
-                          {"rotation", c.rotation}, {"accuracy_target", t.accuracy}};
+    nlohmann::json out = {{"target", t.name},
+                          {"formulation", c.formulation},
+                          {"rotation", c.rotation},
+                          {"accuracy_target", t.accuracy}};
     out["candidates"] = nlohmann::json::array();
     for (const Candidate& k : tried) out["candidates"].push_back(candidate_json(k));
     if (!tried.empty() && tried.front().status == "unavailable") {

@@ -18,9 +18,9 @@ struct BenchTarget {
     std::string name;       // e.g. "rollup-2.0"
     std::string case_name;  // catalog case
     double load_factor = 0.0;
-    double accuracy = 0.0;  // target error
-    std::string measure;    // how the error is scaled (for the table)
-    double target_seconds = 0.0;  // issue 13 item 2 (0: none)
+    double accuracy = 0.0;               // target error
+    std::string measure;                 // how the error is scaled (for the table)
+    double target_seconds = 0.0;         // issue 13 item 2 (0: none)
     std::vector<std::string> overrides;  // applied to the case (and to its reference)
 };
 

@@ -81,7 +81,8 @@ void print_row(const nlohmann::json& r, std::ostream& os) {
     if (status != "reached") {
         os << status << ": " << r.value("reason", "") << "\n";
         if (r.contains("best_error_per_budget")) {
-            os << "  " << std::setw(30) << "" << "best error within";
+            os << "  " << std::setw(30) << ""
+               << "best error within";
             for (const auto& b : r["best_error_per_budget"]) {
                 os << "  " << ms(b["budget_seconds"].get<double>()) << " ms: "
                    << (b["best_error"].is_null() ? std::string("—")
@@ -94,10 +95,10 @@ void print_row(const nlohmann::json& r, std::ostream& os) {
     const auto& w = r["winner"];
     os << std::right << std::setw(9) << ms(r["whole_process_seconds"].get<double>()) << std::setw(9)
        << ms(r["in_process_seconds"].get<double>()) << std::setw(10)
-       << sci(w["error"].get<double>()) << std::setw(5) << w["elements"].get<int>()
-       << std::setw(4) << w["order"].get<int>() << std::setw(4) << w["substeps"].get<int>()
-       << std::setw(7) << w["dofs"].get<int>() << std::setw(6) << w["newton_iterations"].get<int>()
-       << std::setw(8) << r["peak_rss_kb"].get<long>() << "\n";
+       << sci(w["error"].get<double>()) << std::setw(5) << w["elements"].get<int>() << std::setw(4)
+       << w["order"].get<int>() << std::setw(4) << w["substeps"].get<int>() << std::setw(7)
+       << w["dofs"].get<int>() << std::setw(6) << w["newton_iterations"].get<int>() << std::setw(8)
+       << r["peak_rss_kb"].get<long>() << "\n";
 }
 
 // The best whole-process time among the combinations that reached a target.
@@ -115,17 +116,70 @@ void print_target_summary(const BenchTarget& t, const nlohmann::json& rows, std:
     os << "  best: " << who;
     if (std::isfinite(best)) os << " " << ms(best) << " ms";
     if (t.target_seconds > 0.0) {
-        os << "   target ≤ " << ms(t.target_seconds) << " ms: "
-           << (best <= t.target_seconds ? "met" : "MISSED");
+        os << "   target ≤ " << ms(t.target_seconds)
+           << " ms: " << (best <= t.target_seconds ? "met" : "MISSED");
     }
     os << "\n\n";
+}
+
+// One target for every combination: the table on stdout, the rows as JSON (null when the
+// target's reference cannot be computed).
+nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats) {
+    const nlohmann::json reference =
+        t.case_name == "bend-45"
+            ? continuum_reference(t.case_name, {kExactBendTip, "analysis.load_factors=[600]"})
+            : nlohmann::json();
+    if (!reference.is_null() &&
+        (reference.value("status", "") != "converged" || reference["steps"].empty())) {
+        std::cout << t.name << ": no continuum reference (" << reference.value("message", "")
+                  << "); skipped\n\n";
+        return nlohmann::json();
+    }
+    std::cout << t.name << " (" << t.measure << " ≤ " << sci(t.accuracy, 0) << ")\n  " << std::left
+              << std::setw(30) << "combination" << std::right << std::setw(9) << "whole ms"
+              << std::setw(9) << "in ms" << std::setw(10) << "error" << std::setw(5) << "N"
+              << std::setw(4) << "p" << std::setw(4) << "ss" << std::setw(7) << "dofs"
+              << std::setw(6) << "iter" << std::setw(8) << "RSS kB"
+              << "\n";
+    nlohmann::json rows = nlohmann::json::array();
+    for (const Combination& c : all_combinations(false)) {
+        rows.push_back(bench_combination(t, c, reference, quick, repeats));
+        print_row(rows.back(), std::cout);
+        std::cout << std::flush;
+    }
+    print_target_summary(t, rows, std::cout);
+    return {{"name", t.name},
+            {"case", t.case_name},
+            {"load_factor", t.load_factor},
+            {"accuracy", t.accuracy},
+            {"target_seconds", t.target_seconds},
+            {"results", rows}};
+}
+
+void write_bench_outputs(const ParsedArguments& a, const nlohmann::json& out) {
+    const std::string file = a.value("json").value_or("out/bench.json");
+    fs::create_directories(fs::path(file).parent_path().empty() ? fs::path(".")
+                                                                : fs::path(file).parent_path());
+    write_file_atomically(file, out.dump(1) + "\n");
+    std::cout << "wrote " << file << "\n";
+    if (a.has("history")) {
+        const fs::path h =
+            fs::path(ROTBEAM_REPORTS_DIR) / "history" /
+            (utc("%Y-%m-%d") + "-" + out["machine"]["tag"].get<std::string>() + ".json");
+        fs::create_directories(h.parent_path());
+        write_file_atomically(h.string(), out.dump(1) + "\n");
+        std::cout << "wrote " << h.string() << "\n";
+    }
 }
 
 }  // namespace
 
 int command_bench(const Args& args) {
     const CommandSpec spec{
-        "bench", "", 0, 0,
+        "bench",
+        "",
+        0,
+        0,
         "Benchmark the static targets (issue 13): for every parameterization × formulation the "
         "cheapest discretization reaching the target accuracy (roll-up λ = 0.4, 1.6, 2.0 to "
         "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
@@ -141,8 +195,11 @@ int command_bench(const Args& args) {
     }
     const bool quick = a.has("quick");
     const int repeats = a.positive_int("bench", "repeats").value_or(quick ? 5 : 11);
-    nlohmann::json out = {{"version", kGitDescribe}, {"date", utc("%Y-%m-%d %H:%M UTC")},
-                          {"machine", machine_json()}, {"quick", quick}, {"repeats", repeats}};
+    nlohmann::json out = {{"version", kGitDescribe},
+                          {"date", utc("%Y-%m-%d %H:%M UTC")},
+                          {"machine", machine_json()},
+                          {"quick", quick},
+                          {"repeats", repeats}};
     out["startup"] = bench_startup(repeats);
     std::cout << "start-up (read + validate cantilever-moment): whole process "
               << ms(out["startup"]["whole_process_seconds"].get<double>()) << " ms (bare process "
@@ -150,45 +207,10 @@ int command_bench(const Args& args) {
               << ms(out["startup"]["in_process_seconds"].get<double>()) << " ms; target ≤ 2 ms\n\n";
     out["targets"] = nlohmann::json::array();
     for (const BenchTarget& t : bench_targets()) {
-        const nlohmann::json reference =
-            t.case_name == "bend-45"
-                ? continuum_reference(t.case_name, {kExactBendTip, "analysis.load_factors=[600]"})
-                : nlohmann::json();
-        if (!reference.is_null() && (reference.value("status", "") != "converged" ||
-                                     reference["steps"].empty())) {
-            std::cout << t.name << ": no continuum reference (" << reference.value("message", "")
-                      << "); skipped\n\n";
-            continue;
-        }
-        std::cout << t.name << " (" << t.measure << " ≤ " << sci(t.accuracy, 0) << ")\n  "
-                  << std::left << std::setw(30) << "combination" << std::right << std::setw(9)
-                  << "whole ms" << std::setw(9) << "in ms" << std::setw(10) << "error"
-                  << std::setw(5) << "N" << std::setw(4) << "p" << std::setw(4) << "ss"
-                  << std::setw(7) << "dofs" << std::setw(6) << "iter" << std::setw(8) << "RSS kB"
-                  << "\n";
-        nlohmann::json rows = nlohmann::json::array();
-        for (const Combination& c : all_combinations(false)) {
-            rows.push_back(bench_combination(t, c, reference, quick, repeats));
-            print_row(rows.back(), std::cout);
-            std::cout << std::flush;
-        }
-        print_target_summary(t, rows, std::cout);
-        out["targets"].push_back({{"name", t.name}, {"case", t.case_name},
-                                  {"load_factor", t.load_factor}, {"accuracy", t.accuracy},
-                                  {"target_seconds", t.target_seconds}, {"results", rows}});
+        nlohmann::json target = bench_target(t, quick, repeats);
+        if (!target.is_null()) out["targets"].push_back(std::move(target));
     }
-    const std::string file = a.value("json").value_or("out/bench.json");
-    fs::create_directories(fs::path(file).parent_path().empty() ? fs::path(".")
-                                                                 : fs::path(file).parent_path());
-    write_file_atomically(file, out.dump(1) + "\n");
-    std::cout << "wrote " << file << "\n";
-    if (a.has("history")) {
-        const fs::path h = fs::path(ROTBEAM_REPORTS_DIR) / "history" /
-                           (utc("%Y-%m-%d") + "-" + out["machine"]["tag"].get<std::string>() + ".json");
-        fs::create_directories(h.parent_path());
-        write_file_atomically(h.string(), out.dump(1) + "\n");
-        std::cout << "wrote " << h.string() << "\n";
-    }
+    write_bench_outputs(a, out);
     return 0;
 }
 

@@ -1,7 +1,7 @@
 // The registry of the static studies (studies.hpp) behind `rotbeam study NAME` and the suite.
+#include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <atomic>
 #include <iostream>
 #include <thread>
 
@@ -36,7 +36,8 @@ void run_named_study(const std::string& name, const StudyOptions& o) {
         function(o);
         std::cout << "study " << study << ": "
                   << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                  << " s → " << (std::filesystem::path(o.out_dir) / ("study-" + study + ".md")).string()
+                  << " s → "
+                  << (std::filesystem::path(o.out_dir) / ("study-" + study + ".md")).string()
                   << "\n";
     }
 }

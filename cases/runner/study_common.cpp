@@ -60,8 +60,11 @@ nlohmann::json run_spec(const RunSpec& spec) {
         const Model model = build_model(spec);
         return run_case(RunRequest{spec.case_name, model, false});
     } catch (const InputError& e) {
-        return {{"status", "unavailable"}, {"message", e.what()},
-                {"steps", nlohmann::json::array()}, {"dofs", 0}, {"wall_seconds", 0.0}};
+        return {{"status", "unavailable"},
+                {"message", e.what()},
+                {"steps", nlohmann::json::array()},
+                {"dofs", 0},
+                {"wall_seconds", 0.0}};
     }
 }
 

@@ -92,6 +92,6 @@ void write_text(const StudyOptions& o, const std::string& relative_path, const s
 std::string out_path(const StudyOptions& o, const std::string& relative_path);
 bool plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
 std::string sci(double value, int digits = 2);  // "—" for NaN
-std::string quoted(const std::string& s);        // for gnuplot data-file titles
+std::string quoted(const std::string& s);       // for gnuplot data-file titles
 
 }  // namespace rotbeam::cli

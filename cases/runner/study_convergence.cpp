@@ -8,10 +8,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "study_common.hpp"
-#include "study_math.hpp"
 #include "bench.hpp"
 #include "studies.hpp"
+#include "study_common.hpp"
+#include "study_math.hpp"
 
 namespace rotbeam::cli {
 
@@ -28,18 +28,28 @@ struct ConvergenceCase {
 };
 
 std::vector<ConvergenceCase> convergence_cases() {
-    return {{"rollup", "cantilever-moment", "Roll-up, λ = 0.8 (exact solution)",
-             "tip error ‖Δu‖/L [-]", {"analysis.load_factors=[0.8]", "analysis.substeps=2"}, true},
-            {"bend", "bend-45", "45° bend, P = 600 lbf (continuum reference)",
-             "tip error ‖Δu‖/‖u_{ref}‖ [-]",
-             {kExactBendTip, "analysis.load_factors=[600]", "analysis.substeps=10"}, false},
-            {"helix", "helix-precessing", "Precessing helix, κL = 2.5 (continuum reference)",
+    return {{"rollup",
+             "cantilever-moment",
+             "Roll-up, λ = 0.8 (exact solution)",
              "tip error ‖Δu‖/L [-]",
-             {"analysis.load_factors=[2.5]", "analysis.substeps=10"}, false}};
+             {"analysis.load_factors=[0.8]", "analysis.substeps=2"},
+             true},
+            {"bend",
+             "bend-45",
+             "45° bend, P = 600 lbf (continuum reference)",
+             "tip error ‖Δu‖/‖u_{ref}‖ [-]",
+             {kExactBendTip, "analysis.load_factors=[600]", "analysis.substeps=10"},
+             false},
+            {"helix",
+             "helix-precessing",
+             "Precessing helix, κL = 2.5 (continuum reference)",
+             "tip error ‖Δu‖/L [-]",
+             {"analysis.load_factors=[2.5]", "analysis.substeps=10"},
+             false}};
 }
 
 struct Refinement {
-    std::string name;        // h-p1, h-p2, p, h
+    std::string name;                   // h-p1, h-p2, p, h
     std::vector<int> elements, orders;  // parallel lists
 };
 
@@ -48,12 +58,12 @@ std::vector<Refinement> refinements(const std::string& formulation, bool quick) 
         return Refinement{"h-p" + std::to_string(order), n, std::vector<int>(n.size(), order)};
     };
     if (formulation == "mixed") {
-        const std::vector<int> n = quick ? std::vector<int>{4, 8, 16, 32}
-                                         : std::vector<int>{4, 8, 16, 32, 64, 128};
+        const std::vector<int> n =
+            quick ? std::vector<int>{4, 8, 16, 32} : std::vector<int>{4, 8, 16, 32, 64, 128};
         return {Refinement{"h", n, std::vector<int>(n.size(), 1)}};
     }
-    const std::vector<int> p = quick ? std::vector<int>{2, 4, 6, 8}
-                                     : std::vector<int>{2, 3, 4, 6, 8, 10, 12};
+    const std::vector<int> p =
+        quick ? std::vector<int>{2, 4, 6, 8} : std::vector<int>{2, 3, 4, 6, 8, 10, 12};
     return {h(1, quick ? std::vector<int>{2, 4, 8, 16} : std::vector<int>{2, 4, 8, 16, 32, 64}),
             h(2, quick ? std::vector<int>{1, 2, 4, 8} : std::vector<int>{1, 2, 4, 8, 16, 32}),
             Refinement{"p", std::vector<int>(p.size(), 2), p}};
@@ -61,7 +71,8 @@ std::vector<Refinement> refinements(const std::string& formulation, bool quick) 
 
 double step_error(const ConvergenceCase& c, const nlohmann::json& result, double length,
                   const nlohmann::json& reference) {
-    if (result.value("status", "") != "converged" || !converged_steps_exist(result)) return kNoValue;
+    if (result.value("status", "") != "converged" || !converged_steps_exist(result))
+        return kNoValue;
     const nlohmann::json& step = result["steps"].back();
     if (c.exact_rollup) return rollup_tip_error(step, length);
     const double scale =
@@ -120,16 +131,20 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
             const bool p_series = r.name == "p";
             const double ls = fit_order(p_series ? s.dofs : s.elements, s.error, kFitFloor);
             const double tail = tail_order(p_series ? s.dofs : s.elements, s.error, 3, kFitFloor);
-            out["series"].push_back({{"label", s.label}, {"elements", s.elements},
-                                     {"dofs", s.dofs}, {"error", s.error}, {"order_ls", ls},
-                                     {"order_tail", tail}, {"note", note}});
+            out["series"].push_back({{"label", s.label},
+                                     {"elements", s.elements},
+                                     {"dofs", s.dofs},
+                                     {"error", s.error},
+                                     {"order_ls", ls},
+                                     {"order_tail", tail},
+                                     {"note", note}});
             md << "| " << c.key << " | " << s.label << " | "
                << (s.error.empty() ? "—" : sci(s.error.front()) + " → " + sci(s.error.back()))
                << " | " << order_text(ls) << " | " << order_text(tail) << " | " << note << " |\n";
             if (s.error.empty()) continue;
-            const std::string file = write_series(o, "data/convergence_" + c.key + "_" +
-                                                         std::to_string(all_files.size()) + ".dat",
-                                                  s);
+            const std::string file = write_series(
+                o, "data/convergence_" + c.key + "_" + std::to_string(all_files.size()) + ".dat",
+                s);
             all_files.push_back(file);
             all_titles.push_back(s.label);
             if (!p_series) {
@@ -144,15 +159,18 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
         }
     }
     if (!std::isfinite(refy)) refx = 1.0, refd = 10.0, refy = 1e-2;
-    for (const auto& [x, files, titles] :
-         {std::tuple{"elements", h_files, h_titles}, std::tuple{"unknowns", all_files, all_titles}}) {
+    for (const auto& [x, files, titles] : {std::tuple{"elements", h_files, h_titles},
+                                           std::tuple{"unknowns", all_files, all_titles}}) {
         const std::string base = "convergence-" + c.key + "-" + x;
-        plot("study_convergence.gp",
-             {{"files", join_words(files)}, {"titles", join_words(titles)},
-              {"xcol", std::string(x) == "elements" ? "1" : "2"},
-              {"xlabel", std::string("number of ") + x}, {"ylabel", c.ylabel},
-              {"plottitle", c.title + ": error vs " + x}, {"outbase", out_path(o, base)},
-              {"refx", sci(std::string(x) == "elements" ? refx : refd, 6)}, {"refy", sci(refy, 6)}});
+        plot("study_convergence.gp", {{"files", join_words(files)},
+                                      {"titles", join_words(titles)},
+                                      {"xcol", std::string(x) == "elements" ? "1" : "2"},
+                                      {"xlabel", std::string("number of ") + x},
+                                      {"ylabel", c.ylabel},
+                                      {"plottitle", c.title + ": error vs " + x},
+                                      {"outbase", out_path(o, base)},
+                                      {"refx", sci(std::string(x) == "elements" ? refx : refd, 6)},
+                                      {"refy", sci(refy, 6)}});
         out["figures"].push_back(base + ".png");
     }
     return out;
@@ -162,8 +180,8 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
 
 nlohmann::json study_convergence(const StudyOptions& o) {
     std::ostringstream table;
-    nlohmann::json out = {{"study", "convergence"}, {"quick", o.quick},
-                          {"cases", nlohmann::json::array()}};
+    nlohmann::json out = {
+        {"study", "convergence"}, {"quick", o.quick}, {"cases", nlohmann::json::array()}};
     for (const ConvergenceCase& c : convergence_cases()) {
         out["cases"].push_back(convergence_case(o, c, table));
     }

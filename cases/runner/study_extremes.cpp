@@ -2,10 +2,11 @@
 // with full and reduced integration against the linear Timoshenko oracle (shear locking), and
 // loads down to 1e-10 of the benchmark's (the linear regime; exercises the small-angle branches).
 // The study function that assembles the parts is in study_extremes_newton.cpp.
+#include "study_extremes.hpp"
+
 #include <cmath>
 
 #include "core/oracles/timoshenko.hpp"
-#include "study_extremes.hpp"
 #include "studies.hpp"
 
 namespace rotbeam::cli {
@@ -22,7 +23,9 @@ constexpr double kDeflectionOverLength = 1e-6;
 struct SquareSection {
     double h, area, inertia, torsion;
     explicit SquareSection(double side)
-        : h(side), area(side * side), inertia(std::pow(side, 4) / 12.0),
+        : h(side),
+          area(side * side),
+          inertia(std::pow(side, 4) / 12.0),
           torsion(0.140577 * std::pow(side, 4)) {}
     std::vector<std::string> overrides() const {
         const std::string p = "sections.square.isotropic.";
@@ -72,8 +75,7 @@ std::vector<Variant> variants(bool quick, bool with_force_scale) {
 }
 
 // Relative tip-deflection error against Timoshenko (NaN on failure).
-double tip_error(const Variant& v, const SquareSection& s, double force,
-                 std::string& status) {
+double tip_error(const Variant& v, const SquareSection& s, double force, std::string& status) {
     std::vector<std::string> o = s.overrides();
     o.push_back("loads.tip-force.force=[0, 0, " + sci(force, 17) + "]");
     if (v.own_force_scale) o.push_back("solver.force_scale=" + sci(force, 17));
@@ -117,19 +119,25 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
         if (unavailable) continue;
         md << "| " << v.label() << " |" << row.str() << "\n";
         out.push_back({{"combination", v.label()}, {x_name, xs}, {"relative_error", errors}});
-        const std::string rel = "data/extremes_" + key + "_" + std::to_string(files.size()) + ".dat";
+        const std::string rel =
+            "data/extremes_" + key + "_" + std::to_string(files.size()) + ".dat";
         write_text(o, rel, data.str());
         files.push_back(out_path(o, rel));
         titles.push_back(v.label());
     }
     plot("study_lines.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-          {"ycol", "2"}, {"xlabel", x_name == "L/h" ? "slenderness L/h [-]" : "load scale [-]"},
+         {{"files", join_words(files)},
+          {"titles", join_words(titles)},
+          {"xcol", "1"},
+          {"ycol", "2"},
+          {"xlabel", x_name == "L/h" ? "slenderness L/h [-]" : "load scale [-]"},
           {"ylabel", "relative tip-deflection error vs Timoshenko [-]"},
           {"plottitle", x_name == "L/h"
                             ? "Tip-loaded cantilever, 8 elements: error vs slenderness"
                             : "Tip-loaded cantilever (L/h = 100), 8 elements: error vs load"},
-          {"outbase", out_path(o, "extremes-" + key)}, {"logx", "1"}, {"logy", "1"}});
+          {"outbase", out_path(o, "extremes-" + key)},
+          {"logx", "1"},
+          {"logy", "1"}});
     md << "\n![extremes-" << key << ".png](extremes-" << key << ".png)\n\n";
 }
 
@@ -140,30 +148,34 @@ nlohmann::json extremes_slenderness(const StudyOptions& o, std::ostringstream& m
         o.quick ? std::vector<double>{10, 1e3, 1e5} : std::vector<double>{10, 100, 1e3, 1e4, 1e5};
     md << "### Slenderness (shear locking)\n\nThe tip-loaded cantilever (L = 1 m, square h × h, 8 "
           "elements) from L/h = 10 to 1e5, the load scaled so the tip deflects 1e-6 L (linear "
-          "regime), against the Timoshenko tip deflection PL³/(3EI) + PL/(κGA). Full integration of "
+          "regime), against the Timoshenko tip deflection PL³/(3EI) + PL/(κGA). Full integration "
+          "of "
           "order-1 displacement elements locks (the error grows like (L/h)²); reduced integration "
           "and the mixed formulation do not.\n\n";
     nlohmann::json out = nlohmann::json::array();
-    sweep_table(o, "slenderness", ratios, "L/h", o.quick, false,
-                [](const Variant& v, double ratio, std::string& status) {
-                    const SquareSection s(kLength / ratio);
-                    const double force =
-                        kDeflectionOverLength * 3.0 * kE * s.inertia / std::pow(kLength, 2);
-                    return tip_error(v, s, force, status);
-                },
-                md, out);
+    sweep_table(
+        o, "slenderness", ratios, "L/h", o.quick, false,
+        [](const Variant& v, double ratio, std::string& status) {
+            const SquareSection s(kLength / ratio);
+            const double force =
+                kDeflectionOverLength * 3.0 * kE * s.inertia / std::pow(kLength, 2);
+            return tip_error(v, s, force, status);
+        },
+        md, out);
     return out;
 }
 
 nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md) {
-    const std::vector<double> scales = o.quick ? std::vector<double>{1e-10, 1e-5, 1.0}
-                                               : std::vector<double>{1e-10, 1e-8, 1e-6, 1e-4,
-                                                                     1e-2, 1.0};
+    const std::vector<double> scales =
+        o.quick ? std::vector<double>{1e-10, 1e-5, 1.0}
+                : std::vector<double>{1e-10, 1e-8, 1e-6, 1e-4, 1e-2, 1.0};
     md << "### Tiny loads\n\nThe catalog's tip-loaded cantilever (L/h = 100, tip force 1 N → "
           "δ ≈ 1.9e-3 L) with its load scaled by 1e-10 … 1: the relative error against Timoshenko "
-          "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise every "
+          "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise "
+          "every "
           "small-angle series branch); at scale 1 the geometric nonlinearity (δ/L)² ~ 4e-6 "
-          "appears. Finding: the displacement formulation returns the unloaded state as `converged` "
+          "appears. Finding: the displacement formulation returns the unloaded state as "
+          "`converged` "
           "(0 Newton iterations, error 1) once the load falls below ~1e-12 × 1e-4 EA = 2e-9 N "
           "(its force-scale floor, displacement_statics_setup.hpp); with solver.force_scale set "
           "to the load (`+force_scale`) the tiny loads are solved again, but loads ≥ 1e-4 then "
@@ -171,12 +183,13 @@ nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md
           "such a scale. No fixed force scale serves both ends; the mixed formulation, whose "
           "scaling follows the load, is accurate over the whole range.\n\n";
     nlohmann::json out = nlohmann::json::array();
-    sweep_table(o, "tiny-loads", scales, "scale", o.quick, true,
-                [](const Variant& v, double scale, std::string& status) {
-                    const SquareSection s(0.01);
-                    return tip_error(v, s, scale, status);
-                },
-                md, out);
+    sweep_table(
+        o, "tiny-loads", scales, "scale", o.quick, true,
+        [](const Variant& v, double scale, std::string& status) {
+            const SquareSection s(0.01);
+            return tip_error(v, s, scale, status);
+        },
+        md, out);
     return out;
 }
 

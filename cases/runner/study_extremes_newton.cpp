@@ -4,9 +4,9 @@
 // function that assembles the four parts.
 #include <cmath>
 
+#include "studies.hpp"
 #include "study_extremes.hpp"
 #include "study_math.hpp"
-#include "studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -47,7 +47,8 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
         data << "# lambda newton_iterations\n";
         bool unavailable = false;
         for (double lambda : lambdas) {
-            const RunSpec spec{"cantilever-moment", c,
+            const RunSpec spec{"cantilever-moment",
+                               c,
                                {"analysis.load_factors=[" + sci(lambda, 3) + "]",
                                 "analysis.substeps=1", "analysis.max_step_cuts=0"},
                                0};
@@ -60,7 +61,9 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
             const int it = total_newton_iterations(r);
             row << " " << (ok ? std::to_string(it) + " it, " + sci(e) : status) << " |";
             if (ok) data << lambda << " " << it << "\n";
-            out.push_back({{"combination", c.label()}, {"lambda", lambda}, {"status", status},
+            out.push_back({{"combination", c.label()},
+                           {"lambda", lambda},
+                           {"status", status},
                            {"newton_iterations", it},
                            {"error", ok ? nlohmann::json(e) : nlohmann::json()},
                            {"message", r.value("message", "")}});
@@ -73,11 +76,16 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
         titles.push_back(c.label());
     }
     plot("study_lines.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-          {"ycol", "2"}, {"xlabel", "load factor λ reached in one step"},
+         {{"files", join_words(files)},
+          {"titles", join_words(titles)},
+          {"xcol", "1"},
+          {"ycol", "2"},
+          {"xlabel", "load factor λ reached in one step"},
           {"ylabel", "Newton iterations (converged runs only)"},
           {"plottitle", "Roll-up in one load step, no step cutting: Newton iterations"},
-          {"outbase", out_path(o, "extremes-single-step")}, {"logx", "0"}, {"logy", "0"}});
+          {"outbase", out_path(o, "extremes-single-step")},
+          {"logx", "0"},
+          {"logy", "0"}});
     md << "\n![extremes-single-step.png](extremes-single-step.png)\n\n";
     return out;
 }
@@ -104,7 +112,8 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
         }
         const int f = floor_index(series.error);
         const size_t fi = static_cast<size_t>(std::max(f, 0));
-        const std::vector<double> n_before(series.elements.begin(), series.elements.begin() + fi + 1);
+        const std::vector<double> n_before(series.elements.begin(),
+                                           series.elements.begin() + fi + 1);
         const std::vector<double> e_before(series.error.begin(), series.error.begin() + fi + 1);
         const std::vector<double> n_after(series.elements.begin() + fi, series.elements.end());
         const std::vector<double> e_after(series.error.begin() + fi, series.error.end());
@@ -114,18 +123,26 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
            << (f >= 0 ? sci(series.error[fi]) : "—") << " | "
            << (f >= 0 ? std::to_string(static_cast<int>(series.elements[fi])) : "—") << " | "
            << sci(before, 2) << " | " << sci(after, 2) << " |\n";
-        out.push_back({{"series", s.label}, {"elements", series.elements},
-                       {"error", series.error}, {"floor_index", f}, {"order_before", before},
+        out.push_back({{"series", s.label},
+                       {"elements", series.elements},
+                       {"error", series.error},
+                       {"floor_index", f},
+                       {"order_before", before},
                        {"slope_after", after}});
-        files.push_back(write_series(o, "data/extremes_roundoff_" + std::to_string(files.size()) +
-                                            ".dat", series));
+        files.push_back(write_series(
+            o, "data/extremes_roundoff_" + std::to_string(files.size()) + ".dat", series));
         titles.push_back(s.label);
     }
-    plot("study_lines.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-          {"ycol", "4"}, {"xlabel", "elements N"}, {"ylabel", "tip error ‖Δu‖/L [-]"},
-          {"plottitle", "Roll-up λ = 0.8: refinement until round-off dominates"},
-          {"outbase", out_path(o, "extremes-round-off")}, {"logx", "1"}, {"logy", "1"}});
+    plot("study_lines.gp", {{"files", join_words(files)},
+                            {"titles", join_words(titles)},
+                            {"xcol", "1"},
+                            {"ycol", "4"},
+                            {"xlabel", "elements N"},
+                            {"ylabel", "tip error ‖Δu‖/L [-]"},
+                            {"plottitle", "Roll-up λ = 0.8: refinement until round-off dominates"},
+                            {"outbase", out_path(o, "extremes-round-off")},
+                            {"logx", "1"},
+                            {"logy", "1"}});
     md << "\n![extremes-round-off.png](extremes-round-off.png)\n\n";
     return out;
 }

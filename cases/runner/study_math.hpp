@@ -12,7 +12,8 @@ namespace rotbeam::cli {
 // Observed order of convergence from errors e_i at mesh sizes n_i (elements or unknowns):
 // −(least-squares slope of log e against log n) over the points with a finite e > floor.
 // NaN when fewer than two such points remain.
-double fit_order(const std::vector<double>& n, const std::vector<double>& error, double floor = 0.0);
+double fit_order(const std::vector<double>& n, const std::vector<double>& error,
+                 double floor = 0.0);
 
 // The asymptotic order over the last `points` usable points (same filtering as fit_order).
 double tail_order(const std::vector<double>& n, const std::vector<double>& error, int points,

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "studies.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
-#include "studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -117,16 +117,28 @@ void path_plots(const StudyOptions& o, const PathCase& c, const std::vector<std:
                                                      "the isotropic helix)";
     const std::string base = "singularity-" + c.key;
     plot("study_lines.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-          {"ycol", "2"}, {"xlabel", xlabel}, {"ylabel", "tip error ‖Δu‖/L [-]"},
+         {{"files", join_words(files)},
+          {"titles", join_words(titles)},
+          {"xcol", "1"},
+          {"ycol", "2"},
+          {"xlabel", xlabel},
+          {"ylabel", "tip error ‖Δu‖/L [-]"},
           {"plottitle", c.title + ": error along the path (every converged step)"},
-          {"outbase", out_path(o, base + "-error")}, {"logx", "0"}, {"logy", "1"},
-          {"hline", sci(kWrongBranchTolerance)}, {"hlabel", "accuracy tolerance (wrong branch / lost accuracy)"}});
-    plot("study_lines.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-          {"ycol", "3"}, {"xlabel", xlabel}, {"ylabel", "Newton iterations per reported step"},
-          {"plottitle", c.title + ": Newton iterations vs load"},
-          {"outbase", out_path(o, base + "-iterations")}, {"logx", "0"}, {"logy", "0"}});
+          {"outbase", out_path(o, base + "-error")},
+          {"logx", "0"},
+          {"logy", "1"},
+          {"hline", sci(kWrongBranchTolerance)},
+          {"hlabel", "accuracy tolerance (wrong branch / lost accuracy)"}});
+    plot("study_lines.gp", {{"files", join_words(files)},
+                            {"titles", join_words(titles)},
+                            {"xcol", "1"},
+                            {"ycol", "3"},
+                            {"xlabel", xlabel},
+                            {"ylabel", "Newton iterations per reported step"},
+                            {"plottitle", c.title + ": Newton iterations vs load"},
+                            {"outbase", out_path(o, base + "-iterations")},
+                            {"logx", "0"},
+                            {"logy", "0"}});
     figures.push_back(base + "-error.png");
     figures.push_back(base + "-iterations.png");
 }
@@ -134,28 +146,32 @@ void path_plots(const StudyOptions& o, const PathCase& c, const std::vector<std:
 nlohmann::json path_case(const StudyOptions& o, const PathCase& c, std::ostringstream& md) {
     const nlohmann::json reference =
         c.exact_rollup ? nlohmann::json() : continuum_reference(c.case_name, path_overrides(c));
-    nlohmann::json out = {{"case", c.key}, {"runs", nlohmann::json::array()},
-                          {"figures", nlohmann::json::array()}};
+    nlohmann::json out = {
+        {"case", c.key}, {"runs", nlohmann::json::array()}, {"figures", nlohmann::json::array()}};
     std::vector<std::string> files, titles;
     for (const Combination& comb : all_combinations(true)) {
         const PathRun p = run_path(c, comb, 0, reference);
         std::string message = p.message;
         if (message.size() > 110) message = message.substr(0, 107) + "...";
-        out["runs"].push_back({{"combination", comb.label()}, {"status", p.status},
+        out["runs"].push_back({{"combination", comb.label()},
+                               {"status", p.status},
                                {"reach_load_factor", p.reach.load_factor},
-                               {"reach_angle", p.reach_angle}, {"stopped", p.reach.stopped},
-                               {"max_error", p.max_error}, {"message", p.message}});
+                               {"reach_angle", p.reach_angle},
+                               {"stopped", p.reach.stopped},
+                               {"max_error", p.max_error},
+                               {"message", p.message}});
         if (p.status == "unavailable") {
             md << "| " << c.key << " | " << comb.label() << " | — | — | unavailable | — | "
                << message << " |\n";
             continue;
         }
-        md << "| " << c.key << " | " << comb.label() << " | " << fixed(p.reach.load_factor)
-           << " | " << fixed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
+        md << "| " << c.key << " | " << comb.label() << " | " << fixed(p.reach.load_factor) << " | "
+           << fixed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
            << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : message)
            << " |\n";
         if (p.lambda.empty()) continue;
-        files.push_back(path_data(o, "singularity_" + c.key + "_" + std::to_string(files.size()), p));
+        files.push_back(
+            path_data(o, "singularity_" + c.key + "_" + std::to_string(files.size()), p));
         titles.push_back(comb.label());
     }
     if (!files.empty()) path_plots(o, c, files, titles, out["figures"]);
@@ -183,7 +199,8 @@ double last_converged_factor(const std::string& message, double fallback) {
 nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md,
                                    nlohmann::json& figures) {
     const PathCase c = path_cases(true).front();
-    const std::vector<int> meshes = o.quick ? std::vector<int>{4, 16} : std::vector<int>{4, 8, 16, 32, 64};
+    const std::vector<int> meshes =
+        o.quick ? std::vector<int>{4, 16} : std::vector<int>{4, 8, 16, 32, 64};
     nlohmann::json out = nlohmann::json::array();
     std::vector<std::string> files, titles;
     md << "\n| mixed combination |";
@@ -210,8 +227,11 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
             data << n << " " << star << "\n";
             row << " " << fixed(star, 4) << (p.status == "converged" ? " (all)" : "") << ", "
                 << sci(max_error, 1) << " |";
-            out.push_back({{"combination", comb.label()}, {"elements", n}, {"lambda_star", star},
-                           {"status", p.status}, {"max_error", max_error}});
+            out.push_back({{"combination", comb.label()},
+                           {"elements", n},
+                           {"lambda_star", star},
+                           {"status", p.status},
+                           {"max_error", max_error}});
         }
         if (!any) continue;
         md << "| " << comb.label() << " |" << row.str() << "\n";
@@ -221,11 +241,16 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
     }
     if (!files.empty()) {
         plot("study_lines.gp",
-             {{"files", join_words(files)}, {"titles", join_words(titles)}, {"xcol", "1"},
-              {"ycol", "2"}, {"xlabel", "elements N"},
+             {{"files", join_words(files)},
+              {"titles", join_words(titles)},
+              {"xcol", "1"},
+              {"ycol", "2"},
+              {"xlabel", "elements N"},
               {"ylabel", "largest load factor reached λ* (tip rotation λ*π)"},
               {"plottitle", "Mixed formulation: reach on the roll-up against the mesh, λ*(N)"},
-              {"outbase", out_path(o, "singularity-lambda-star")}, {"logx", "1"}, {"logy", "0"}});
+              {"outbase", out_path(o, "singularity-lambda-star")},
+              {"logx", "1"},
+              {"logy", "0"}});
         figures.push_back("singularity-lambda-star.png");
     }
     return out;
@@ -235,7 +260,8 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
 
 nlohmann::json study_singularity(const StudyOptions& o) {
     std::ostringstream table, mesh_table;
-    nlohmann::json out = {{"study", "singularity"}, {"quick", o.quick},
+    nlohmann::json out = {{"study", "singularity"},
+                          {"quick", o.quick},
                           {"wrong_branch_tolerance", kWrongBranchTolerance},
                           {"cases", nlohmann::json::array()}};
     for (const PathCase& c : path_cases(o.quick)) out["cases"].push_back(path_case(o, c, table));
@@ -257,7 +283,8 @@ nlohmann::json study_singularity(const StudyOptions& o) {
           "message |\n|---|---|---|---|---|---|---|\n"
        << table.str()
        << "\n### Mixed formulation: λ*(N)\n\nThe largest roll-up load factor the mixed "
-          "formulation's solver reaches against the number of elements (the driver's last converged "
+          "formulation's solver reaches against the number of elements (the driver's last "
+          "converged "
           "load factor when it stops), and the largest tip error ‖Δu‖/L along the way.\n"
        << mesh_table.str() << "\n";
     for (const auto& c : out["cases"])

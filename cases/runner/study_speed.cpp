@@ -11,8 +11,8 @@
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
-#include "study_math.hpp"
 #include "studies.hpp"
+#include "study_math.hpp"
 #include "timing.hpp"
 
 namespace rotbeam::cli {
@@ -45,11 +45,18 @@ struct SpeedCase {
 };
 
 std::vector<SpeedCase> speed_cases() {
-    return {{"rollup", "cantilever-moment", "Roll-up λ = 0.8: error vs time",
-             "tip error ‖Δu‖/L [-]", {"analysis.load_factors=[0.8]", "analysis.substeps=2"}, true},
-            {"bend", "bend-45", "45° bend P = 600 lbf: error vs time",
+    return {{"rollup",
+             "cantilever-moment",
+             "Roll-up λ = 0.8: error vs time",
+             "tip error ‖Δu‖/L [-]",
+             {"analysis.load_factors=[0.8]", "analysis.substeps=2"},
+             true},
+            {"bend",
+             "bend-45",
+             "45° bend P = 600 lbf: error vs time",
              "tip error ‖Δu‖/‖u_{ref}‖ [-]",
-             {kExactBendTip, "analysis.load_factors=[600]", "analysis.substeps=5"}, false}};
+             {kExactBendTip, "analysis.load_factors=[600]", "analysis.substeps=5"},
+             false}};
 }
 
 struct Point {
@@ -69,8 +76,9 @@ Point speed_point(const SpeedCase& c, const Combination& comb, const Mesh& m,
     const RunSpec spec{c.case_name, comb, o, m.elements};
     nlohmann::json r = run_spec(spec);
     unavailable = r.value("status", "") == "unavailable";
-    Point p{comb.label() + (comb.formulation == "displacement" ? "/p" + std::to_string(m.order) : ""),
-            m, kNoValue, kNoValue, r.value("dofs", 0)};
+    Point p{
+        comb.label() + (comb.formulation == "displacement" ? "/p" + std::to_string(m.order) : ""),
+        m, kNoValue, kNoValue, r.value("dofs", 0)};
     if (unavailable || r.value("status", "") != "converged" || !converged_steps_exist(r)) return p;
     const nlohmann::json& step = r["steps"].back();
     p.error = c.exact_rollup
@@ -98,20 +106,57 @@ void winners_in_words(const std::vector<Point>& points, std::ostringstream& md) 
     for (double level : {1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
         const Point* best = nullptr;
         for (const Point& p : points) {
-            if (std::isfinite(p.error) && p.error <= level && (!best || p.seconds < best->seconds)) {
+            if (std::isfinite(p.error) && p.error <= level &&
+                (!best || p.seconds < best->seconds)) {
                 best = &p;
             }
         }
         md << "- error ≤ " << sci(level, 0) << ": ";
         if (best) {
-            md << best->combination << ", " << best->mesh.elements << " elements ("
-               << best->dofs << " unknowns), " << ms_text(best->seconds) << " (error "
-               << sci(best->error) << ")\n";
+            md << best->combination << ", " << best->mesh.elements << " elements (" << best->dofs
+               << " unknowns), " << ms_text(best->seconds) << " (error " << sci(best->error)
+               << ")\n";
         } else {
             md << "no combination reached it on the grid\n";
         }
     }
     md << "\n";
+}
+
+// The Pareto front of all points: its table, its data file (for the plot) and its JSON.
+nlohmann::json front_table(const StudyOptions& o, const SpeedCase& c,
+                           const std::vector<Point>& points, std::ostringstream& md) {
+    std::vector<double> cost, error;
+    for (const Point& p : points) {
+        cost.push_back(p.seconds);
+        error.push_back(p.error);
+    }
+    const std::vector<bool> front = pareto_front(cost, error);
+    std::vector<const Point*> on_front;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (front[i]) on_front.push_back(&points[i]);
+    std::sort(on_front.begin(), on_front.end(),
+              [](const Point* a, const Point* b) { return a->seconds < b->seconds; });
+    std::ostringstream front_data;
+    front_data.precision(10);
+    md << "### " << c.title
+       << "\n\nPareto front (no other run is both faster and more "
+          "accurate):\n\n| combination | elements | unknowns | time | error "
+          "|\n|---|---|---|---|---|\n";
+    nlohmann::json out = nlohmann::json::array();
+    for (const Point* p : on_front) {
+        front_data << p->seconds << " " << std::max(p->error, 1e-17) << "\n";
+        md << "| " << p->combination << " | " << p->mesh.elements << " | " << p->dofs << " | "
+           << ms_text(p->seconds) << " | " << sci(p->error) << " |\n";
+        out.push_back({{"combination", p->combination},
+                       {"elements", p->mesh.elements},
+                       {"dofs", p->dofs},
+                       {"seconds", p->seconds},
+                       {"error", p->error}});
+    }
+    md << "\n";
+    write_text(o, "data/speed_" + c.key + "_front.dat", front_data.str());
+    return out;
 }
 
 nlohmann::json speed_case(const StudyOptions& o, const SpeedCase& c, std::ostringstream& md) {
@@ -133,45 +178,21 @@ nlohmann::json speed_case(const StudyOptions& o, const SpeedCase& c, std::ostrin
             by_label[p.combination].add(m.elements, p.dofs, p.seconds, p.error);
         }
         for (const std::string& label : order) {
-            files.push_back(write_series(
-                o, "data/speed_" + c.key + "_" + std::to_string(files.size()) + ".dat",
-                by_label[label]));
+            files.push_back(
+                write_series(o, "data/speed_" + c.key + "_" + std::to_string(files.size()) + ".dat",
+                             by_label[label]));
             titles.push_back(label);
         }
     }
-    std::vector<double> cost, error;
-    for (const Point& p : points) {
-        cost.push_back(p.seconds);
-        error.push_back(p.error);
-    }
-    const std::vector<bool> front = pareto_front(cost, error);
-    std::vector<const Point*> on_front;
-    for (size_t i = 0; i < points.size(); ++i)
-        if (front[i]) on_front.push_back(&points[i]);
-    std::sort(on_front.begin(), on_front.end(),
-              [](const Point* a, const Point* b) { return a->seconds < b->seconds; });
-    std::ostringstream front_data;
-    front_data.precision(10);
-    md << "### " << c.title << "\n\nPareto front (no other run is both faster and more "
-                               "accurate):\n\n| combination | elements | unknowns | time | error "
-                               "|\n|---|---|---|---|---|\n";
-    nlohmann::json out = {{"case", c.key}, {"front", nlohmann::json::array()},
-                          {"points", points.size()}};
-    for (const Point* p : on_front) {
-        front_data << p->seconds << " " << std::max(p->error, 1e-17) << "\n";
-        md << "| " << p->combination << " | " << p->mesh.elements << " | " << p->dofs << " | "
-           << ms_text(p->seconds) << " | " << sci(p->error) << " |\n";
-        out["front"].push_back({{"combination", p->combination}, {"elements", p->mesh.elements},
-                                {"dofs", p->dofs}, {"seconds", p->seconds}, {"error", p->error}});
-    }
-    md << "\n";
+    const nlohmann::json out = {
+        {"case", c.key}, {"front", front_table(o, c, points, md)}, {"points", points.size()}};
     winners_in_words(points, md);
-    write_text(o, "data/speed_" + c.key + "_front.dat", front_data.str());
-    plot("study_pareto.gp",
-         {{"files", join_words(files)}, {"titles", join_words(titles)},
-          {"front", out_path(o, "data/speed_" + c.key + "_front.dat")},
-          {"plottitle", c.title + " (every combination, meshes and orders)"},
-          {"ylabel", c.ylabel}, {"outbase", out_path(o, "speed-" + c.key)}});
+    plot("study_pareto.gp", {{"files", join_words(files)},
+                             {"titles", join_words(titles)},
+                             {"front", out_path(o, "data/speed_" + c.key + "_front.dat")},
+                             {"plottitle", c.title + " (every combination, meshes and orders)"},
+                             {"ylabel", c.ylabel},
+                             {"outbase", out_path(o, "speed-" + c.key)}});
     md << "![speed-" << c.key << ".png](speed-" << c.key << ".png)\n\n";
     return out;
 }
@@ -182,9 +203,12 @@ namespace {
 
 const char* analysis_name(AnalysisKind k) {
     switch (k) {
-        case AnalysisKind::static_: return "static";
-        case AnalysisKind::dynamic: return "dynamic";
-        case AnalysisKind::modal: return "modal";
+        case AnalysisKind::static_:
+            return "static";
+        case AnalysisKind::dynamic:
+            return "dynamic";
+        case AnalysisKind::modal:
+            return "modal";
     }
     return "static";
 }
@@ -193,8 +217,8 @@ const char* analysis_name(AnalysisKind k) {
 // dynamic case is shortened to 10 time steps (the counters show which terms exist, not how many
 // steps there are).
 nlohmann::json counters_table(const StudyOptions& o, std::ostringstream& md) {
-    const char* keys[] = {"residual_evaluations", "jacobian_evaluations", "elastic_terms",
-                          "inertial_terms", "damping_terms", "follower_stiffness",
+    const char* keys[] = {"residual_evaluations",   "jacobian_evaluations", "elastic_terms",
+                          "inertial_terms",         "damping_terms",        "follower_stiffness",
                           "distributed_load_terms", "gravity_terms"};
     md << "### Model only what the scene requires\n\nThe assembly counters of every catalog "
           "analysis with its own formulation and parameterization (dynamic cases shortened to 10 "
@@ -215,13 +239,15 @@ nlohmann::json counters_table(const StudyOptions& o, std::ostringstream& md) {
         const nlohmann::json r = run_spec({name, c, ov, 0});
         md << "| " << name << " | " << analysis_name(model.analysis.kind) << " | " << c.label()
            << " | "
-           << (r.value("available", true) ? r.value("status", "error") : std::string("not available yet"))
+           << (r.value("available", true) ? r.value("status", "error")
+                                          : std::string("not available yet"))
            << " |";
         for (const char* k : keys) {
             md << " " << (r.contains("counters") ? r["counters"].value(k, 0L) : 0L) << " |";
         }
         md << "\n";
-        out.push_back({{"case", name}, {"status", r.value("status", "error")},
+        out.push_back({{"case", name},
+                       {"status", r.value("status", "error")},
                        {"counters", r.value("counters", nlohmann::json::object())}});
     }
     md << "\nThe time saved against assembling everything is not measured: no formulation can "
@@ -237,8 +263,8 @@ nlohmann::json study_speed_accuracy(const StudyOptions& o) {
           "(displacement: order 1 … 12; mixed: 8 … 512 elements), error against the in-process "
           "wall time of run_case (median of repeats, timing.hpp) on a shared 2-core machine. The "
           "black staircase is the Pareto front across all combinations.\n\n";
-    nlohmann::json out = {{"study", "speed-accuracy"}, {"quick", o.quick},
-                          {"cases", nlohmann::json::array()}};
+    nlohmann::json out = {
+        {"study", "speed-accuracy"}, {"quick", o.quick}, {"cases", nlohmann::json::array()}};
     for (const SpeedCase& c : speed_cases()) out["cases"].push_back(speed_case(o, c, md));
     out["counters"] = counters_table(o, md);
     write_text(o, "study-speed-accuracy.md", md.str());

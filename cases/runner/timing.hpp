@@ -12,8 +12,8 @@
 
 namespace rotbeam::cli {
 
-// Median of the samples (mean of the two middle ones for an even count). API misuse (ROTBEAM_VERIFY)
-// when empty.
+// Median of the samples (mean of the two middle ones for an even count). API misuse
+// (ROTBEAM_VERIFY) when empty.
 double median(std::vector<double> samples);
 
 struct Timing {
@@ -26,8 +26,7 @@ struct Timing {
 
 // Wall time (steady clock) of `work`, repeated `repeats` times (at least once), median.
 // `budget_seconds` > 0 stops repeating once that much time has been spent (after one run).
-Timing time_in_process(const std::function<void()>& work, int repeats,
-                       double budget_seconds = 0.0);
+Timing time_in_process(const std::function<void()>& work, int repeats, double budget_seconds = 0.0);
 
 // Whole-process wall time: fork + exec of this executable with `arguments` (stdout/stderr to
 // /dev/null), wait4 for it; the median over `repeats`, and the child's peak RSS.

@@ -14,7 +14,7 @@ BOOST_AUTO_TEST_SUITE(study_math)
 
 BOOST_AUTO_TEST_CASE(median_is_the_middle_sample_and_ignores_outliers) {
     BOOST_TEST(median({5.0, 1.0, 3.0}) == 3.0);
-    BOOST_TEST(median({4.0, 1.0, 3.0, 100.0}) == 3.5);  // even count: mean of the two middle
+    BOOST_TEST(median({4.0, 1.0, 3.0, 100.0}) == 3.5);     // even count: mean of the two middle
     BOOST_TEST(median({2.0, 2.0, 2.0, 2.0, 1e9}) == 2.0);  // one descheduled run changes nothing
     BOOST_CHECK_THROW(median({}), std::logic_error);
 }
@@ -36,7 +36,7 @@ BOOST_AUTO_TEST_CASE(fit_order_drops_points_below_the_floor_and_non_finite_ones)
     const std::vector<double> n = {2, 4, 8, 16, 32};
     const std::vector<double> e = {1e-2, 2.5e-3, 6.25e-4, 3e-15, NAN};  // last two: round-off, NaN
     BOOST_TEST(fit_order(n, e, 1e-13) == 2.0, boost::test_tools::tolerance(1e-12));
-    BOOST_TEST(std::isnan(fit_order({1.0}, {0.1})));  // one point has no slope
+    BOOST_TEST(std::isnan(fit_order({1.0}, {0.1})));            // one point has no slope
     BOOST_TEST(std::isnan(fit_order({2.0, 2.0}, {0.1, 0.2})));  // no spread in n
 }
 
