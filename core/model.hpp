@@ -188,6 +188,7 @@ struct ReferenceValue {
     bool gated = true;      // false: recorded, not gated (benchmarks.md §1)
     std::string justification;
     std::string source;
+    std::optional<int> published_iterations;  // the source's Newton iterations (reported only)
     std::map<std::string, std::string> applies_to;  // formulation, elements, order, quadrature, ...
 };
 

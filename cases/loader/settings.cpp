@@ -118,7 +118,8 @@ ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const st
                               const Model& model) {
     r.expect_map(n, key,
                  {"quantity", "point", "load_factor", "time", "mode", "value", "components",
-                  "tolerance", "relative", "gated", "justification", "source", "applies_to"});
+                  "tolerance", "relative", "gated", "justification", "source", "applies_to",
+                  "iterations"});
     ReferenceValue ref;
     ref.quantity = r.choice(r.required(n, key, "quantity"), key + ".quantity",
                             {"displacement", "position", "rotation_angle", "frequency"});
@@ -150,6 +151,9 @@ ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const st
     if (n["gated"]) ref.gated = r.boolean(n["gated"], key + ".gated");
     ref.justification = r.string(r.required(n, key, "justification"), key + ".justification");
     ref.source = r.string(r.required(n, key, "source"), key + ".source");
+    if (n["iterations"]) {
+        ref.published_iterations = r.positive_integer(n["iterations"], key + ".iterations");
+    }
     if (const YAML::Node at = n["applies_to"]) {
         const std::string ak = key + ".applies_to";
         r.expect_map(at, ak,

@@ -1,4 +1,5 @@
 #include "report.hpp"
+#include "report_table_one.hpp"
 
 #include <sys/utsname.h>
 
@@ -182,6 +183,7 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
            << iterations << " | " << std::setprecision(3) << r.value("wall_seconds", 0.0) << " | "
            << last.str() << " |\n";
     }
+    md << "\n" << table_one_section("cantilever-moment", runs);
     std::vector<Figure> figures = rollup_figures(out_dir, runs);
     for (Figure& f : rotation_study_figures(out_dir)) figures.push_back(f);
     md << "\n## Figures\n\n";
