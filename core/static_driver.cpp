@@ -163,11 +163,16 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
         }
         // (a) residual and increment both small; (b) residual far below its tolerance;
         // (c) round-off floor: the increment is negligible and the residual stopped decreasing.
+        // Before the first Newton step only an exactly balanced state counts: a load below the
+        // residual's force scale × tolerance (1e-10 N on a steel beam) would otherwise leave the
+        // state unloaded and call it converged. One step then solves the (linear) problem.
         const bool small_increment = last_increment <= settings.increment_tolerance;
-        if ((rnorm <= settings.residual_tolerance && (it == 0 || small_increment)) ||
-            rnorm <= 1e-3 * settings.residual_tolerance ||
-            (small_increment && rnorm >= 0.5 * previous_residual &&
-             rnorm <= 1e4 * settings.residual_tolerance)) {
+        const bool may_stop = it > 0 || rnorm == 0.0;
+        if (may_stop && ((rnorm <= settings.residual_tolerance && small_increment) ||
+                         rnorm <= 1e-3 * settings.residual_tolerance ||
+                         (small_increment && rnorm >= 0.5 * previous_residual &&
+                          rnorm <= 1e4 * settings.residual_tolerance) ||
+                         rnorm == 0.0)) {
             out.converged = true;
             return out;
         }
@@ -194,7 +199,7 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
         }
         // (d) the remaining Newton correction is negligible while the residual sits at its
         // round-off floor: no damping test can be passed there, and none is needed.
-        if (scaled_max_norm(dx, xscale) <= settings.increment_tolerance &&
+        if (it > 0 && scaled_max_norm(dx, xscale) <= settings.increment_tolerance &&
             rnorm <= 1e4 * settings.residual_tolerance) {
             out.converged = true;
             return out;
@@ -263,7 +268,9 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
         int successes_since_cut = 0;
         NewtonOutcome last;
         problem.save_state(NonlinearSystem::kStepSlot);
-        while (std::abs(target - lambda) > 1e-14 * std::max(1.0, std::abs(target))) {
+        // Relative to the load factors themselves: a tiny load (1e-14 of the case's) is a load.
+        while (std::abs(target - lambda) >
+               1e-14 * std::max(std::abs(target), std::abs(lambda))) {
             const double trial = (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12))
                                      ? target
                                      : lambda + h;

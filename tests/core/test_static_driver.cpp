@@ -128,4 +128,18 @@ BOOST_AUTO_TEST_CASE(a_refusing_retraction_gives_status_singular) {
     BOOST_TEST(o.message.find("singular at load step 2") != std::string::npos, o.message);
 }
 
+// A load far below tolerance × residual scale is still a load: the driver takes the Newton step
+// (here the exact answer x = λ of g = x + x³ near 0) instead of calling the unloaded state
+// converged, and a load factor of 1e-14 is not mistaken for the 0 it starts from.
+BOOST_AUTO_TEST_CASE(a_tiny_load_is_solved_not_accepted_at_the_unloaded_state) {
+    for (const double lambda : {1e-6, 1e-14, 1e-20}) {
+        ToyProblem p([](double x) { return x + x * x * x; },
+                     [](double x) { return 1 + 3 * x * x; });
+        const StaticOutcome out = run_static(p, {lambda}, tight(), [](const StepRecord&) {});
+        BOOST_TEST((out.status == SolveStatus::converged));
+        BOOST_TEST(std::abs(p.x_[0] - lambda) <= 1e-12 * lambda);
+        BOOST_TEST(out.steps.at(0).newton_iterations >= 1);
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
