@@ -174,14 +174,12 @@ nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md
           "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise "
           "every "
           "small-angle series branch); at scale 1 the geometric nonlinearity (δ/L)² ~ 4e-6 "
-          "appears. Finding: the displacement formulation returns the unloaded state as "
-          "`converged` "
-          "(0 Newton iterations, error 1) once the load falls below ~1e-12 × 1e-4 EA = 2e-9 N "
-          "(its force-scale floor, displacement_statics_setup.hpp); with solver.force_scale set "
-          "to the load (`+force_scale`) the tiny loads are solved again, but loads ≥ 1e-4 then "
-          "diverge: the residual's round-off (~ε EA from the strain x′ − R e₁) exceeds 1e-12 of "
-          "such a scale. No fixed force scale serves both ends; the mixed formulation, whose "
-          "scaling follows the load, is accurate over the whole range.\n\n";
+          "appears. The driver always takes a Newton step before accepting a loaded state (a "
+          "load below tolerance × force scale was once accepted unsolved, error 1 with 0 "
+          "iterations). The `+force_scale` row fixes solver.force_scale at the load: it shows "
+          "why the default scale has a floor of 1e-4 EA — with a scale that small the residual's "
+          "round-off (~ε EA from the strain x′ − R e₁) exceeds 1e-12 of it and larger loads "
+          "cannot converge.\n\n";
     nlohmann::json out = nlohmann::json::array();
     sweep_table(
         o, "tiny-loads", scales, "scale", o.quick, true,
