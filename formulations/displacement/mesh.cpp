@@ -14,7 +14,7 @@ namespace rotbeam::form {
 namespace {
 
 // Material section at s/L: linear interpolation between stations (one station: constant).
-void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta) {
+void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta, Mat6& M_star) {
     const auto& st = m.sections;
     size_t k = 0;
     while (k + 2 < st.size() && st[k + 1].s_fraction < t) ++k;
@@ -28,8 +28,10 @@ void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta) {
     C = (1.0 - w) * *a.stiffness + w * *b.stiffness;
     mass = 0.0;
     eta.setZero();
+    M_star.setZero();
     if (a.mass && b.mass) {
         const Mat6 M = (1.0 - w) * *a.mass + w * *b.mass;
+        M_star = M;
         mass = M(0, 0);
         if (mass > 0.0) eta = so3::axial(M.block<3, 3>(3, 0)) / mass;
     }
@@ -83,7 +85,7 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
         QuadraturePoint& p = e.qp[q];
         p.weight = rule.weights[q] * jac;
         p.Rr = g.frame(s);
-        section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star);
+        section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star, p.M_star);
     }
     return e;
 }
