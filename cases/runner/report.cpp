@@ -154,11 +154,12 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     }
     std::ostringstream md;
     md << "# rotbeam report\n\nrotbeam " << kGitDescribe << ", " << machine_description() << ", "
-       << today() << ".\n\n## Runs\n\nEvery static catalog case with every parameterization and "
-       << "formulation at the case's own mesh. `status` is the solver's own verdict; the last "
-       << "column is the tip (or joint) displacement at the last converged step.\n\n"
+       << today() << ".\n\n## Runs\n\nEvery static and modal catalog case with every "
+       << "parameterization and formulation at the case's own mesh. `status` is the solver's own "
+       << "verdict; the last column is the tip (or joint) displacement at the last converged "
+       << "step, or the natural frequencies of a modal run.\n\n"
        << "| case | rotation | formulation | status | steps | Newton iterations | wall [s] | "
-          "last point displacement |\n|---|---|---|---|---|---|---|---|\n";
+          "last point displacement / frequencies [Hz] |\n|---|---|---|---|---|---|---|---|\n";
     for (const nlohmann::json& r : runs) {
         int iterations = 0;
         for (const auto& s : r["steps"]) iterations += s.value("newton_iterations", 0);
@@ -171,6 +172,10 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
                 last << std::setprecision(6) << name << " [" << u[0].get<double>() << ", "
                      << u[1].get<double>() << ", " << u[2].get<double>() << "]";
             }
+        }
+        if (r.contains("frequencies_hz")) {
+            last << std::setprecision(6);
+            for (const auto& f : r["frequencies_hz"]) last << f.get<double>() << " ";
         }
         std::string message = r.value("status", "error");
         if (message != "converged") {
