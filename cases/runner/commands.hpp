@@ -15,6 +15,8 @@ int command_check(const Args& args);
 int command_run(const Args& args);
 int command_suite(const Args& args);
 int command_verify(const Args& args);
+// The comparison `verify` makes, for the given cases, as the report's Markdown section.
+std::string published_references_markdown(const std::vector<std::string>& cases);
 int command_reference(const Args& args);
 int command_study(const Args& args);
 int command_bench(const Args& args);  // bench_command.cpp

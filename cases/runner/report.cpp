@@ -189,6 +189,10 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
            << last.str() << " |\n";
     }
     md << "\n" << table_one_section("cantilever-moment", runs);
+    {
+        std::ifstream published(fs::path(out_dir) / "published.md");
+        if (published) md << published.rdbuf();
+    }
     std::vector<Figure> figures = rollup_figures(out_dir, runs);
     for (Figure& f : rotation_study_figures(out_dir)) figures.push_back(f);
     md << "\n## Figures\n\n";

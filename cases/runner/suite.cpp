@@ -171,6 +171,15 @@ int command_suite(const Args& args) {
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
     run_all(runs, jobs, a.has("force"));
+    {
+        // The published numbers of the cases run (Tables I–III), as `verify` computes them.
+        std::vector<std::string> names;
+        for (const PlannedRun& r : runs) {
+            if (names.empty() || names.back() != r.case_name) names.push_back(r.case_name);
+        }
+        write_file_atomically((fs::path(out) / "published.md").string(),
+                              published_references_markdown(names));
+    }
     write_file_atomically((fs::path(out) / "rotation-study.json").string(),
                           param::rotation_study(721).dump(1) + "\n");
     // The studies (issue 12) belong to the main job: on by default for the whole catalog, off

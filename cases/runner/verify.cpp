@@ -179,23 +179,8 @@ void print_table(const std::vector<Row>& rows, std::ostream& os) {
     for (const Row& r : rows) line(cells(r));
 }
 
-}  // namespace
-
-int command_verify(const Args& args) {
-    const CommandSpec spec{
-        "verify", "[CASE ...]", 0, -1,
-        "Run every applicable published reference of the given cases (default: the whole catalog) "
-        "and compare with its tolerance. Prints a table; exit 1 on any gated miss.",
-        {{"json", "FILE", "also write the table as JSON"}}};
-    const ParsedArguments a = parse_arguments(spec, args);
-    if (a.help) {
-        std::cout << help_text(spec);
-        return 0;
-    }
-    std::vector<std::string> cases = a.positional;
-    if (cases.empty()) cases = catalog_cases();
+std::vector<Row> verify_rows(const std::vector<std::string>& cases) {
     std::vector<Row> rows;
-    nlohmann::json table = nlohmann::json::array();
     for (const std::string& c : cases) {
         const std::string path = resolve_case_path(c);
         const Model base = load_case(path, {});
@@ -211,6 +196,46 @@ int command_verify(const Args& args) {
             for (const ReferenceValue* ref : refs) rows.push_back(compare(model, result, *ref));
         }
     }
+    return rows;
+}
+
+}  // namespace
+
+std::string published_references_markdown(const std::vector<std::string>& cases) {
+    const std::vector<Row> rows = verify_rows(cases);
+    if (rows.empty()) return {};
+    std::ostringstream md;
+    md << "## Published numbers\n\nEvery published reference of the cases run (the case files' "
+          "`references`: Table I, Table II and the other 45° bend values, Table III), computed "
+          "with the discretization it belongs to, as `rotbeam verify` does. `recorded` entries "
+          "are published values that are not converged solutions (benchmarks.md §1); "
+          "`unavailable` ones need an analysis that is not implemented yet.\n\n"
+          "| case | reference | combination | published | computed | difference | tolerance | "
+          "result |\n|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        md << "| " << r.case_name << " | " << r.id << " | "
+           << (r.combination.empty() ? "the case's own" : r.combination) << " | "
+           << r.published << " | " << r.computed << " | " << r.difference << " | "
+           << r.tolerance << " | " << r.verdict << " |\n";
+    }
+    return md.str() + "\n";
+}
+
+int command_verify(const Args& args) {
+    const CommandSpec spec{
+        "verify", "[CASE ...]", 0, -1,
+        "Run every applicable published reference of the given cases (default: the whole catalog) "
+        "and compare with its tolerance. Prints a table; exit 1 on any gated miss.",
+        {{"json", "FILE", "also write the table as JSON"}}};
+    const ParsedArguments a = parse_arguments(spec, args);
+    if (a.help) {
+        std::cout << help_text(spec);
+        return 0;
+    }
+    std::vector<std::string> cases = a.positional;
+    if (cases.empty()) cases = catalog_cases();
+    const std::vector<Row> rows = verify_rows(cases);
+    nlohmann::json table = nlohmann::json::array();
     print_table(rows, std::cout);
     int misses = 0, gated = 0, unavailable = 0;
     for (const Row& r : rows) {
