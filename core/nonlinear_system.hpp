@@ -93,6 +93,13 @@ public:
     // Section resultants along the members at the formulation's natural stations (mixed: element
     // mid-points, where F and M are unknowns); empty when the formulation does not provide them.
     virtual std::vector<SectionResultants> section_resultants() const { return {}; }
+    // Deformed positions x^r + u of the formulation's nodes along each member, in arc-length
+    // order (for shape plots); empty when the formulation does not provide them.
+    struct CenterlinePoint {
+        int member = -1;
+        Vec3 position = Vec3::Zero();
+    };
+    virtual std::vector<CenterlinePoint> centerline() const { return {}; }
 };
 
 }  // namespace rotbeam

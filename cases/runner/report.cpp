@@ -94,6 +94,42 @@ std::vector<Figure> rollup_figures(const std::string& out, const std::vector<nlo
                   "load factor λ for every combination that ran, over the exact solution (lines)."}};
 }
 
+// Fig. 3 of seed 002: the roll-up's deformed centre lines for every reported λ, from the
+// displacement/quaternion run (the one with node positions), over the exact arcs.
+std::vector<Figure> rollup_shape_figures(const std::string& out,
+                                         const std::vector<nlohmann::json>& runs) {
+    for (const nlohmann::json& r : runs) {
+        if (r.value("case", "") != "cantilever-moment" || r.value("rotation", "") != "quaternion" ||
+            r.value("formulation", "") != "displacement" || r["steps"].empty() ||
+            !r["steps"][0].contains("centerline")) {
+            continue;
+        }
+        const fs::path file = fs::path(out) / "data" / "rollup_shapes.dat";
+        fs::create_directories(file.parent_path());
+        std::ofstream f(file);
+        std::ostringstream lambdas;
+        for (const auto& s : r["steps"]) {
+            f << "# lambda " << s["load_factor"].get<double>() << "\n";
+            for (const auto& p : s["centerline"]) {
+                f << p[1].get<double>() << " " << p[3].get<double>() << "\n";
+            }
+            f << "\n\n";
+            lambdas << s["load_factor"].get<double>() << " ";
+        }
+        f.close();
+        if (!gnuplot("rollup_shapes.gp", {{"datafile", file.string()},
+                                          {"lambdas", lambdas.str()},
+                                          {"outbase", (fs::path(out) / "rollup-shapes").string()}})) {
+            return {};
+        }
+        return {{"rollup-shapes.png",
+                 "Seed 002 Fig. 3: deformed shapes of the moment-loaded cantilever for every "
+                 "reported λ (displacement formulation, quaternion, the case's 16 elements of "
+                 "order 4; points are the nodes) over the exact circular arcs (lines)."}};
+    }
+    return {};
+}
+
 // Columns: angle, then per parameterization σ_min(H_m) and the round-trip error ("?" where
 // undefined); the header row names them for gnuplot's columnheader.
 bool write_rotation_study_data(const nlohmann::json& study, const std::string& path) {
@@ -194,6 +230,7 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
         if (published) md << published.rdbuf();
     }
     std::vector<Figure> figures = rollup_figures(out_dir, runs);
+    for (Figure& f : rollup_shape_figures(out_dir, runs)) figures.push_back(f);
     for (Figure& f : rotation_study_figures(out_dir)) figures.push_back(f);
     md << "\n## Figures\n\n";
     if (figures.empty()) md << "(no figures: gnuplot missing or no data)\n";

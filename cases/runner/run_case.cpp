@@ -62,6 +62,19 @@ nlohmann::json result_header(const RunRequest& request) {
             {"steps", nlohmann::json::array()}};
 }
 
+// The deformed centre line of a reported step, for shape plots (kept to small meshes: the result
+// file stays small for the studies' refined runs).
+void add_centerline(const StaticProblem& problem, nlohmann::json& step) {
+    constexpr size_t kMaxPoints = 2000;
+    const std::vector<StaticProblem::CenterlinePoint> line = problem.centerline();
+    if (line.empty() || line.size() > kMaxPoints) return;
+    nlohmann::json points = nlohmann::json::array();
+    for (const StaticProblem::CenterlinePoint& p : line) {
+        points.push_back({p.member, p.position[0], p.position[1], p.position[2]});
+    }
+    step["centerline"] = points;  // [member, x, y, z] per node
+}
+
 // Section resultants of the last converged state, per member, ordered by arc length.
 nlohmann::json sections_json(const Model& model, double load_factor,
                              const std::vector<SectionResultants>& sections) {
@@ -118,6 +131,7 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
                        result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
                                                            step.newton_iterations, states,
                                                            unwrapper));
+                       add_centerline(*problem, result["steps"].back());
                    },
                    solver);
     result["status"] = to_string(outcome.status);

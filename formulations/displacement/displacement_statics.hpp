@@ -50,6 +50,16 @@ public:
     PointState point_state(int point_index) const override;
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
+    std::vector<CenterlinePoint> centerline() const override {
+        std::vector<CenterlinePoint> out;
+        for (const MeshElement& e : mesh_.elements) {
+            for (size_t j = out.empty() || out.back().member != e.member ? 0 : 1;
+                 j < e.nodes.size(); ++j) {
+                out.push_back({e.member, mesh_.nodes[e.nodes[j]].x0 + u_[e.nodes[j]]});
+            }
+        }
+        return out;
+    }
 
     const Mesh& mesh() const { return mesh_; }
     // Nodal state (relative to the reference configuration), for tests and output.
