@@ -50,6 +50,32 @@ public:
     PointState point_state(int point_index) const override;
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
+    bool additive() const override { return additive_; }
+    // With the additive update the unknowns are [u; p] per free node (what KINSOL iterates on).
+    VecX state_vector() const override {
+        VecX x = VecX::Zero(additive_ ? mesh_.unknowns : 0);
+        if constexpr (P::kSize == 3) {
+            for (size_t i = 0; additive_ && i < mesh_.nodes.size(); ++i) {
+                const int d = mesh_.nodes[i].dof;
+                if (d < 0) continue;
+                x.segment<3>(d) = u_[i];
+                x.segment<3>(d + 3) = p_[i];
+            }
+        }
+        return x;
+    }
+    void set_state_vector(const Eigen::Ref<const VecX>& x) override {
+        if constexpr (P::kSize == 3) {
+            for (size_t i = 0; additive_ && i < mesh_.nodes.size(); ++i) {
+                const int d = mesh_.nodes[i].dof;
+                if (d < 0) continue;
+                u_[i] = x.segment<3>(d);
+                p_[i] = x.segment<3>(d + 3);
+            }
+        } else {
+            (void)x;
+        }
+    }
     std::vector<CenterlinePoint> centerline() const override {
         std::vector<CenterlinePoint> out;
         for (const MeshElement& e : mesh_.elements) {
@@ -119,6 +145,11 @@ private:
     Mat3 R0_ = Mat3::Identity();  // relative: the element's reference-node rotation
     bool relative_ = true;
     bool rescale_nodes_ = false;
+    // update: additive — the Newton unknowns of a node's rotation are δp (p ← p + δp) and the
+    // Jacobian's rotation columns are multiplied by H_s(p) (δψ = H_s(p) δp); three-parameter
+    // types only. Lets KINSOL (an additive solver) drive the displacement formulation.
+    bool additive_ = false;
+    void apply_parameter_tangent(SparseMatrix& J) const;
     std::vector<Mat6> D_;
     std::vector<Eigen::Matrix<double, 3, 6>> E_;
 

@@ -31,6 +31,7 @@ void DisplacementStatics<P>::evaluate(VecX& r, SparseMatrix* J) {
     }
     for (int k = 0; k < static_cast<int>(mesh_.elements.size()); ++k) assemble_element(k, r, J);
     assemble_point_loads(r, J);
+    if (additive_ && J != nullptr) apply_parameter_tangent(*J);
 }
 
 // direct: nodal parameters aligned to the element's first node (σ_j); relative: the parameters

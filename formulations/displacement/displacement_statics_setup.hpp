@@ -52,6 +52,17 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     }
     relative_ = interpolation == "relative";
     rescale_nodes_ = relative_ && model.discretization.rescale && P::kCanRescale;
+    const std::string& update = model.discretization.update;
+    if (update != "multiplicative" && update != "additive") {
+        throw InputError("discretization.update: unknown update '" + update +
+                         "' (multiplicative | additive)");
+    }
+    additive_ = update == "additive";
+    if (additive_ && P::kSize != 3) {
+        throw InputError("discretization.update: additive needs a three-parameter rotation "
+                         "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
+                         std::string(P::kName) + "'");
+    }
     const size_t nn = static_cast<size_t>(mesh_.order) + 1;
     pe_.resize(nn);
     ue_.resize(nn);
@@ -194,6 +205,13 @@ void DisplacementStatics<P>::retract(const Eigen::Ref<const VecX>& dx) {
         const int d = mesh_.nodes[i].dof;
         if (d < 0) continue;
         const Vec3 dpsi = dx.segment<3>(d + 3);
+        if constexpr (P::kSize == 3) {
+            if (additive_) {
+                p_trial_[i] = p_[i] + dpsi;  // δp, not δψ
+                if (rescale_nodes_) p_trial_[i] = P::rescale(p_trial_[i], P::identity());
+                continue;
+            }
+        }
         p_trial_[i] = P::compose(P::from_rotation_vector(dpsi), p_[i]);
         if constexpr (P::kSize == 4) p_trial_[i].normalize();
         if (rescale_nodes_) p_trial_[i] = P::rescale(p_trial_[i], P::identity());
@@ -244,6 +262,35 @@ std::string DisplacementStatics<P>::describe_state() const {
     std::ostringstream s;
     s << "largest nodal rotation " << max_rotation_angle() << " rad (" << P::kName << ")";
     return s.str();
+}
+
+// Additive update: J_p = J_ψ · blockdiag(H_s(p_i)) on each node's rotation columns. The three
+// columns of a node share one row pattern (the pattern is built from 6×6 node blocks), so the
+// product is formed in place, entry by entry of the column triple.
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::apply_parameter_tangent(SparseMatrix& J) const {
+    if constexpr (P::kSize == 3) {
+        const int* outer = J.outerIndexPtr();
+        double* values = J.valuePtr();
+        for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
+            const int d = mesh_.nodes[i].dof;
+            if (d < 0) continue;
+            const Mat3 H = P::spatial_tangent(p_[i]);
+            const int c = d + 3;
+            const int count = outer[c + 1] - outer[c];
+            for (int k = 0; k < count; ++k) {
+                double* v0 = values + outer[c] + k;
+                double* v1 = values + outer[c + 1] + k;
+                double* v2 = values + outer[c + 2] + k;
+                const Eigen::RowVector3d row = Eigen::RowVector3d(*v0, *v1, *v2) * H;
+                *v0 = row[0];
+                *v1 = row[1];
+                *v2 = row[2];
+            }
+        }
+    } else {
+        (void)J;
+    }
 }
 
 }  // namespace rotbeam::form
