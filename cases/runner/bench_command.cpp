@@ -167,7 +167,13 @@ void write_bench_outputs(const ParsedArguments& a, const nlohmann::json& out) {
             fs::path(ROTBEAM_REPORTS_DIR) / "history" /
             (utc("%Y-%m-%d") + "-" + out["machine"]["tag"].get<std::string>() + ".json");
         fs::create_directories(h.parent_path());
-        write_file_atomically(h.string(), out.dump(1) + "\n");
+        // The history keeps each combination's chosen discretization and timings, not the
+        // search trail (candidates), so the committed file stays small.
+        nlohmann::json summary = out;
+        for (auto& target : summary["targets"]) {
+            for (auto& result : target["results"]) result.erase("candidates");
+        }
+        write_file_atomically(h.string(), summary.dump(1) + "\n");
         std::cout << "wrote " << h.string() << "\n";
     }
 }
