@@ -120,7 +120,7 @@ enum class AnalysisKind { static_, dynamic, modal };
 struct StaticSettings {
     std::vector<double> load_factors;  // reported steps; loads are multiplied by the factor
     int substeps = 1;                  // initial equal sub-steps between reported factors
-    int max_step_cuts = 12;            // bisections allowed per reported step
+    int max_step_cuts = 12;            // consecutive bisections: smallest sub-step / 2^this
 };
 
 struct DynamicSettings {

@@ -6,8 +6,10 @@
 // Convergence (both must hold): max_i |r_i| / residual_scale_i ≤ residual_tolerance and
 // max_i |δ_i| / increment_scale_i ≤ increment_tolerance — or the scaled residual alone falls
 // below residual_tolerance × 1e-3. A step whose Newton fails (max iterations, a non-finite residual,
-// a singular factorization or a parameterization refusing the state) is halved, up to
-// `max_step_cuts` times, starting again from the last converged state.
+// a singular factorization or a parameterization refusing the state) is halved, starting again
+// from the last converged state; two converged sub-steps in a row double it again (never beyond
+// the initial sub-step). `max_step_cuts` bounds the consecutive halvings: the step fails when
+// the sub-step would fall below (initial sub-step) / 2^max_step_cuts.
 #pragma once
 
 #include <functional>

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <functional>
+#include <sstream>
+#include <string>
 
 #include "core/errors.hpp"
 #include "core/static_driver.hpp"
@@ -99,6 +101,32 @@ BOOST_AUTO_TEST_CASE(step_cutting_rescues_a_step_newton_cannot_take_at_once) {
     BOOST_TEST(calls == 1);
     BOOST_TEST(o.steps.at(0).substeps > 1);
     BOOST_TEST(std::abs(p.x_[0] - 10.0) < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(the_cut_budget_bounds_consecutive_halvings_not_their_sum) {
+    // g = x + x³ with at most 4 Newton iterations per sub-step: only short sub-steps converge,
+    // so the driver halves, takes two sub-steps, doubles, fails again, ... — many halvings in
+    // one reported step, never many in a row. The budget of 4 bounds the depth (a smallest
+    // sub-step of 1/16 of the first); summed over the step the halvings exceed it, and a
+    // driver that counted the sum would report `diverged` although every stretch is passable.
+    ToyProblem p([](double x) { return x + x * x * x; }, [](double x) { return 1 + 3 * x * x; });
+    NewtonSettings s = tight();
+    s.line_search = false;
+    s.max_iterations = 4;
+    s.max_step_cuts = 4;
+    s.substeps = 16;
+    std::ostringstream trace;
+    s.trace = &trace;
+    const StaticOutcome o = run_static(p, {30.0}, s, nullptr);
+    BOOST_TEST(o.status == SolveStatus::converged, o.message);
+    BOOST_TEST(std::abs(p.x_[0] + p.x_[0] * p.x_[0] * p.x_[0] - 30.0) < 1e-9);
+    // The sum of the halvings exceeded the budget (what makes this test discriminate).
+    const std::string t = trace.str();
+    int halvings = 0;
+    for (size_t at = t.find("step cut"); at != std::string::npos; at = t.find("step cut", at + 1)) {
+        ++halvings;
+    }
+    BOOST_TEST(halvings > s.max_step_cuts, halvings << " halvings");
 }
 
 BOOST_AUTO_TEST_CASE(no_solution_gives_diverged_with_step_and_load_factor) {
