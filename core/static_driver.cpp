@@ -2,8 +2,8 @@
 
 #include <Eigen/SparseLU>
 #include <cmath>
-#include <ostream>
 #include <limits>
+#include <ostream>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -12,10 +12,14 @@ namespace rotbeam {
 
 const char* to_string(SolveStatus s) {
     switch (s) {
-        case SolveStatus::converged: return "converged";
-        case SolveStatus::diverged: return "diverged";
-        case SolveStatus::singular: return "singular";
-        case SolveStatus::error: return "error";
+        case SolveStatus::converged:
+            return "converged";
+        case SolveStatus::diverged:
+            return "diverged";
+        case SolveStatus::singular:
+            return "singular";
+        case SolveStatus::error:
+            return "error";
     }
     return "error";
 }
@@ -91,8 +95,8 @@ bool exact_correction_accepts(NonlinearSystem& system, DampingWork& w, const Vec
     return w.trial_jacobian_ready;
 }
 
-double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx,
-                   const VecX& xscale, double alpha_start, DampingWork& w, bool& saw_singular) {
+double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx, const VecX& xscale,
+                   double alpha_start, DampingWork& w, bool& saw_singular) {
     constexpr double kMinAlpha = 1.0 / 8192.0;
     const double norm_dx = scaled_rms(dx, xscale);
     w.trial_jacobian_ready = false;
@@ -241,8 +245,8 @@ std::string failure_message(const char* what, size_t step, double target, double
     std::ostringstream s;
     s.precision(6);
     s << what << " at load step " << step + 1 << " (target load factor " << target
-      << "): Newton failed at load factor " << lambda << " after " << cuts
-      << " step cuts (" << last.failure << "); last converged load factor " << converged;
+      << "): Newton failed at load factor " << lambda << " after " << cuts << " step cuts ("
+      << last.failure << "); last converged load factor " << converged;
     const std::string state = problem.describe_state();
     if (!state.empty()) s << "; " << state;
     return s.str();
@@ -270,11 +274,9 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
         NewtonOutcome last;
         problem.save_state(NonlinearSystem::kStepSlot);
         // Relative to the load factors themselves: a tiny load (1e-14 of the case's) is a load.
-        while (std::abs(target - lambda) >
-               1e-14 * std::max(std::abs(target), std::abs(lambda))) {
-            const double trial = (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12))
-                                     ? target
-                                     : lambda + h;
+        while (std::abs(target - lambda) > 1e-14 * std::max(std::abs(target), std::abs(lambda))) {
+            const double trial =
+                (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12)) ? target : lambda + h;
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
             last = solver ? solver(problem, settings) : solve_newton(problem, settings);
@@ -305,8 +307,8 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                 const bool singular = last.singular;
                 outcome.status = singular ? SolveStatus::singular : SolveStatus::diverged;
                 outcome.last_converged_load_factor = lambda;
-                outcome.message = failure_message(singular ? "singular" : "diverged", step,
-                                                  target, trial, lambda, cuts - 1, last, problem);
+                outcome.message = failure_message(singular ? "singular" : "diverged", step, target,
+                                                  trial, lambda, cuts - 1, last, problem);
                 return outcome;
             }
             h *= 0.5;

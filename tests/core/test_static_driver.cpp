@@ -1,7 +1,6 @@
 // The shared static driver on small problems whose behaviour is known in closed form: convergence
 // rate, step cutting, and truthful statuses (diverged, singular) with the step in the message.
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -17,7 +16,7 @@ namespace {
 // Two unknowns (x, y): r = (g(x) − λ, y − x²), with g chosen per test. The retraction is additive
 // but refuses |x| ≥ x_limit (a stand-in for a parameterization's singular angle).
 class ToyProblem : public StaticProblem {
-public:
+  public:
     ToyProblem(std::function<double(double)> g, std::function<double(double)> dg,
                double x_limit = 1e300)
         : g_(std::move(g)), dg_(std::move(dg)), x_limit_(x_limit) {
@@ -55,7 +54,7 @@ public:
 
     Eigen::Vector2d x_ = Eigen::Vector2d::Zero();
 
-private:
+  private:
     std::function<double(double)> g_, dg_;
     double x_limit_;
     double lambda_ = 0.0;
