@@ -145,6 +145,8 @@ private:
     Mat3 R0_ = Mat3::Identity();  // relative: the element's reference-node rotation
     bool relative_ = true;
     bool rescale_nodes_ = false;
+    // The case asked for rescaling but `direct` interpolation cannot do it (describe_state says so).
+    bool rescale_refused_ = false;
     // update: additive — the Newton unknowns of a node's rotation are δp (p ← p + δp) and the
     // Jacobian's rotation columns are multiplied by H_s(p) (δψ = H_s(p) δp); three-parameter
     // types only. Lets KINSOL (an additive solver) drive the displacement formulation.

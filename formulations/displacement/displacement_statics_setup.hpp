@@ -52,6 +52,7 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     }
     relative_ = interpolation == "relative";
     rescale_nodes_ = relative_ && model.discretization.rescale && P::kCanRescale;
+    rescale_refused_ = !relative_ && model.discretization.rescale && P::kCanRescale;
     const std::string& update = model.discretization.update;
     if (update != "multiplicative" && update != "additive") {
         throw InputError("discretization.update: unknown update '" + update +
@@ -260,7 +261,18 @@ double DisplacementStatics<P>::max_rotation_angle() const {
 template <param::RotationParameterization P>
 std::string DisplacementStatics<P>::describe_state() const {
     std::ostringstream s;
-    s << "largest nodal rotation " << max_rotation_angle() << " rad (" << P::kName << ")";
+    const double phi = max_rotation_angle();
+    s << "largest nodal rotation " << phi << " rad (" << P::kName << ")";
+    // Issue 5 point 3: with `direct` interpolation the nodal parameters are interpolated as they
+    // are, so rescaling one node (WM: complementary parameters; rotation vector: −2π) would put
+    // it in another chart than its neighbours. It is not done; say so where it would have been.
+    if constexpr (P::kSize == 3) {
+        if (rescale_refused_ && phi > kPi) {
+            s << "; nodes past pi were not rescaled: with direct interpolation a rescale would "
+                 "split the chart of their elements (singular angle "
+              << P::singular_angle() << " rad; relative interpolation rescales)";
+        }
+    }
     return s.str();
 }
 
