@@ -131,6 +131,29 @@ BOOST_AUTO_TEST_CASE(rodrigues_stops_before_lambda_one) {
     BOOST_TEST(r.worst_error <= 1e-4);
 }
 
+// The quaternion at λ = 1.6 (below plain WM's fold, so the errors compare): Eq. 47's midpoint rule
+// and the Cayley angle of Eq. 48 (δ − δ³/48 per element) both err by O(ΔL²) globally.
+BOOST_AUTO_TEST_CASE(quaternion_rollup_converges_with_order_two) {
+    std::vector<double> errors;
+    for (int n = 16; n <= 512; n *= 2) {
+        form::MixedStaticsOf<param::Quaternion> problem(test::rollup_model(n));
+        const StaticOutcome out = run_static(problem, {1.6}, reach_settings(), nullptr);
+        BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
+        errors.push_back(tip_error(problem, 1.6));
+        const double order =
+            errors.size() < 2 ? 0.0 : std::log2(errors[errors.size() - 2] / errors.back());
+        BOOST_TEST_MESSAGE("quaternion λ = 1.6, N = " << std::setw(4) << n << ": ‖Δu‖/L = "
+                                                      << std::scientific << std::setprecision(4)
+                                                      << errors.back() << std::defaultfloat
+                                                      << ", order " << order << ", iterations "
+                                                      << out.steps.back().newton_iterations);
+        if (errors.size() >= 2) {  // ±0.05 covers the pre-asymptotic first refinement
+            BOOST_TEST(order > 1.95);
+            BOOST_TEST(order < 2.05);
+        }
+    }
+}
+
 // The quaternion (four-component Eq. 48, a Cayley transform from node to node) has neither a
 // singular angle nor a fold: it passes λ = 2 (tip rotation 2π, where plain WM stops) and reaches
 // λ = 4. The error is the midpoint rule's O(ΔL²) (≈ 3.3e-3 at N = 16, λ = 1.6, like WM's), ≈ 1e-5
