@@ -21,8 +21,9 @@
 // Count on a tree with one support (every node but the support is free, E elements, E + 1 nodes):
 // 13E + 7E + 6 unknowns = 14E + 6(E + 1) equations. Each further support closes a path whose
 // four closure rows hold only three independent conditions (the norm arrives preserved) and whose
-// given quaternion may be reached as −q_given (a path turning an odd number of full turns): its q̂
-// is ρ q_given with the scalar ρ an unknown (ρ = ±1 at the solution), which restores the count.
+// given quaternion a Newton iterate far from the continuation path could reach as −q_given (the
+// double cover): its q̂ is ρ q_given with the scalar ρ an unknown (ρ = ±1 at a solution, 1 along a
+// continuation), which restores the count.
 // A closed loop of members would need the same for its closing node; it is refused with an
 // InputError (no shipped case has one), as is a part without support.
 #pragma once
