@@ -319,6 +319,9 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
     }
     outcome.last_converged_load_factor = lambda;
     outcome.message = "all load steps converged";
+    // The final state's description (e.g. the quaternion's norm drift), as a failure reports it.
+    const std::string state = problem.describe_state();
+    if (!state.empty()) outcome.message += "; " + state;
     return outcome;
 }
 

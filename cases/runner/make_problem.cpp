@@ -4,6 +4,7 @@
 
 #include "core/errors.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/mixed/mixed_quaternion_statics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/registry.hpp"
@@ -12,8 +13,8 @@ namespace rotbeam {
 
 namespace {
 
-// The parameterizations formulations/mixed/mixed_statics.cpp instantiates (the quaternion in the
-// mixed formulation is still open, issue 8).
+// The parameterizations formulations/mixed/mixed_statics.cpp instantiates; the quaternion has its
+// own four-component statics (mixed_quaternion_statics.cpp).
 template <class P>
 constexpr bool kMixedAvailable =
     std::is_same_v<P, param::WienerMilenkovic> || std::is_same_v<P, param::Rodrigues> ||
@@ -35,16 +36,20 @@ std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
                             form::MixedStatics<param::WienerMilenkovicContinuous>>(model);
                     }
                 }
-                if constexpr (kMixedAvailable<P>) {
+                if constexpr (std::is_same_v<P, param::Quaternion>) {
+                    return std::make_unique<form::MixedQuaternionStatics<P>>(model);
+                } else if constexpr (kMixedAvailable<P>) {
                     return std::make_unique<form::MixedStatics<P>>(model);
                 } else {
-                    throw InputError("discretization.rotation: the mixed formulation is not "
-                                     "available with '" + d.rotation +
-                                     "' yet (wiener-milenkovic | rodrigues | rotation-vector)");
+                    throw InputError(
+                        "discretization.rotation: the mixed formulation is not "
+                        "available with '" +
+                        d.rotation +
+                        "' (quaternion | wiener-milenkovic | rodrigues | rotation-vector)");
                 }
             }
-            throw InputError("discretization.formulation: unknown formulation '" +
-                             d.formulation + "' (displacement | mixed)");
+            throw InputError("discretization.formulation: unknown formulation '" + d.formulation +
+                             "' (displacement | mixed)");
         });
 }
 

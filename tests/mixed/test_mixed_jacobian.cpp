@@ -11,6 +11,7 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/mixed/allocation_counter.hpp"
+#include "tests/mixed/deformed_model.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -18,52 +19,6 @@ using Parameterizations =
     std::tuple<param::WienerMilenkovic, param::Rodrigues, param::RotationVector>;
 
 namespace {
-
-// A fully populated, symmetric positive definite compliance of unit order (coupled section).
-Mat6 coupled_compliance() {
-    Mat6 B;
-    for (int i = 0; i < 6; ++i) {
-        for (int j = 0; j < 6; ++j) B(i, j) = 0.3 * std::sin(1.0 + 3.0 * i + 7.0 * j);
-    }
-    return B * B.transpose() + Mat6::Identity();
-}
-
-// Two members meeting at a joint: a quarter-circle arc (radius 2, clamped root) and a twisted
-// straight member with a coupled section; follower and dead point and distributed loads.
-Model deformed_test_model() {
-    Model m;
-    m.points = {{"root", Vec3::Zero()}, {"joint", Vec3(2, 2, 0)}, {"tip", Vec3(2, 3.5, 0.8)}};
-    Section coupled;
-    coupled.compliance = coupled_compliance();
-    Member arc = test::member(
-        "arc", 0, 1, test::diagonal_section((Vec6() << 50, 20, 30, 2, 3, 4).finished()), 3);
-    arc.line.kind = LineKind::arc;
-    arc.line.center = Vec3(0, 2, 0);
-    Member straight = test::member("straight", 1, 2, coupled, 3);
-    straight.twist_end = 0.7;
-    m.members = {arc, straight};
-    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
-    PointLoad follower;
-    follower.point = 2;
-    follower.force = Vec3(0.3, -0.5, 0.9);
-    follower.moment = Vec3(-0.4, 0.2, 0.6);
-    follower.frame = LoadFrame::follower;
-    PointLoad dead;
-    dead.point = 1;
-    dead.force = Vec3(0.2, 0.1, -0.7);
-    DistributedLoad fd;
-    fd.member = 0;
-    fd.force = Vec3(0.1, 0.4, -0.3);
-    fd.moment = Vec3(0.2, -0.1, 0.3);
-    fd.frame = LoadFrame::follower;
-    DistributedLoad dd;
-    dd.member = 1;
-    dd.force = Vec3(-0.2, 0.1, 0.5);
-    dd.moment = Vec3(0.1, 0.1, -0.2);
-    m.point_loads = {follower, dead};
-    m.distributed_loads = {fd, dd};
-    return m;
-}
 
 // A deterministic state with rotations of 2.1–2.6 rad about axes that vary along the structure
 // and unit-order displacements and section resultants.
@@ -74,7 +29,8 @@ VecX deformed_state(const form::MixedStatics<P>& problem, double base_angle = 2.
     const form::MixedLayout& layout = problem.layout();
     auto set_rotation = [&](int offset, int k) {
         const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
-        x.segment<3>(offset) = P::from_rotation_vector((base_angle + 0.5 * std::sin(1.3 * k)) * axis);
+        x.segment<3>(offset) =
+            P::from_rotation_vector((base_angle + 0.5 * std::sin(1.3 * k)) * axis);
     };
     for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
         if (!layout.supported(n)) set_rotation(layout.node_offset(n) + 3, n);
@@ -89,7 +45,7 @@ BOOST_AUTO_TEST_SUITE(mixed_statics)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(reference_configuration_solves_the_unloaded_curved_structure, P,
                               Parameterizations) {
-    form::MixedStatics<P> problem(deformed_test_model());
+    form::MixedStatics<P> problem(test::deformed_test_model());
     problem.set_load_factor(0.0);
     VecX r;
     problem.evaluate(r, nullptr);
@@ -100,7 +56,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(reference_configuration_solves_the_unloaded_curved
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_at_deformed_state, P,
                               Parameterizations) {
-    form::MixedStatics<P> problem(deformed_test_model());
+    form::MixedStatics<P> problem(test::deformed_test_model());
     problem.set_load_factor(1.3);
     const VecX x0 = deformed_state(problem);
     BOOST_TEST(problem.max_rotation_angle() >= 0.0);
@@ -135,7 +91,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_at_deformed_s
 BOOST_AUTO_TEST_CASE(continuous_wm_jacobian_matches_central_differences_past_pi_and_2pi) {
     using P = param::WienerMilenkovicContinuous;
     for (const double base : {4.5, 7.0}) {
-        form::MixedStatics<P> problem(deformed_test_model());
+        form::MixedStatics<P> problem(test::deformed_test_model());
         problem.set_load_factor(1.3);
         const VecX x0 = deformed_state(problem, base);
         problem.set_state_vector(x0);
@@ -166,14 +122,15 @@ BOOST_AUTO_TEST_CASE(continuous_wm_map_reproduces_rotations_beyond_two_pi) {
         const P::P theta = P::from_rotation_vector(psi);
         BOOST_TEST((P::matrix(theta) - so3::exp_map(psi)).norm() < 1e-13);
         BOOST_TEST(std::abs(P::angle(theta) - phi) < 1e-13);
-        BOOST_TEST((P::material_tangent(theta) * P::material_tangent_inverse(theta) -
-                    Mat3::Identity()).norm() < 1e-12);
+        BOOST_TEST(
+            (P::material_tangent(theta) * P::material_tangent_inverse(theta) - Mat3::Identity())
+                .norm() < 1e-12);
     }
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(evaluation_keeps_the_pattern_and_allocates_nothing_after_first_call,
                               P, Parameterizations) {
-    form::MixedStatics<P> problem(deformed_test_model());
+    form::MixedStatics<P> problem(test::deformed_test_model());
     problem.set_load_factor(0.8);
     problem.set_state_vector(deformed_state(problem));
     VecX r;

@@ -6,25 +6,26 @@
 #include "core/errors.hpp"
 #include "core/kinsol_driver.hpp"
 #include "core/static_driver.hpp"
-#include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/mixed_statics_of.hpp"
+#include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
-using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues>;
+using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues, param::Quaternion>;
 
 BOOST_AUTO_TEST_SUITE(mixed_kinsol)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(kinsol_and_shared_newton_reach_the_same_rollup_state, P,
                               Parameterizations) {
     const double lambda = 0.8;
-    form::MixedStatics<P> newton(test::rollup_model(32));
+    form::MixedStaticsOf<P> newton(test::rollup_model(32));
     NewtonSettings ns;
     const StaticOutcome reference = run_static(newton, {lambda}, ns, nullptr);
     BOOST_TEST_REQUIRE((reference.status == SolveStatus::converged));
 
-    form::MixedStatics<P> kin(test::rollup_model(32));
+    form::MixedStaticsOf<P> kin(test::rollup_model(32));
     kin.set_load_factor(lambda);
     KinsolSettings ks;
     const KinsolOutcome out = solve_kinsol(kin, ks);

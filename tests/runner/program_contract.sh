@@ -93,6 +93,26 @@ for st in sec["stations"]:
 PY
 expect_input_error "kinsol with rotations composed" run cantilever-moment --set solver.driver=kinsol
 
+# The mixed formulation with the quaternion (four-component Eq. 48): the roll-up to λ = 4 on the
+# case's 16 elements, 20N + 6 unknowns, the norm drift in the message. Each element turns its end
+# node by the Cayley angle 4 atan(δ/4), δ = π/4, so the unwrapped tip angle is 16 · 4 atan(π/16)
+# = 4π − (4π)³/(48·16²) + 3.7e-3 (the next series term): 1e-2 separates it from 4π by 16×. The
+# equality to 1e-9 rad allows the case's Newton tolerance (1e-12 scaled) times the angle's
+# condition, with a margin of ≥ 100.
+"$rotbeam" run cantilever-moment-4 --formulation mixed --rotation quaternion --quiet \
+    --json "$work/quat.json" || fail "mixed quaternion run failed"
+python3 - "$work/quat.json" <<'PY' || fail "mixed quaternion run does not follow the contract"
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "converged" and r["formulation"] == "mixed", r["message"]
+assert r["rotation"] == "quaternion" and r["dofs"] == 20 * 16 + 6, r["dofs"]
+assert "nodes" in r["message"] and "elements" in r["message"], r["message"]
+tip = r["steps"][-1]["points"]["tip"]
+assert r["steps"][-1]["load_factor"] == 4.0
+assert abs(tip["rotation_angle"] - 64 * math.atan(math.pi / 16)) < 1e-9, tip["rotation_angle"]
+assert abs(tip["rotation_angle"] - (4 * math.pi - (4 * math.pi) ** 3 / (48 * 256))) < 1e-2
+PY
+
 # The gate can fail: a deliberately wrong published value makes verify exit 1.
 sed -E '0,/value: *\[/s/value: *\[[^]]*\]/value: [1000.0, 1000.0]/' "$src/cases/cantilever-moment.yaml" >"$work/wrong.yaml"
 "$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1

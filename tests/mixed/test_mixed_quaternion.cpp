@@ -1,0 +1,236 @@
+// The mixed statics with four rotation unknowns (the quaternion; formulations/mixed/
+// mixed_quaternion_*.hpp, issue 8 point 1): the unknown count, exactness of the reference
+// configuration, the analytic Jacobian against central differences at a strongly deformed state
+// off the unit sphere (one support, and two supports with the scale ρ), no heap allocation after
+// the first evaluation, and the norm conservation of the discrete Eq. 48.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "core/finite_difference.hpp"
+#include "core/static_driver.hpp"
+#include "formulations/mixed/mixed_quaternion_statics.hpp"
+#include "formulations/mixed/mixed_statics.hpp"
+#include "parameterizations/quaternion.hpp"
+#include "parameterizations/rotation_vector.hpp"
+#include "tests/mixed/allocation_counter.hpp"
+#include "tests/mixed/deformed_model.hpp"
+#include "tests/mixed/models.hpp"
+
+using namespace rotbeam;
+using Q = param::Quaternion;
+using Statics = form::MixedQuaternionStatics<Q>;
+
+namespace {
+
+// deformed_test_model with its tip also supported: a prescribed displacement and rotation
+// (scaled by the load factor), so the tip's quaternion is ρ q_given with ρ an unknown.
+Model two_support_model() {
+    Model m = test::deformed_test_model();
+    m.constraints.push_back(Constraint{
+        2, Constraint::Kind::prescribed, Vec3(0.1, 0.2, -0.1), Vec3(0.3, -0.2, 0.5), {}});
+    return m;
+}
+
+// A deterministic state: rotations of 2.1–2.6 rad about axes varying along the structure, each
+// quaternion scaled off the unit sphere by 0.8–1.2 (R = C(q)/|q|² must not care, its derivatives
+// must carry the 1/|q|² terms), ρ = −0.9 (the other sign of a closure), unit-order other entries.
+VecX deformed_state(const Statics& problem) {
+    VecX x(problem.size());
+    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 0.5 * std::sin(0.37 * i + 0.2);
+    const form::MixedQuaternionLayout& layout = problem.layout();
+    auto set_rotation = [&](int column, int k) {
+        const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
+        const double scale = 1.0 + 0.2 * std::sin(2.1 * k + 0.4);
+        x.segment<4>(column) =
+            scale * Q::from_rotation_vector((2.1 + 0.5 * std::sin(1.3 * k)) * axis);
+    };
+    for (int n = 0; n < static_cast<int>(layout.base.nodes.size()); ++n) {
+        if (!layout.supported(n)) set_rotation(layout.node_column(n) + 3, n);
+        if (layout.has_scale(n)) x[layout.node_column(n) + 6] = -0.9;
+    }
+    for (int e = 0; e < layout.base.element_count(); ++e) {
+        set_rotation(layout.element_column(e) + 3, e + 7);
+    }
+    return x;
+}
+
+// The joined beam of benchmarks.md §3 as a static case: two members from clamped roots
+// (0, ∓0.5, 0) to a common joint (1, 0, 0) m, the 0.1 × 0.05 m aluminium section, a follower force
+// 1e5 N along e3 at the joint (a large deflection: 0.75 m at load factor 4).
+Model joined_beam_model(int elements) {
+    Model m;
+    m.points = {{"root1", Vec3(0, -0.5, 0)}, {"root2", Vec3(0, 0.5, 0)}, {"joint", Vec3(1, 0, 0)}};
+    const double E = 70e9, G = E / 2.7, A = 0.005, k = 5.0 / 6.0;
+    const Vec6 stiffness = (Vec6() << E * A, k * G * A, k * G * A, G * 2.8625e-6,
+                            E * 1.0416666666666667e-6, E * 4.166666666666667e-6)
+                               .finished();
+    m.members = {test::member("member1", 0, 2, test::diagonal_section(stiffness), elements),
+                 test::member("member2", 1, 2, test::diagonal_section(stiffness), elements)};
+    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}},
+                     Constraint{1, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
+    PointLoad load;
+    load.point = 2;
+    load.force = Vec3(0, 0, 1e5);
+    load.frame = LoadFrame::follower;
+    m.point_loads = {load};
+    return m;
+}
+
+template <class Problem>
+Vec3 joined_beam_joint(Problem& problem) {
+    NewtonSettings s;
+    s.residual_tolerance = 1e-12;
+    s.increment_tolerance = 1e-12;
+    const StaticOutcome out = run_static(problem, {1.0, 2.0, 3.0, 4.0}, s, nullptr);
+    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
+    return problem.point_state(2).displacement;
+}
+
+double jacobian_error(const Model& model) {
+    Statics problem(model);
+    problem.set_load_factor(1.3);
+    const VecX x0 = deformed_state(problem);
+    problem.set_state_vector(x0);
+    BOOST_TEST(problem.max_rotation_angle() > 2.0);
+    VecX r;
+    SparseMatrix J;
+    problem.evaluate(r, &J);
+    const MatX J_fd = central_difference_jacobian(
+        [&problem](const VecX& x) {
+            problem.set_state_vector(x);
+            VecX rx;
+            problem.evaluate(rx, nullptr);
+            return rx;
+        },
+        x0);
+    const MatX J_an = MatX(J);
+    BOOST_TEST(J_an.cwiseAbs().maxCoeff() > 1.0);  // the comparison is not vacuous
+    return (J_an - J_fd).cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(mixed_quaternion_statics)
+
+// Per element u, q, F, M = 13 unknowns, per free node û, q̂ = 7, per support 6 reactions (+ ρ
+// after the first); rows 14 per element, 6 per node: square (mixed_quaternion_layout.hpp).
+BOOST_AUTO_TEST_CASE(unknown_count_is_square_for_one_and_two_supports) {
+    for (const int n : {1, 16, 256}) {
+        const Statics rollup(test::rollup_model(n));
+        BOOST_TEST(rollup.size() == 13 * n + 7 * n + 6);  // N elements, N free nodes, one clamp
+    }
+    const Statics one(test::deformed_test_model());
+    const int e = one.layout().base.element_count();
+    const int nodes = static_cast<int>(one.layout().base.nodes.size());
+    BOOST_TEST(e == 6);
+    BOOST_TEST(one.size() == 13 * e + 7 * (nodes - 1) + 6);
+    BOOST_TEST(one.size() == 14 * e + 6 * nodes);
+    const Statics two(two_support_model());
+    BOOST_TEST(two.size() == 13 * e + 7 * (nodes - 2) + 6 + 7);
+    BOOST_TEST(two.size() == 14 * e + 6 * nodes);
+}
+
+// A closed loop (a member from the tip back to the root) leaves one redundant closure row.
+BOOST_AUTO_TEST_CASE(closed_loop_is_refused_with_an_input_error) {
+    Model m = test::deformed_test_model();
+    m.members.push_back(test::member("back", 2, 0, m.members[0].sections[0].section, 2));
+    BOOST_CHECK_THROW(Statics{m}, InputError);
+}
+
+BOOST_AUTO_TEST_CASE(reference_configuration_solves_the_unloaded_curved_structure) {
+    for (const Model& m : {test::deformed_test_model(), two_support_model()}) {
+        Statics problem(m);
+        problem.set_load_factor(0.0);
+        VecX r;
+        problem.evaluate(r, nullptr);
+        BOOST_TEST(r.size() == problem.size());
+        BOOST_TEST(r.cwiseAbs().maxCoeff() < 1e-14);  // round-off of frames and chords only
+    }
+}
+
+// Everything is of unit order and |q| ∈ [0.8, 1.2]: the central-difference step h ≈ ∛ε ≈ 6e-6
+// leaves a truncation error h²|f'''|/6 ≲ 1e-9 for third derivatives ≲ 100 (R = C(q)/|q|² adds
+// factors 1/|q|ᵏ ≤ 1.25ᵏ to the three-parameter case's ≲ 30) and a round-off ε|f|/h ≲ 1e-10. 1e-6
+// keeps a margin of ≥ 100 while any wrong term (a sign, a missing 1/|q|² derivative, a
+// misplaced ρ column) is O(0.1–1).
+BOOST_AUTO_TEST_CASE(jacobian_matches_central_differences_at_deformed_state) {
+    const double one = jacobian_error(test::deformed_test_model());
+    const double two = jacobian_error(two_support_model());
+    BOOST_TEST_MESSAGE("quaternion: max |J − J_fd| = " << one << " (one support), " << two
+                                                       << " (two supports, ρ)");
+    BOOST_TEST(one < 1e-6);
+    BOOST_TEST(two < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(evaluation_keeps_the_pattern_and_allocates_nothing_after_first_call) {
+    Statics problem(two_support_model());
+    problem.set_load_factor(0.8);
+    problem.set_state_vector(deformed_state(problem));
+    VecX r;
+    SparseMatrix J;
+    problem.evaluate(r, &J);
+    const long nnz = J.nonZeros();
+    const int* const outer = J.outerIndexPtr();
+    const long before = test::allocation_count();
+    problem.evaluate(r, &J);
+    problem.evaluate(r, nullptr);
+    const long after = test::allocation_count();
+    BOOST_TEST(after - before == 0);
+    BOOST_TEST(J.nonZeros() == nnz);
+    BOOST_TEST(J.outerIndexPtr() == outer);
+    BOOST_TEST(problem.counters().inertial_terms == 0);  // statics: no momenta, no inertia
+}
+
+// The discrete Eq. 48 is a Cayley transform from node to node: |q̂| stays 1 to round-off at every
+// node, while the element's q_i = (q̂_a + q̂_b)/2 has |q_i| = cos(δ/4) for its relative rotation δ
+// (λπ/N on the roll-up, up to the O(ΔL³) error of the Cayley angle 4 atan(δ/4) vs δ).
+BOOST_AUTO_TEST_CASE(node_quaternions_keep_unit_norm_and_element_norms_are_the_midpoint_average) {
+    const int n = 16;
+    const double lambda = 1.0;
+    Statics problem(test::rollup_model(n));
+    NewtonSettings s;
+    s.residual_tolerance = 1e-12;
+    s.increment_tolerance = 1e-12;
+    const StaticOutcome out = run_static(problem, {lambda}, s, nullptr);
+    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
+    const form::QuaternionNormDrift d = problem.norm_drift();
+    const double expected = 1.0 - std::cos(lambda * kPi / n / 4.0);
+    BOOST_TEST_MESSAGE("roll-up λ = 1, N = 16: max ||q̂| − 1| = "
+                       << d.nodes << " (nodes), max ||q_i| − 1| = " << d.elements
+                       << " (elements; 1 − cos(δ/4) = " << expected << ")");
+    BOOST_TEST(d.nodes < 1e-13);  // a few ε per element over 16 Cayley steps
+    // The Cayley angle 4 atan(δ/4) differs from δ by δ²/48 relative (8e-4 here): 1 % is a margin.
+    BOOST_TEST(std::abs(d.elements - expected) < 0.01 * expected);
+    BOOST_TEST(out.message.find("nodes") != std::string::npos);  // the drift is in the message
+}
+
+// Two clamps: the second root's quaternion is ρ q_given. Along the continuation the path from the
+// first root arrives at the second with unit norm and the same sign, so ρ = 1 to round-off, and
+// the joint's displacement converges to the rotation vector's (same Eqs. 45–47, another discrete
+// Eq. 48) at the element's order 2: their difference falls by ≈ 4 per halving of the mesh.
+BOOST_AUTO_TEST_CASE(two_clamps_solve_with_unit_scale_and_second_order_agreement) {
+    std::vector<double> differences;
+    for (const int n : {8, 16, 32}) {
+        Statics quaternion(joined_beam_model(n));
+        form::MixedStatics<param::RotationVector> rotation_vector(joined_beam_model(n));
+        const Vec3 uq = joined_beam_joint(quaternion);
+        const Vec3 ur = joined_beam_joint(rotation_vector);
+        const form::MixedQuaternionLayout& layout = quaternion.layout();
+        const double rho = quaternion.state_vector()[layout.node_column(1) + 6];
+        BOOST_TEST_REQUIRE(layout.has_scale(1));
+        BOOST_TEST(std::abs(rho - 1.0) < 1e-12);
+        BOOST_TEST(quaternion.norm_drift().nodes < 1e-13);
+        differences.push_back((uq - ur).norm());
+        BOOST_TEST_MESSAGE("joined beam, " << n << " elements per member: joint " << uq.transpose()
+                                           << ", |u_q − u_rv| = " << differences.back()
+                                           << ", ρ − 1 = " << rho - 1.0);
+    }
+    for (std::size_t k = 1; k < differences.size(); ++k) {
+        const double ratio = differences[k - 1] / differences[k];
+        BOOST_TEST_MESSAGE("ratio " << ratio);
+        BOOST_TEST(ratio > 3.5);  // order 2 (4), pre-asymptotic at 8 elements per member
+        BOOST_TEST(ratio < 4.5);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
