@@ -13,6 +13,7 @@
 // normal as e3 (e2 points toward the centre). `twist` rotates e2, e3 about e1.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -104,6 +105,16 @@ struct DistributedLoad {
     Vec3 moment = Vec3::Zero();
     LoadFrame frame = LoadFrame::dead;
     TimeFunction time;
+};
+
+// A dead distributed load given as a function of the arc length s along one member (from its
+// start) and of the load factor λ: force and moment per unit reference length, inertial
+// components, already scaled (λ is not applied again). It is built in code, not read from case
+// files: the load of a manufactured solution (core/oracles/manufactured.hpp), which must vary
+// along the member and with λ in a way no case-file load can.
+struct LoadField {
+    int member = -1;
+    std::function<void(double s, double lambda, Vec3& force, Vec3& moment)> density;
 };
 
 struct Constraint {
@@ -201,6 +212,7 @@ struct Model {
     std::vector<Constraint> constraints;
     std::vector<PointLoad> point_loads;
     std::vector<DistributedLoad> distributed_loads;
+    std::vector<LoadField> load_fields;  // manufactured solutions only (see LoadField)
     Vec3 gravity = Vec3::Zero();
     Analysis analysis;
     Discretization discretization;

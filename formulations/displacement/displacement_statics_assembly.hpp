@@ -78,6 +78,14 @@ void DisplacementStatics<P>::distributed_load(const MeshElement& e, const Quadra
             df_dpsi.bottomRows<3>() -= so3::skew(mr);
         }
     }
+    for (const LoadField& l : model_.load_fields) {
+        if (l.member != e.member) continue;
+        ++counters_.distributed_load_terms;
+        Vec3 force, moment;
+        l.density(qp.s, lambda_, force, moment);  // dead: no load stiffness
+        f.head<3>() += force;
+        f.tail<3>() += moment;
+    }
     if (model_.gravity.squaredNorm() > 0.0) {
         ++counters_.gravity_terms;
         // Weight m g at the centre of mass η = R R^r η*: moment m η × g, δ(η × g) = g̃ η̃ δψ.
@@ -96,7 +104,8 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
     const MeshElement& e = mesh_.elements[k];
     const int nn = static_cast<int>(e.nodes.size());
     const bool jac = J != nullptr;
-    const bool loads = !model_.distributed_loads.empty() || model_.gravity.squaredNorm() > 0.0;
+    const bool loads = !model_.distributed_loads.empty() || !model_.load_fields.empty() ||
+                       model_.gravity.squaredNorm() > 0.0;
     gather_element(e, jac);
     InterpolatedRotation<P> rot;
     Vec6 f_ext = Vec6::Zero();

@@ -84,6 +84,7 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
         e.dN.col(q) = d / jac;
         QuadraturePoint& p = e.qp[q];
         p.weight = rule.weights[q] * jac;
+        p.s = s;
         p.Rr = g.frame(s);
         section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star, p.M_star);
     }

@@ -29,6 +29,7 @@ struct MeshNode {
 
 struct QuadraturePoint {
     double weight = 0.0;         // Gauss weight × ds/dξ
+    double s = 0.0;              // arc length along the member (load fields)
     Vec3 x0_prime = Vec3::Zero();  // x^r′ = Σ N_j′ x^r_j (interpolated from the nodes)
     Mat3 Rr = Mat3::Identity();    // R^r(s)
     Mat6 C_star = Mat6::Zero();    // material-axis stiffness

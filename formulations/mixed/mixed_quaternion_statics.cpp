@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "formulations/mixed/mixed_load_fields.hpp"
 #include "parameterizations/quaternion.hpp"
 
 namespace rotbeam::form {
@@ -150,6 +151,8 @@ requires(P::kSize == 4) void MixedQuaternionStatics<P>::assemble_element(int e, 
     residual.segment<3>(a + 3) += r.fpsi_minus;
     residual.segment<3>(b) += r.fu_plus;
     residual.segment<3>(b + 3) += r.fpsi_plus;
+    counters_.distributed_load_terms += add_mixed_load_fields(
+        model_.load_fields, el, lambda_, mixed_load_field_rule(), a, b, residual);
     residual.segment<MixedHomogeneousResult<K>::kRows>(layout_.element_row(e)) = r.kinematic;
     if (jacobian != nullptr) {
         const int c = layout_.element_column(e);

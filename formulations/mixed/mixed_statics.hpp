@@ -15,6 +15,7 @@
 #include "core/nonlinear_system.hpp"
 #include "formulations/mixed/mixed_element.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
+#include "formulations/mixed/mixed_load_fields.hpp"
 #include "parameterizations/concept.hpp"
 
 namespace rotbeam::form {

@@ -130,6 +130,8 @@ void MixedStatics<P>::assemble_element(int e, VecX& residual, SparseMatrix* jaco
     residual.segment<3>(a + 3) += r.fpsi_minus;
     residual.segment<3>(b) += r.fu_plus;
     residual.segment<3>(b + 3) += r.fpsi_plus;
+    counters_.distributed_load_terms += add_mixed_load_fields(
+        model_.load_fields, el, lambda_, mixed_load_field_rule(), a, b, residual);
     Vec3 ua, ca, ub, cb;
     node_motion(el.start_node, ua, ca);
     node_motion(el.end_node, ub, cb);
