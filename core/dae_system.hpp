@@ -30,6 +30,10 @@ class DaeSystem {
     // Characteristic magnitudes of the residual rows and of the unknowns (O(1) after division).
     virtual const VecX& residual_scale() const = 0;
     virtual const VecX& state_scale() const = 0;
+    // The scale of a Newton increment of each unknown: the state scale, or larger where an
+    // increment at the state scale times the tolerance would be below the unknown's round-off
+    // (a stiff section's force: see MixedDynamics).
+    virtual const VecX& increment_scale() const { return state_scale(); }
     virtual AssemblyCounters counters() const = 0;
     virtual std::string describe_state(const VecX& /*x*/) const { return {}; }
 };

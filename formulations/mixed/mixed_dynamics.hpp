@@ -59,6 +59,7 @@ class MixedDynamics : public DaeSystem {
     const VecX& differential() const override { return differential_; }
     const VecX& residual_scale() const override { return residual_scale_; }
     const VecX& state_scale() const override { return state_scale_; }
+    const VecX& increment_scale() const override { return increment_scale_; }
     AssemblyCounters counters() const override { return counters_; }
     std::string describe_state(const VecX& x) const override;
 
@@ -90,6 +91,7 @@ class MixedDynamics : public DaeSystem {
     VecX differential_;
     VecX residual_scale_;
     VecX state_scale_;
+    VecX increment_scale_;
     double load_time_floor_ = 0.0;
     AssemblyCounters counters_;
     MixedElementResult static_result_;
