@@ -13,7 +13,10 @@
 // Both start from consistent initial conditions: given the differential unknowns of X, the
 // algebraic unknowns of X and the differential unknowns of Ẋ are solved from F(t₀, X, Ẋ) = 0 (an
 // index-1 DAE: that Jacobian is regular) — by the shared Newton for the fixed-step scheme and by
-// IDACalcIC (IDA_YA_YDP_INIT) for IDA.
+// IDACalcIC (IDA_YA_YDP_INIT) for IDA; a start that is already consistent is kept. IDA excludes the
+// algebraic unknowns from its error test (IDASetSuppressAlg): they are functions of the
+// differential state, and for a higher-index system (a statically indeterminate structure) their
+// local error estimates do not shrink with the step.
 //
 // IDA callbacks are thin trampolines: SingularityError (a parameterization near its singular
 // angle) or a non-finite residual returns 1 (recoverable: IDA cuts the step), any other exception
@@ -70,9 +73,16 @@ struct DaeOutcome {
 using DaeOutput =
     std::function<void(double t, const VecX& x, const VecX& xdot, int newton_iterations)>;
 
-// Consistent initial conditions at t: keeps the differential unknowns of x, solves the algebraic
-// unknowns of x and the differential unknowns of xdot (the algebraic entries of xdot are zeroed).
-// `rate_time` scales the rates' Newton increments (state scale / rate_time; the time step).
+// True when F(t, x, xdot) vanishes to `tolerance` in the scaled max norm.
+bool already_consistent(DaeSystem& dae, double t, const VecX& x, const VecX& xdot,
+                        double tolerance);
+
+// Consistent initial conditions at t (a start that is already consistent is kept as it is: a
+// statically indeterminate structure makes the mixed DAE index 3, docs/mixed-dynamics.md, and the
+// index-1 initial-condition system is then singular): keeps the differential unknowns of x, solves
+// the algebraic unknowns of x and the differential unknowns of xdot (the algebraic entries of xdot
+// are zeroed). `rate_time` scales the rates' Newton increments (state scale / rate_time; the time
+// step).
 NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, VecX& xdot,
                                             const NewtonSettings& settings, double rate_time);
 

@@ -142,6 +142,7 @@ void configure(Resources& r, IdaUser& user, const DaeSettings& s, const VecX& x,
     check(IDASetErrHandlerFn(r.ida, ida_error, &user), "IDASetErrHandlerFn");
     check(IDASVtolerances(r.ida, s.relative_tolerance, r.atol), "IDASVtolerances");
     check(IDASetId(r.ida, r.id), "IDASetId");
+    check(IDASetSuppressAlg(r.ida, SUNTRUE), "IDASetSuppressAlg");
     check(IDASetMaxOrd(r.ida, s.max_order), "IDASetMaxOrd");
     check(IDASetMaxNumSteps(r.ida, s.max_steps), "IDASetMaxNumSteps");
     check(IDASetStopTime(r.ida, s.end_time), "IDASetStopTime");
@@ -201,14 +202,17 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     const double interval = s.output_interval > 0.0 ? s.output_interval : s.time_step;
     // Differential X given; algebraic X and differential Ẋ computed (the start may be far from
     // consistent: an initial velocity, a step load). tout1 only sets IDACalcIC's step scale.
-    int flag = IDACalcIC(r.ida, IDA_YA_YDP_INIT, s.start_time + interval);
+    const bool consistent =
+        already_consistent(dae, s.start_time, x, xdot, s.newton.residual_tolerance);
+    int flag =
+        consistent ? IDA_SUCCESS : IDACalcIC(r.ida, IDA_YA_YDP_INIT, s.start_time + interval);
     if (flag < 0) {
         outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
         outcome.message = failure("IDACalcIC", s.start_time, flag, user);
         statistics(r.ida, outcome);
         return outcome;
     }
-    check(IDAGetConsistentIC(r.ida, r.yy, r.yp), "IDAGetConsistentIC");
+    if (!consistent) check(IDAGetConsistentIC(r.ida, r.yy, r.yp), "IDAGetConsistentIC");
     x = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yy), x.size());
     xdot = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yp), x.size());
     if (output) output(s.start_time, x, xdot, 0);

@@ -154,8 +154,16 @@ class InitialConditions : public AdditiveSystem {
 
 }  // namespace
 
+bool already_consistent(DaeSystem& dae, double t, const VecX& x, const VecX& xdot,
+                        double tolerance) {
+    VecX r;
+    dae.evaluate(t, x, xdot, r, nullptr, nullptr);
+    return (r.array() / dae.residual_scale().array()).abs().maxCoeff() <= tolerance;
+}
+
 NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, VecX& xdot,
                                             const NewtonSettings& settings, double rate_time) {
+    if (already_consistent(dae, t, x, xdot, settings.residual_tolerance)) return {true};
     InitialConditions ic(dae, t, x, xdot, rate_time);
     const NewtonOutcome out = solve_newton(ic, settings);
     if (out.converged) ic.split(x, xdot);

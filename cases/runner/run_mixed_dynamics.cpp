@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "analyses.hpp"
+#include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -27,7 +28,7 @@ nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v
 // Returns false (status set) when the static solve fails; `lambda` is the last load factor.
 template <class P>
 bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& state,
-                  double& lambda) {
+                  double& lambda, bool record = true) {
     form::MixedStatics<P> statics(model);
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
@@ -36,6 +37,7 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
     const StaticOutcome out = run_static(statics, loads, settings, [&](const StepRecord& s) {
+        if (!record) return;
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = statics.point_state(static_cast<int>(i));
         }
@@ -110,6 +112,68 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
         "modes of the " + std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
 }
 
+// The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
+// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = 1e-6 × the state scales).
+bool use_ida(const DynamicSettings& d) {
+    if (d.integrator.empty() || d.integrator == "trapezoidal") return false;
+    if (d.integrator == "ida") return true;
+    throw InputError("analysis.integrator: unknown integrator '" + d.integrator +
+                     "' for the mixed formulation (trapezoidal | ida)");
+}
+
+template <class P>
+void dynamic(const Model& model, bool trace, nlohmann::json& result) {
+    const DynamicSettings& d = model.analysis.dynamics;
+    if (!(d.time_step > 0.0) || !(d.end_time > d.time_step)) {
+        throw InputError(
+            "analysis: a dynamic analysis needs time_step > 0 and end_time > time_step");
+    }
+    const bool ida = use_ida(d);
+    VecX state = VecX::Zero(form::MixedStatics<P>(model).size());
+    if (d.initial_state == "static" && has_static_load(model)) {
+        double lambda = 0.0;
+        Model at_start = model;
+        at_start.analysis.statics.load_factors = {1.0};  // the loads at t = 0
+        if (!static_state<P>(at_start, trace, result, state, lambda, false)) return;
+    }
+    // Loads are evaluated at max(t, 1e-6 Δt): their right limit at the start (mixed_dynamics.hpp).
+    form::MixedDynamics<P> dyn(model, d.end_time, 1e-6 * d.time_step);
+    result["dofs"] = dyn.size();
+    VecX x = dyn.from_static_state(state);
+    if (d.initial_velocity.squaredNorm() > 0.0)
+        dyn.set_translational_momenta(x, d.initial_velocity);
+    VecX xdot = VecX::Zero(dyn.size());
+    DaeSettings s;
+    s.end_time = d.end_time;
+    s.time_step = d.time_step;
+    s.output_interval = d.output_interval;
+    s.newton.max_iterations = model.solver.max_iterations;
+    if (trace) s.newton.trace = &std::cerr;
+    RotationUnwrapper unwrapper(model.points.size());
+    std::vector<PointState> states(model.points.size());
+    result["steps"] = nlohmann::json::array();
+    const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int iterations) {
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            states[i] = dyn.point_state(xs, t, static_cast<int>(i));
+        }
+        result["steps"].push_back(step_json(model, std::nullopt, t, iterations, states, unwrapper));
+    };
+    const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
+                               : integrate_trapezoidal(dyn, x, xdot, s, output);
+    result["dynamics"] = {{"integrator", ida ? "ida" : "trapezoidal"},
+                          {"steps", out.steps},
+                          {"newton_iterations", out.newton_iterations},
+                          {"residual_evaluations", out.residual_evaluations},
+                          {"jacobian_evaluations", out.jacobian_evaluations},
+                          {"error_test_failures", out.error_test_failures},
+                          {"nonlinear_failures", out.nonlinear_failures},
+                          {"max_order", ida ? s.max_order : 2},
+                          {"last_time", out.last_time}};
+    result["counters"] = counters_json(dyn.counters());
+    result["status"] = to_string(out.status);
+    result["message"] = out.message;
+}
+
 // The parameterizations the mixed dynamics instantiate (the quaternion's mixed kinematics are
 // still open, issue 8): f.template operator()<P>() or `available = false`.
 template <class F>
@@ -132,8 +196,8 @@ void dispatch_mixed(const Model& model, nlohmann::json& result, F&& f) {
 
 }  // namespace
 
-void run_mixed_dynamic(const Model& model, bool /*trace*/, nlohmann::json& result) {
-    report_unavailable(model, result);
+void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result) {
+    dispatch_mixed(model, result, [&]<class P>() { dynamic<P>(model, trace, result); });
 }
 
 void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result) {

@@ -10,9 +10,9 @@
 // kinematic rows of Eqs. 47–48 unchanged, and f_P, f_H (Eqs. 49–50) per element.
 //
 // Differential unknowns (rates appear in F): u, c, P, H of every element; algebraic: F, M and all
-// node unknowns. Loads and prescribed motion follow their time functions; they are evaluated at
-// max(t, t⁺) with t⁺ = start + 1e-6 Δt, the right limit at the start (a load released at t = 0,
-// benchmarks.md §8, is off for the initial conditions and every step).
+// node unknowns. Loads and prescribed motion follow their time functions; tables and ramps (which
+// may jump) are evaluated at max(t, t⁺) with t⁺ = start + 1e-6 Δt, their right limit at the start
+// (a load released at t = 0, benchmarks.md §8, is off for the initial conditions and every step).
 #pragma once
 
 #include <vector>
@@ -79,6 +79,7 @@ class MixedDynamics : public DaeSystem {
   private:
     void node_motion(const VecX& x, double t, int node, Vec3& u_hat, Vec3& c_hat) const;
     MixedElement loaded_element(int e, double t) const;
+    double time_value(const TimeFunction& f, double t) const;
     void assemble_element(int e, double t, const VecX& x, const VecX& xdot, VecX& residual,
                           SparseMatrix* J_x, SparseMatrix* J_xdot);
     void add_point_loads(double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;

@@ -113,6 +113,14 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
     }
 }
 
+// Tables and ramps may jump at the start (a release: 1 → 0 within 1e-12 s); they are evaluated
+// at their right limit there, max(t, t⁺). Sines and constants are continuous and evaluated at t.
+template <param::RotationParameterization P>
+double MixedDynamics<P>::time_value(const TimeFunction& f, double t) const {
+    const bool may_jump = f.kind == TimeFunction::Kind::table || f.kind == TimeFunction::Kind::ramp;
+    return f(may_jump ? std::max(t, load_time_floor_) : t);
+}
+
 template <param::RotationParameterization P>
 void MixedDynamics<P>::node_motion(const VecX& x, double t, int node, Vec3& u_hat,
                                    Vec3& c_hat) const {
@@ -129,7 +137,7 @@ void MixedDynamics<P>::node_motion(const VecX& x, double t, int node, Vec3& u_ha
         c_hat.setZero();
         return;
     }
-    const double s = con.time(std::max(t, load_time_floor_));  // prescribed motion in time
+    const double s = time_value(con.time, t);  // prescribed motion in time
     u_hat = s * con.displacement;
     c_hat = P::from_rotation_vector(s * con.rotation);
 }
@@ -139,10 +147,9 @@ void MixedDynamics<P>::node_motion(const VecX& x, double t, int node, Vec3& u_ha
 template <param::RotationParameterization P>
 MixedElement MixedDynamics<P>::loaded_element(int e, double t) const {
     MixedElement el = layout_.elements[static_cast<std::size_t>(e)];
-    const double tl = std::max(t, load_time_floor_);
     for (const DistributedLoad& load : model_.distributed_loads) {
         if (load.member != el.member) continue;
-        const double s = load.time(tl);
+        const double s = time_value(load.time, t);
         if (load.frame == LoadFrame::dead) {
             el.f_dead += s * load.force;
             el.m_dead += s * load.moment;
@@ -240,10 +247,9 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
 template <param::RotationParameterization P>
 void MixedDynamics<P>::add_point_loads(double t, const VecX& x, VecX& residual,
                                        SparseMatrix* J_x) const {
-    const double tl = std::max(t, load_time_floor_);
     for (const PointLoad& load : model_.point_loads) {
         const int o = numbering_.node_offset(load.point);
-        const double s = load.time(tl);
+        const double s = time_value(load.time, t);
         Vec3 u_hat, c_hat;
         node_motion(x, t, load.point, u_hat, c_hat);
         const Mat3 R = load.frame == LoadFrame::follower ? P::matrix(c_hat) : Mat3::Identity();
