@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/dae_driver.hpp"
+#include "core/errors.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
@@ -100,6 +101,60 @@ double max_difference(const std::vector<double>& a, const std::vector<double>& b
     double d = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
     return d;
+}
+
+// A scalar DAE ẋ − cos t = 0 whose evaluation is refused (SingularityError, as a parameterization
+// near its singular angle) or fails (another exception) the first `refusals` times it is asked
+// about a time past 0.5 — to check what the IDA trampolines make of it.
+class RefusingSystem : public DaeSystem {
+  public:
+    RefusingSystem(int refusals, bool fatal) : refusals_(refusals), fatal_(fatal) {
+        pattern_ = SparseMatrix(1, 1);
+        pattern_.insert(0, 0) = 0.0;
+        pattern_.makeCompressed();
+        ones_ = VecX::Ones(1);
+    }
+    int size() const override { return 1; }
+    void evaluate(double t, const VecX& x, const VecX& xdot, VecX& r, SparseMatrix* Jx,
+                  SparseMatrix* Jxd) override {
+        if (t > 0.5 && refused < refusals_) {
+            ++refused;
+            if (fatal_) throw std::logic_error("a fatal evaluation error");
+            throw SingularityError("toy", "evaluate", 6.28, "refused on purpose");
+        }
+        (void)x;
+        r.resize(1);
+        r[0] = xdot[0] - std::cos(t);
+        if (Jx != nullptr) {
+            *Jx = pattern_;
+            Jx->valuePtr()[0] = 0.0;
+        }
+        if (Jxd != nullptr) {
+            *Jxd = pattern_;
+            Jxd->valuePtr()[0] = 1.0;
+        }
+    }
+    const SparseMatrix& pattern() const override { return pattern_; }
+    const VecX& differential() const override { return ones_; }
+    const VecX& residual_scale() const override { return ones_; }
+    const VecX& state_scale() const override { return ones_; }
+    AssemblyCounters counters() const override { return {}; }
+    int refused = 0;
+
+  private:
+    int refusals_;
+    bool fatal_;
+    SparseMatrix pattern_;
+    VecX ones_;
+};
+
+DaeSettings toy_settings() {
+    DaeSettings s;
+    s.end_time = 2.0;
+    s.time_step = 0.1;
+    s.relative_tolerance = 1e-8;
+    s.absolute_tolerance = 1e-8;
+    return s;
 }
 
 }  // namespace
@@ -214,6 +269,33 @@ BOOST_AUTO_TEST_CASE(fixed_step_scheme_on_the_static_release_is_bounded_by_unres
         "fixed-step scheme, cantilever released from its static deflection", 2e-3, 0.1, false);
     for (const double e : errors) BOOST_TEST(e < 0.05 * 1.9e-3);
     BOOST_TEST(errors.back() < 0.1 * errors.front());
+}
+
+// A refusal (SingularityError) is returned to IDA as recoverable (> 0): IDA cuts the step and
+// retries, and the run completes with the right answer (sin 2, to the 1e-8 tolerances × the
+// ~1e2 steps' accumulation: 1e-5).
+BOOST_AUTO_TEST_CASE(ida_cuts_the_step_when_the_parameterization_refuses_a_state) {
+    RefusingSystem toy(3, false);
+    VecX x = VecX::Zero(1), xdot = VecX::Ones(1);
+    const DaeOutcome out = integrate_ida(toy, x, xdot, toy_settings(), {});
+    BOOST_TEST_MESSAGE("refusals " << toy.refused << ", " << out.message << ", x(2) = " << x[0]);
+    BOOST_TEST(out.status == SolveStatus::converged);
+    BOOST_TEST(toy.refused == 3);
+    BOOST_TEST(std::abs(x[0] - std::sin(2.0)) < 1e-5);
+}
+
+// Any other exception is fatal (< 0): IDA stops, the status says where and why, and no C++
+// exception crosses the C callbacks (it would terminate the test).
+BOOST_AUTO_TEST_CASE(ida_reports_a_fatal_callback_error_as_a_status) {
+    RefusingSystem toy(1, true);
+    VecX x = VecX::Zero(1), xdot = VecX::Ones(1);
+    const DaeOutcome out = integrate_ida(toy, x, xdot, toy_settings(), {});
+    BOOST_TEST_MESSAGE(out.message);
+    BOOST_TEST(out.status == SolveStatus::diverged);
+    BOOST_TEST(out.message.find("a fatal evaluation error") != std::string::npos);
+    BOOST_TEST(out.message.find("t = ") != std::string::npos);
+    BOOST_TEST(out.last_time > 0.4);
+    BOOST_TEST(out.last_time <= 0.6);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
