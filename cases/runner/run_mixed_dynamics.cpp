@@ -156,7 +156,16 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = dyn.point_state(xs, t, static_cast<int>(i));
         }
-        result["steps"].push_back(step_json(model, std::nullopt, t, iterations, states, unwrapper));
+        nlohmann::json step = step_json(model, std::nullopt, t, iterations, states, unwrapper);
+        // Supported points also carry their reactions (the node unknowns, inertial components):
+        // the root force and moment histories (seed 002 Fig. 11).
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            if (!dyn.layout().supported(static_cast<int>(i))) continue;
+            nlohmann::json& p = step["points"][model.points[i].name];
+            p["reaction_force"] = vec3(xs.segment<3>(6 * static_cast<int>(i)));
+            p["reaction_moment"] = vec3(xs.segment<3>(6 * static_cast<int>(i) + 3));
+        }
+        result["steps"].push_back(std::move(step));
     };
     const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
                                : integrate_trapezoidal(dyn, x, xdot, s, output);
