@@ -157,6 +157,24 @@ DaeSettings toy_settings() {
     return s;
 }
 
+// Total energy of a mixed state: kinetic ½ΔL [P; H]ᵀ I⁻¹ [P; H] plus strain ½ΔL [F; M]ᵀ S [F; M]
+// per element (constant momenta and resultants per element: exact for the discrete element).
+template <class P>
+double total_energy(const Model& model, const form::MixedDynamics<P>& dyn, const VecX& x) {
+    const form::MixedDynamicNumbering& nb = dyn.numbering();
+    double energy = 0.0;
+    for (int e = 0; e < nb.elements; ++e) {
+        const form::MixedElement& el = dyn.layout().elements[static_cast<std::size_t>(e)];
+        const int o = nb.element_offset(e);
+        const Vec6 momenta = x.segment<6>(o + nb.P());
+        const Vec6 resultants = x.segment<6>(o + nb.F());
+        const Mat6 I = form::mixed_element_mass(model, el);
+        energy += 0.5 * el.length *
+                  (momenta.dot(I.inverse() * momenta) + resultants.dot(el.S * resultants));
+    }
+    return energy;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_time_integration)
@@ -296,6 +314,45 @@ BOOST_AUTO_TEST_CASE(ida_reports_a_fatal_callback_error_as_a_status) {
     BOOST_TEST(out.message.find("t = ") != std::string::npos);
     BOOST_TEST(out.last_time > 0.4);
     BOOST_TEST(out.last_time <= 0.6);
+}
+
+// Energy: the undamped cantilever (benchmarks.md §8 section, no load after the start) given a
+// uniform initial velocity of 5 m/s across its axis (tip motion ≈ 0.1 m, rotations ≈ 0.15 rad:
+// nonlinear) keeps its total energy. The trapezoidal rule conserves quadratic invariants of
+// linear systems; for this nonlinear one the energy error is a discretization error that vanishes
+// like Δt² (measured: 6.9e-3, 2.3e-3, 6.7e-4 at Δt = 1e-4, 5e-5, 2.5e-5 over 0.2 s, ratios 3.1,
+// 3.4 on their way to 4 as the excited higher modes get resolved). A wrong sign or frame in the
+// momentum terms (the gyroscopic R (C^ab P)~ H ċ, V × P) would make the continuous equations do
+// work: the drift would tend to a non-zero limit, each halving dividing it by less and less
+// (→ 1). Asserted: every halving divides the drift by more than 2.5, the finest below 1e-3.
+BOOST_AUTO_TEST_CASE(fixed_step_scheme_keeps_the_energy_of_a_large_free_vibration) {
+    double drift[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+        const double dt = 1e-4 / (1 << k);
+        Model model = free_vibration(8);
+        model.point_loads.clear();
+        form::MixedDynamics<param::WienerMilenkovic> dyn(model, 0.2, 1e-6 * dt);
+        VecX x = VecX::Zero(dyn.size()), xdot = VecX::Zero(dyn.size());
+        dyn.set_translational_momenta(x, Vec3(0, 0, 5.0));
+        const double e0 = total_energy(model, dyn, x);
+        DaeSettings s;
+        s.end_time = 0.2;
+        s.time_step = dt;
+        s.output_interval = 0.01;
+        double peak = 0.0;
+        const DaeOutcome out =
+            integrate_trapezoidal(dyn, x, xdot, s, [&](double t, const VecX& xs, const VecX&, int) {
+                drift[k] = std::max(drift[k], std::abs(total_energy(model, dyn, xs) / e0 - 1.0));
+                peak = std::max(peak, std::abs(dyn.point_state(xs, t, 1).displacement.z()));
+            });
+        BOOST_REQUIRE_MESSAGE(out.status == SolveStatus::converged, out.message);
+        BOOST_TEST_MESSAGE("Δt " << dt << ": initial energy " << e0 << " J, max relative drift "
+                                 << drift[k] << ", peak tip u_z " << peak << " m");
+        BOOST_TEST(peak > 0.05);  // the motion is large
+    }
+    BOOST_TEST(drift[0] / drift[1] > 2.5);
+    BOOST_TEST(drift[1] / drift[2] > 2.5);
+    BOOST_TEST(drift[2] < 1e-3);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
