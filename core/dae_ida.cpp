@@ -224,15 +224,16 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
         flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);
         statistics(r.ida, outcome);
         if (flag < 0) {
-            outcome.status = user.singular && flag != IDA_TOO_MUCH_WORK ? SolveStatus::singular
-                                                                        : SolveStatus::diverged;
+            outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
             std::ostringstream m;
             m << failure("IDASolve", tret, flag, user) << ", step " << outcome.steps;
             outcome.message = m.str();
             outcome.last_time = tret;
             return outcome;
         }
-        user.singular = false;  // a recovered refusal is not a failure
+        // A refusal IDA recovered from is not a failure; one in the interval that failed (even as
+        // IDA_TOO_MUCH_WORK: the step cut again and again at the singular set) is the cause.
+        user.singular = false;
         user.message.clear();
         x = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yy), x.size());
         xdot = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yp), x.size());
