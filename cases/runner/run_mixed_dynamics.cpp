@@ -1,14 +1,216 @@
-// Dynamic and modal analyses of the mixed formulation (issue 9; analyses.hpp).
+// Dynamic and modal analyses of the mixed formulation (issue 9; analyses.hpp). This file holds the
+// parameterization switch for them, as make_problem.cpp does for statics.
+#include <iostream>
+#include <type_traits>
+
 #include "analyses.hpp"
+#include "core/dae_driver.hpp"
+#include "core/errors.hpp"
+#include "core/results.hpp"
+#include "core/static_driver.hpp"
+#include "formulations/mixed/mixed_dynamics.hpp"
+#include "formulations/mixed/mixed_modal.hpp"
+#include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/wm_continuous.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam {
 
-void run_mixed_dynamic(const Model& model, bool /*trace*/, nlohmann::json& result) {
-    report_unavailable(model, result);
+namespace {
+
+bool has_static_load(const Model& m) {
+    return !m.point_loads.empty() || !m.distributed_loads.empty() || m.gravity.squaredNorm() > 0.0;
 }
 
-void run_mixed_modal(const Model& model, bool /*trace*/, nlohmann::json& result) {
-    report_unavailable(model, result);
+nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
+
+// Solves the static state of `model` at its load factors (default {1}) and records the steps.
+// Returns false (status set) when the static solve fails; `lambda` is the last load factor.
+template <class P>
+bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& state,
+                  double& lambda, bool record = true) {
+    form::MixedStatics<P> statics(model);
+    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
+    if (trace) settings.trace = &std::cerr;
+    std::vector<double> loads = model.analysis.statics.load_factors;
+    if (loads.empty()) loads = {1.0};
+    RotationUnwrapper unwrapper(model.points.size());
+    std::vector<PointState> states(model.points.size());
+    const StaticOutcome out = run_static(statics, loads, settings, [&](const StepRecord& s) {
+        if (!record) return;
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            states[i] = statics.point_state(static_cast<int>(i));
+        }
+        result["steps"].push_back(
+            step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, unwrapper));
+    });
+    state = statics.state_vector();
+    lambda = out.last_converged_load_factor;
+    if (out.status == SolveStatus::converged) return true;
+    result["status"] = to_string(out.status);
+    result["message"] = "static state: " + out.message;
+    return false;
+}
+
+// Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
+// the largest free-node component, real part, largest component 1; rotations as spatial rotation
+// increments H_s(ĉ₀) δĉ.
+template <class P>
+nlohmann::json mode_json(const Model& model, const form::MixedDynamics<P>& dyn, const VecX& x0,
+                         const form::VecXc& shape, double frequency_hz, double growth_rate) {
+    const form::MixedLayout& layout = dyn.layout();
+    std::complex<double> peak = 0.0;
+    for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
+        if (layout.supported(n)) continue;
+        for (int k = 0; k < 6; ++k) {
+            const std::complex<double> v = shape[6 * n + k];
+            if (std::abs(v) > std::abs(peak)) peak = v;
+        }
+    }
+    nlohmann::json points = nlohmann::json::object();
+    for (size_t i = 0; i < model.points.size(); ++i) {
+        Vec3 d = Vec3::Zero(), r = Vec3::Zero();
+        const int n = static_cast<int>(i);
+        if (!layout.supported(n) && std::abs(peak) > 0.0) {
+            for (int k = 0; k < 3; ++k) {
+                d[k] = (shape[6 * n + k] / peak).real();
+                r[k] = (shape[6 * n + 3 + k] / peak).real();
+            }
+            r = P::spatial_tangent(x0.segment<3>(6 * n + 3)) * r;
+        }
+        points[model.points[i].name] = {{"displacement", vec3(d)}, {"rotation", vec3(r)}};
+    }
+    return {{"frequency_hz", frequency_hz}, {"growth_rate", growth_rate}, {"points", points}};
+}
+
+template <class P>
+void modal(const Model& model, bool trace, nlohmann::json& result) {
+    VecX state = VecX::Zero(form::MixedStatics<P>(model).size());
+    double lambda = 0.0;
+    if (model.analysis.modal.about_static_state && has_static_load(model)) {
+        if (!static_state<P>(model, trace, result, state, lambda)) return;
+    }
+    form::MixedDynamics<P> dyn(form::frozen_loads(model, lambda), 1.0);
+    result["dofs"] = dyn.size();
+    const VecX x0 = dyn.from_static_state(state);
+    VecX r;
+    SparseMatrix A, B;
+    dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
+    const form::DaeModalSolution s = form::solve_dae_modal(A, B, model.analysis.modal.modes);
+    result["frequencies_hz"] = s.frequencies_hz;
+    result["modes"] = nlohmann::json::array();
+    for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
+        result["modes"].push_back(
+            mode_json<P>(model, dyn, x0, s.shapes[i], s.frequencies_hz[i], s.growth_rates[i]));
+    }
+    result["modal"] = {{"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
+                       {"arnoldi_vectors", s.arnoldi_vectors},
+                       {"mass_rule", "midpoint (element momenta P, H; seed 002)"}};
+    result["counters"] = counters_json(dyn.counters());
+    result["status"] = "converged";
+    result["message"] =
+        "modes of the " + std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
+}
+
+// The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
+// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = 1e-6 × the state scales).
+bool use_ida(const DynamicSettings& d) {
+    if (d.integrator.empty() || d.integrator == "trapezoidal") return false;
+    if (d.integrator == "ida") return true;
+    throw InputError("analysis.integrator: unknown integrator '" + d.integrator +
+                     "' for the mixed formulation (trapezoidal | ida)");
+}
+
+template <class P>
+void dynamic(const Model& model, bool trace, nlohmann::json& result) {
+    const DynamicSettings& d = model.analysis.dynamics;
+    if (!(d.time_step > 0.0) || !(d.end_time > d.time_step)) {
+        throw InputError(
+            "analysis: a dynamic analysis needs time_step > 0 and end_time > time_step");
+    }
+    const bool ida = use_ida(d);
+    VecX state = VecX::Zero(form::MixedStatics<P>(model).size());
+    if (d.initial_state == "static" && has_static_load(model)) {
+        double lambda = 0.0;
+        Model at_start = model;
+        at_start.analysis.statics.load_factors = {1.0};  // the loads at t = 0
+        if (!static_state<P>(at_start, trace, result, state, lambda, false)) return;
+    }
+    // Loads are evaluated at max(t, 1e-6 Δt): their right limit at the start (mixed_dynamics.hpp).
+    form::MixedDynamics<P> dyn(model, d.end_time, 1e-6 * d.time_step);
+    result["dofs"] = dyn.size();
+    VecX x = dyn.from_static_state(state);
+    if (d.initial_velocity.squaredNorm() > 0.0)
+        dyn.set_translational_momenta(x, d.initial_velocity);
+    VecX xdot = VecX::Zero(dyn.size());
+    DaeSettings s;
+    s.end_time = d.end_time;
+    s.time_step = d.time_step;
+    s.output_interval = d.output_interval;
+    s.newton.max_iterations = model.solver.max_iterations;
+    if (trace) s.newton.trace = &std::cerr;
+    RotationUnwrapper unwrapper(model.points.size());
+    std::vector<PointState> states(model.points.size());
+    result["steps"] = nlohmann::json::array();
+    const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int iterations) {
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            states[i] = dyn.point_state(xs, t, static_cast<int>(i));
+        }
+        nlohmann::json step = step_json(model, std::nullopt, t, iterations, states, unwrapper);
+        // Supported points also carry their reactions (the node unknowns, inertial components):
+        // the root force and moment histories (seed 002 Fig. 11).
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            if (!dyn.layout().supported(static_cast<int>(i))) continue;
+            nlohmann::json& p = step["points"][model.points[i].name];
+            p["reaction_force"] = vec3(xs.segment<3>(6 * static_cast<int>(i)));
+            p["reaction_moment"] = vec3(xs.segment<3>(6 * static_cast<int>(i) + 3));
+        }
+        result["steps"].push_back(std::move(step));
+    };
+    const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
+                               : integrate_trapezoidal(dyn, x, xdot, s, output);
+    result["dynamics"] = {{"integrator", ida ? "ida" : "trapezoidal"},
+                          {"steps", out.steps},
+                          {"newton_iterations", out.newton_iterations},
+                          {"residual_evaluations", out.residual_evaluations},
+                          {"jacobian_evaluations", out.jacobian_evaluations},
+                          {"error_test_failures", out.error_test_failures},
+                          {"nonlinear_failures", out.nonlinear_failures},
+                          {"max_order", ida ? s.max_order : 2},
+                          {"last_time", out.last_time}};
+    result["counters"] = counters_json(dyn.counters());
+    result["status"] = to_string(out.status);
+    result["message"] = out.message;
+}
+
+// The parameterizations the mixed dynamics instantiate (the quaternion's mixed kinematics are
+// still open, issue 8): f.template operator()<P>() or `available = false`.
+template <class F>
+void dispatch_mixed(const Model& model, nlohmann::json& result, F&& f) {
+    const Discretization& d = model.discretization;
+    param::dispatch_parameterization(d.rotation, [&]<class P>() {
+        if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
+            if (d.wm_map == "continuous") {
+                f.template operator()<param::WienerMilenkovicContinuous>();
+                return;
+            }
+        }
+        if constexpr (P::kSize == 3) {
+            f.template operator()<P>();
+        } else {
+            report_unavailable(model, result);
+        }
+    });
+}
+
+}  // namespace
+
+void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result) {
+    dispatch_mixed(model, result, [&]<class P>() { dynamic<P>(model, trace, result); });
+}
+
+void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result) {
+    dispatch_mixed(model, result, [&]<class P>() { modal<P>(model, trace, result); });
 }
 
 }  // namespace rotbeam

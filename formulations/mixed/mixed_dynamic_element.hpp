@@ -1,0 +1,105 @@
+// The momentum terms of the mixed element (seed 002 Eqs. 45, 46, 49, 50 with the errata of
+// benchmarks.md) in closed form, and their derivatives with respect to the unknowns X and their
+// rates Ẋ. The static part of Eqs. 45–48 is mixed_element.hpp's; the dynamic element adds
+// these terms to it.
+//
+// The frame a of seed 002 is inertial here (ω_a = 0, v = 0: no moving reference frame). With
+// R = R(c) the relative rotation (seed 002's Cᵀ), A = R C^ab the element's total rotation,
+// H = H_m(c) the material tangent (seed 002's Q_a, Eq. 24), h = ΔL/2, and the momenta P, H_B in
+// deformed-frame components (Eq. 18, missing from the text: {P; H} = I {V; Ω}, I the 6×6 section
+// mass in material axes, fully populated; inverted here, so [V; Ω] = I⁻¹ [P; H]):
+//
+//   inertial part of f_u^∓  = h d/dt(A P)                 (45; the overbar is d/dt, errata)
+//   inertial part of f_ψ^∓  = h [d/dt(A H_B) + A (V × P)]  (46)
+//   f_P = A V − u̇                                         (49)
+//   f_H = Ω − C^ba H ċ                                     (50, "C_ba O_a" read C^ba Q_a)
+//
+// d/dt(A w) = A ẇ + Ṙ C^ab w and Ṙ C^ab w = −R (C^ab w)~ H ċ (from ∂(R v)/∂c = −R ṽ H). The
+// time derivative of the product is taken with ċ itself (not Ω), as the overbar says, so the
+// residual is exact for any (X, Ẋ); at a solution f_H = 0 makes the two agree (C^ba H ċ = Ω).
+// Both halves f^− and f^+ carry the same inertial term (each half-element's momentum).
+#pragma once
+
+#include "core/so3.hpp"
+#include "core/types.hpp"
+#include "formulations/mixed/mixed_layout.hpp"
+#include "parameterizations/concept.hpp"
+
+namespace rotbeam::form {
+
+// Rates of the element unknowns u, c, P, H (the kinematic unknowns F, M have none).
+struct MixedElementRates {
+    Vec3 u_dot = Vec3::Zero();
+    Vec3 c_dot = Vec3::Zero();
+    Vec3 P_dot = Vec3::Zero();
+    Vec3 H_dot = Vec3::Zero();
+};
+
+struct MixedInertiaResult {
+    Vec3 fu = Vec3::Zero();    // added to f_u^− and f_u^+
+    Vec3 fpsi = Vec3::Zero();  // added to f_ψ^− and f_ψ^+
+    Vec3 fP = Vec3::Zero();    // Eq. 49
+    Vec3 fH = Vec3::Zero();    // Eq. 50
+    // Rows [fu; fpsi; fP; fH]; columns [c; P; H] (x) and [u̇; ċ; Ṗ; Ḣ] (xdot).
+    Eigen::Matrix<double, 12, 9> J_x = Eigen::Matrix<double, 12, 9>::Zero();
+    Eigen::Matrix<double, 12, 12> J_xdot = Eigen::Matrix<double, 12, 12>::Zero();
+};
+
+// Evaluates the momentum terms of one element. `mass_inverse` is I⁻¹ (material axes of the
+// element). Jacobians only when `with_jacobian`.
+template <param::RotationParameterization P>
+void mixed_element_inertia(const MixedElement& el, const Mat6& mass_inverse, const Vec3& c,
+                           const Vec3& Pm, const Vec3& Hm, const MixedElementRates& rate,
+                           bool with_jacobian, MixedInertiaResult& out) {
+    static_assert(P::kSize == 3, "the additive mixed kinematics need three rotation parameters");
+    const double h = 0.5 * el.length;
+    const Mat3 R = P::matrix(c);
+    const Mat3 A = R * el.Cab;
+    const Mat3 Ht = P::material_tangent(c);
+    const Vec6 W = mass_inverse * (Vec6() << Pm, Hm).finished();  // [V; Ω], Eq. 18 inverted
+    const Vec3 V = W.head<3>();
+    const Vec3 Omega = W.tail<3>();
+    const Vec3 y = Ht * rate.c_dot;  // Rᵀ Ṙ = ỹ: the relative rotation's material rate
+    const Vec3 wP = el.Cab * Pm;
+    const Vec3 wH = el.Cab * Hm;
+    const Vec3 VxP = V.cross(Pm);
+    out.fu = h * (A * rate.P_dot + R * y.cross(wP));  // −R w̃_P y = R ỹ w_P
+    out.fpsi = h * (A * rate.H_dot + R * y.cross(wH) + A * VxP);
+    out.fP = A * V - rate.u_dot;
+    out.fH = Omega - el.Cab.transpose() * y;
+    if (!with_jacobian) return;
+    const Mat3 ytil = so3::skew(y);
+    const Mat3 D = P::material_tangent_derivative(c, rate.c_dot);  // ∂(H ċ)/∂c
+    const Mat3 dV_dP = mass_inverse.topLeftCorner<3, 3>();
+    const Mat3 dV_dH = mass_inverse.topRightCorner<3, 3>();
+    const Mat3 dW_dP = mass_inverse.bottomLeftCorner<3, 3>();
+    const Mat3 dW_dH = mass_inverse.bottomRightCorner<3, 3>();
+    const Mat3 Ptil = so3::skew(Pm);
+    Eigen::Matrix<double, 12, 9>& J = out.J_x;
+    // ∂/∂c of R z with z(c): −R z̃ H + R ∂z/∂c.
+    J.block<3, 3>(0, 0) = h * (-R * so3::skew(el.Cab * rate.P_dot) * Ht +
+                               R * so3::skew(wP.cross(y)) * Ht - R * so3::skew(wP) * D);
+    J.block<3, 3>(0, 3) = h * R * ytil * el.Cab;
+    J.block<3, 3>(0, 6).setZero();
+    J.block<3, 3>(3, 0) =
+        h * (-R * so3::skew(el.Cab * rate.H_dot) * Ht + R * so3::skew(wH.cross(y)) * Ht -
+             R * so3::skew(wH) * D - R * so3::skew(el.Cab * VxP) * Ht);
+    J.block<3, 3>(3, 3) = h * A * (so3::skew(V) - Ptil * dV_dP);
+    J.block<3, 3>(3, 6) = h * (R * ytil * el.Cab - A * Ptil * dV_dH);
+    J.block<3, 3>(6, 0) = -R * so3::skew(el.Cab * V) * Ht;
+    J.block<3, 3>(6, 3) = A * dV_dP;
+    J.block<3, 3>(6, 6) = A * dV_dH;
+    J.block<3, 3>(9, 0) = -el.Cab.transpose() * D;
+    J.block<3, 3>(9, 3) = dW_dP;
+    J.block<3, 3>(9, 6) = dW_dH;
+    Eigen::Matrix<double, 12, 12>& K = out.J_xdot;
+    K.setZero();
+    K.block<3, 3>(0, 3) = -h * R * so3::skew(wP) * Ht;
+    K.block<3, 3>(0, 6) = h * A;
+    K.block<3, 3>(3, 3) = -h * R * so3::skew(wH) * Ht;
+    K.block<3, 3>(3, 9) = h * A;
+    K.block<3, 3>(6, 0) = -Mat3::Identity();
+    K.block<3, 3>(9, 3) = -el.Cab.transpose() * Ht;
+}
+
+}  // namespace rotbeam::form

@@ -1,0 +1,68 @@
+// The non-template parts of the mixed dynamics (pattern, section mass) and the explicit
+// instantiations for every three-parameter parameterization (the quaternion's mixed kinematics
+// are not written yet: issue 8).
+#include "core/geometry.hpp"
+#include "formulations/mixed/mixed_dynamics_impl.hpp"
+#include "formulations/mixed/wm_continuous.hpp"
+#include "parameterizations/rodrigues.hpp"
+#include "parameterizations/rotation_vector.hpp"
+#include "parameterizations/wiener_milenkovic.hpp"
+
+namespace rotbeam::form {
+
+SparseMatrix mixed_dynamic_pattern(const MixedLayout& layout, const MixedDynamicNumbering& nb) {
+    using Triplet = Eigen::Triplet<double, int>;
+    std::vector<Triplet> t;
+    auto block = [&t](int r0, int c0, int rows, int cols) {
+        for (int j = 0; j < cols; ++j) {
+            for (int i = 0; i < rows; ++i) t.emplace_back(r0 + i, c0 + j, 0.0);
+        }
+    };
+    const int eb = nb.element_block();
+    for (int n = 0; n < nb.nodes; ++n) block(nb.node_offset(n), nb.node_offset(n), 6, 6);
+    for (int e = 0; e < nb.elements; ++e) {
+        const MixedElement& el = layout.elements[static_cast<std::size_t>(e)];
+        const int o = nb.element_offset(e);
+        const int a = nb.node_offset(el.start_node);
+        const int b = nb.node_offset(el.end_node);
+        block(a, o + nb.c(), 6, eb - nb.c());  // f_u, f_ψ against c, F, M, P, H (and rates)
+        block(b, o + nb.c(), 6, eb - nb.c());
+        block(o, o, eb, eb);    // kinematic and momentum rows against the element's unknowns
+        block(o, a, 6, 6);      // −û_a, −ĉ_a
+        block(o + 6, b, 6, 6);  // +û_b, +ĉ_b
+    }
+    SparseMatrix J(nb.size(), nb.size());
+    J.setFromTriplets(t.begin(), t.end());  // duplicates are summed (all zero)
+    J.makeCompressed();
+    return J;
+}
+
+Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
+    const Member& member = model.members[static_cast<std::size_t>(element.member)];
+    auto mass_of = [&](const SectionStation& s) -> Mat6 {
+        if (!s.section.mass) {
+            throw InputError("member '" + member.name + "', section '" + s.section.name +
+                             "': the dynamic and modal analyses need a mass matrix (density or "
+                             "mass)");
+        }
+        return *s.section.mass;
+    };
+    const std::vector<SectionStation>& st = member.sections;
+    const double fraction = element.s_mid / ReferenceGeometry(model, element.member).length();
+    if (st.size() == 1 || fraction <= st.front().s_fraction) return mass_of(st.front());
+    for (std::size_t k = 1; k < st.size(); ++k) {
+        if (fraction <= st[k].s_fraction) {
+            const double w =
+                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
+            return (1.0 - w) * mass_of(st[k - 1]) + w * mass_of(st[k]);
+        }
+    }
+    return mass_of(st.back());
+}
+
+template class MixedDynamics<param::WienerMilenkovic>;
+template class MixedDynamics<param::Rodrigues>;
+template class MixedDynamics<param::RotationVector>;
+template class MixedDynamics<param::WienerMilenkovicContinuous>;
+
+}  // namespace rotbeam::form

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The runner's mixed dynamic and modal analyses (issue 9; cases/runner/run_mixed_dynamics.cpp):
+# a short joined-beam response per three-parameter parameterization and integrator writes its JSON
+# and CSV history with the joint's columns, a damped case and an unknown integrator are refused
+# as bad input, and the joined beam's modes are reported with growth rates.
+# Usage: mixed_dynamics_contract.sh ROTBEAM SOURCE_DIR
+set -u
+rotbeam=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+for rotation in wiener-milenkovic rodrigues rotation-vector; do
+    for integrator in trapezoidal ida; do
+        out="$work/$rotation-$integrator"
+        "$rotbeam" run "$src/cases/joined-beam-follower.yaml" --formulation mixed --rotation "$rotation" \
+            --set analysis.integrator=$integrator --set analysis.end_time=0.05 \
+            --set analysis.output_interval=0.01 --out "$out" --json "$out.json" >/dev/null 2>&1
+        rc=$?
+        [ $rc -eq 0 ] || fail "$rotation/$integrator: exit $rc"
+        csv=$(ls "$out"/*.csv 2>/dev/null | head -1)
+        [ -n "$csv" ] || { fail "$rotation/$integrator: no CSV history"; continue; }
+        head -1 "$csv" | grep -q "joint_uz" || fail "$rotation/$integrator: CSV header lacks joint_uz"
+        # One row per output time 0, 0.01, …, 0.05 plus the header.
+        [ "$(wc -l <"$csv")" -eq 7 ] || fail "$rotation/$integrator: $(wc -l <"$csv") CSV lines, expected 7"
+        python3 - "$out.json" "$integrator" <<'PY' || fail "$rotation/$integrator: JSON contract"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "converged", r["message"]
+assert r["dynamics"]["integrator"] == sys.argv[2]
+assert r["dofs"] == 486
+steps = r["steps"]
+assert abs(steps[-1]["time"] - 0.05) < 1e-12, steps[-1]["time"]
+# The follower force 1e5 sin(20 t) pushes the joint up: u_z > 0 at t = 0.05 s.
+assert steps[-1]["points"]["joint"]["displacement"][2] > 0.0
+assert "reaction_force" in steps[-1]["points"]["root1"]
+PY
+    done
+done
+
+# Bad input: an unknown integrator, and damping (the mixed equations are undamped).
+"$rotbeam" run "$src/cases/joined-beam-dead.yaml" --formulation mixed --rotation rodrigues \
+    --set analysis.integrator=rk4 >"$work/out" 2>"$work/err"
+[ $? -eq 2 ] || fail "unknown integrator not refused with exit 2"
+grep -q "trapezoidal | ida" "$work/err" || fail "unknown integrator message: $(cat "$work/err")"
+sed -E 's/^(    density: 2700)$/\1\n    damping: [0, 0, 0, 1.0e-4, 1.0e-4, 1.0e-4]/' \
+    "$src/cases/joined-beam-dead.yaml" >"$work/damped.yaml"
+grep -q "damping:" "$work/damped.yaml" || fail "could not make the damped case"
+"$rotbeam" run "$work/damped.yaml" --formulation mixed --rotation rodrigues --json "$work/d.json" \
+    >"$work/out" 2>"$work/err"
+[ $? -eq 2 ] || fail "damping not refused with exit 2: $(cat "$work/err")"
+grep -q "damping is not available in the mixed dynamics" "$work/err" || fail "damping message: $(cat "$work/err")"
+[ ! -e "$work/d.json" ] || fail "a result file was written for a refused damped case"
+
+# Modal: Table III's mesh, five modes with their growth rates (undamped: round-off).
+"$rotbeam" run "$src/cases/joined-beam.yaml" --json "$work/modal.json" >/dev/null 2>&1
+python3 - "$work/modal.json" <<'PY' || fail "modal JSON contract"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "converged", r["message"]
+f = r["frequencies_hz"]
+assert len(f) == 5 and f == sorted(f), f
+assert all(abs(m["growth_rate"]) < 1e-6 * 2 * 3.14159 * m["frequency_hz"] for m in r["modes"])
+assert abs(r["modes"][0]["points"]["joint"]["displacement"][2]) > 0.1  # mode 1: out of plane
+PY
+
+if [ $failures -eq 0 ]; then echo "mixed dynamics contract: all checks passed"; exit 0; fi
+echo "mixed dynamics contract: $failures failures"
+exit 1
