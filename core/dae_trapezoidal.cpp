@@ -163,7 +163,11 @@ bool already_consistent(DaeSystem& dae, double t, const VecX& x, const VecX& xdo
 
 NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, VecX& xdot,
                                             const NewtonSettings& settings, double rate_time) {
-    if (already_consistent(dae, t, x, xdot, settings.residual_tolerance)) return {true};
+    if (already_consistent(dae, t, x, xdot, settings.residual_tolerance)) {
+        NewtonOutcome consistent;
+        consistent.converged = true;
+        return consistent;
+    }
     InitialConditions ic(dae, t, x, xdot, rate_time);
     const NewtonOutcome out = solve_newton(ic, settings);
     if (out.converged) ic.split(x, xdot);
