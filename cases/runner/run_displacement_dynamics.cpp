@@ -88,14 +88,14 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
 }
 
 // Reactions of the constrained named points: the force and moment the support exerts on the beam
-// (minus the residual rows the support's node would have), inertial axes.
+// (the residual rows the support's node would have), inertial axes.
 template <class P>
 nlohmann::json reactions_json(const Model& model, form::DisplacementDynamics<P>& problem) {
     nlohmann::json out = nlohmann::json::object();
     for (const Constraint& c : model.constraints) {
         const int node = problem.mesh().point_node[static_cast<size_t>(c.point)];
         if (node < 0) continue;
-        const Vec6 r = -problem.reaction(node);
+        const Vec6 r = problem.reaction(node);
         out[model.points[static_cast<size_t>(c.point)].name] = {{"force", vec3(r.head(3))},
                                                                 {"moment", vec3(r.tail(3))}};
     }

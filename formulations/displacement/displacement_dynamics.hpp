@@ -82,8 +82,9 @@ class DisplacementDynamics : public SecondOrderProblem {
     AssemblyCounters counters() const;
     BeamEnergy energy();
     // Reaction at a constrained node: the residual rows it would have (elastic, damping, inertial
-    // and distributed-load terms of its elements), i.e. the force and moment the support exerts on
-    // the beam is −reaction. Inertial axes.
+    // and distributed-load terms of its elements). The support load R is an external load on the
+    // node, r_a − R = 0, so this is the force and moment the support exerts on the beam (inertial
+    // axes; a +z tip force on a cantilever gives a −z root force).
     Vec6 reaction(int node);
 
     const Mesh& mesh() const { return statics_.mesh(); }
@@ -92,6 +93,9 @@ class DisplacementDynamics : public SecondOrderProblem {
     const Vec3& node_displacement(int node) const { return statics_.node_displacement(node); }
     const Params& node_rotation(int node) const { return statics_.node_rotation(node); }
     bool damped() const { return damped_; }
+    // ∫ [ε˙; κ˙]ᵀ D [ε˙; κ˙] ds with seed 000 Eq. 10's spatial rates: the power the damping law
+    // dissipates at the current state (its lack of objectivity: benchmarks.md Errata).
+    double damping_dissipation();
 
   private:
     void update_iterate();

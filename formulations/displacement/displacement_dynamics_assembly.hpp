@@ -201,6 +201,31 @@ void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double 
     }
 }
 
+template <param::RotationParameterization P>
+double DisplacementDynamics<P>::damping_dissipation() {
+    double power = 0.0;
+    InterpolatedRotation<P> rot;
+    for (const MeshElement& e : mesh().elements) {
+        const int nn = static_cast<int>(e.nodes.size());
+        gather(e);
+        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
+            interpolate(e, q, rot);
+            Vec3 omega = Vec3::Zero(), omega_p = Vec3::Zero(), udot_p = Vec3::Zero();
+            for (int j = 0; j < nn; ++j) {
+                omega += e.N(j, q) * v_[e.nodes[j]].tail<3>();
+                omega_p += e.dN(j, q) * v_[e.nodes[j]].tail<3>();
+                udot_p += e.dN(j, q) * v_[e.nodes[j]].head<3>();
+            }
+            Vec6 rates;
+            rates.head<3>() = udot_p - omega.cross(rot.R * e.qp[q].x0_prime);
+            rates.tail<3>() = omega.cross(rot.kappa) + omega_p;
+            const Mat6 D = rotate_section(e.qp[q].D_star, rot.R * e.qp[q].Rr);
+            power += e.qp[q].weight * rates.dot(D * rates);
+        }
+    }
+    return power;
+}
+
 // Kinetic energy on the mass points (the quadratic form of the assembled mass matrix), strain
 // energy on the stiffness points: ½ eᵀ C e with C = Q C* Qᵀ equals ½ e*ᵀ C* e*, e* = Qᵀ e.
 template <param::RotationParameterization P>
@@ -235,7 +260,7 @@ BeamEnergy DisplacementDynamics<P>::energy() {
 
 // The residual rows a constrained node would have: its elements' elastic, damping and inertial
 // terms minus distributed loads and gravity (point loads on a support are carried by it
-// directly and are not included). −reaction is the support's force and moment on the beam.
+// directly and are not included): the support's force and moment on the beam.
 template <param::RotationParameterization P>
 Vec6 DisplacementDynamics<P>::reaction(int node) {
     Vec6 out = Vec6::Zero();
