@@ -58,13 +58,14 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
     double next_output = settings.start_time + every;
     if (on_output) on_output({settings.start_time, 0});
     double t = settings.start_time;
+    NewtonWorkspace workspace;  // one per run: buffers and the LU analysis are reused per step
     for (long n = 1; n <= steps; ++n) {
         const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
         const double h = t_next - t;
         NewtonOutcome out;
         try {
             problem.begin_step(t_next, h, scheme);
-            out = solve_newton(problem, newton);
+            out = solve_newton(problem, newton, workspace);
         } catch (const SingularityError& e) {
             out.converged = false;
             out.singular = true;

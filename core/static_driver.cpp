@@ -120,16 +120,45 @@ double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx,
 
 }  // namespace
 
+struct NewtonWorkspace::Impl {
+    VecX r, dx;
+    SparseMatrix J;
+    DampingWork damping;
+    SparseLU lu;
+    bool analyzed = false;
+    int size = -1;
+    Eigen::Index pattern_nonzeros = -1;
+};
+
+NewtonWorkspace::NewtonWorkspace() : impl(std::make_unique<Impl>()) {}
+NewtonWorkspace::~NewtonWorkspace() = default;
+
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
+    NewtonWorkspace workspace;
+    return solve_newton(system, settings, workspace);
+}
+
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings,
+                           NewtonWorkspace& workspace) {
     const int n = system.size();
     NewtonOutcome out;
-    VecX r(n), dx(n);
-    SparseMatrix J(n, n);
-    DampingWork damping;
-    damping.r_trial.resize(n);
-    SparseLU lu;
+    NewtonWorkspace::Impl& w = *workspace.impl;
+    if (w.size != n) {
+        w.r.resize(n);
+        w.dx.resize(n);
+        w.damping.r_trial.resize(n);
+        w.analyzed = false;
+        w.damping.trial_analyzed = false;
+        w.size = n;
+    }
+    w.damping.trial_jacobian_ready = false;
+    VecX& r = w.r;
+    VecX& dx = w.dx;
+    SparseMatrix& J = w.J;
+    DampingWork& damping = w.damping;
+    SparseLU& lu = w.lu;
     double previous_alpha = 1.0;
-    bool analyzed = false;
+    bool& analyzed = w.analyzed;
     const VecX& rscale = system.residual_scale();
     const VecX& xscale = system.increment_scale();
     double last_increment = std::numeric_limits<double>::infinity();
@@ -183,9 +212,10 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
             out.failure = s.str();
             return out;
         }
-        if (!analyzed) {
+        if (!analyzed || J.nonZeros() != w.pattern_nonzeros) {
             lu.analyzePattern(J);
             analyzed = true;
+            w.pattern_nonzeros = J.nonZeros();
         }
         lu.factorize(J);
         if (lu.info() != Eigen::Success) {

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,17 @@ struct NewtonOutcome {
 
 // One Newton solve at the current load: the in-house damped Newton along the retraction.
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings);
+
+// Buffers of solve_newton kept between calls on the same system (a time integration solves one
+// Newton per step): vectors, the Jacobian, the LU and its symbolic analysis are set up once.
+struct NewtonWorkspace {
+    NewtonWorkspace();
+    ~NewtonWorkspace();
+    struct Impl;
+    std::unique_ptr<Impl> impl;
+};
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings,
+                           NewtonWorkspace& workspace);
 
 struct StepRecord {
     double load_factor = 0.0;
