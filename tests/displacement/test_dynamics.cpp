@@ -134,9 +134,9 @@ BOOST_AUTO_TEST_CASE(energy_is_conserved_at_small_amplitude_over_1000_steps) {
 // deflection under a 150 N tip force (tip deflection ≈ 0.28 L, rotation ≈ 0.4 rad), ρ∞ = 1, no
 // damping, Δt = 0.5 ms (240 steps per period of 0.12 s), 12 s ≈ 100 periods. The Lie-group
 // trapezoidal rule does not conserve the energy of the non-linear system exactly, but it must
-// stay bounded: the energy oscillates within a band (measured 1.45e-4 of E0) and the band does
-// not move (the means over the first and last 10 periods differ by 1.2e-6). The bounds below
-// are 7× and 8× those values; an energy instability (at Δt = 2 ms with the v˙_{n+1} = v˙_n
+// stay bounded: the energy oscillates within a band (measured 1.49e-4 of E0) and the band does
+// not move (the means over the first and last 10 periods differ by 1.4e-6). The bounds below
+// are about 7× those values; an energy instability (at Δt = 2 ms with the v˙_{n+1} = v˙_n
 // predictor the energy grew 1e5-fold within 110 steps) fails both by orders of magnitude.
 BOOST_AUTO_TEST_CASE(energy_is_bounded_without_drift_at_large_amplitude_over_100_periods) {
     const double E = 2.1e11, G = E / 2.6, h = 0.01, A = h * h, I = h * h * h * h / 12.0;
