@@ -58,7 +58,9 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
     double next_output = settings.start_time + every;
     if (on_output) on_output({settings.start_time, 0});
     double t = settings.start_time;
-    NewtonWorkspace workspace;  // one per run: buffers and the LU analysis are reused per step
+    // One per run: buffers, the LU analysis and (KLU, refactored in place) the factors' memory are
+    // reused by every step, so a step allocates nothing in the Newton driver.
+    NewtonWorkspace workspace(true);
     for (long n = 1; n <= steps; ++n) {
         const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
         const double h = t_next - t;

@@ -1,21 +1,25 @@
 #include "core/static_driver.hpp"
 
-#include <Eigen/SparseLU>
 #include <cmath>
-#include <ostream>
 #include <limits>
+#include <ostream>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/sparse_lu.hpp"
 
 namespace rotbeam {
 
 const char* to_string(SolveStatus s) {
     switch (s) {
-        case SolveStatus::converged: return "converged";
-        case SolveStatus::diverged: return "diverged";
-        case SolveStatus::singular: return "singular";
-        case SolveStatus::error: return "error";
+        case SolveStatus::converged:
+            return "converged";
+        case SolveStatus::diverged:
+            return "diverged";
+        case SolveStatus::singular:
+            return "singular";
+        case SolveStatus::error:
+            return "error";
     }
     return "error";
 }
@@ -46,8 +50,6 @@ double scaled_max_norm(const VecX& v, const VecX& scale) {
     return m;
 }
 
-using SparseLU = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
-
 // Root-mean-square of v_i / scale_i (the increment norm of the monotonicity test).
 double scaled_rms(const VecX& v, const VecX& scale) {
     return std::sqrt((v.array() / scale.array()).square().mean());
@@ -68,10 +70,11 @@ double scaled_rms(const VecX& v, const VecX& scale) {
 // test is made with the true correction (one more Jacobian, kept for the next iteration). On the
 // precessing helix this takes the iterations per load step from 20–170 to 4–10.
 struct DampingWork {
+    explicit DampingWork(bool refactor_in_place) : lu_trial(refactor_in_place) {}
     VecX r_trial, dx_bar;
+    VecX step;  // α δ: a named vector, since Ref<const VecX> of an expression is a heap temporary
     SparseMatrix J_trial;
-    SparseLU lu_trial;
-    bool trial_analyzed = false;
+    SparseLUSolver lu_trial;
     bool trial_jacobian_ready = false;  // J_trial, r_trial belong to the accepted state
 };
 
@@ -79,31 +82,29 @@ bool exact_correction_accepts(NonlinearSystem& system, DampingWork& w, const Vec
                               double limit) {
     system.evaluate(w.r_trial, &w.J_trial);
     if (!w.r_trial.allFinite()) return false;
-    if (!w.trial_analyzed) {
-        w.lu_trial.analyzePattern(w.J_trial);
-        w.trial_analyzed = true;
-    }
-    w.lu_trial.factorize(w.J_trial);
-    if (w.lu_trial.info() != Eigen::Success) return false;
-    w.dx_bar = -w.lu_trial.solve(w.r_trial);
+    if (!w.lu_trial.factorize(w.J_trial)) return false;
+    w.lu_trial.solve(w.r_trial, w.dx_bar);
+    w.dx_bar *= -1.0;
     const double norm = scaled_rms(w.dx_bar, xscale);
     w.trial_jacobian_ready = std::isfinite(norm) && norm <= limit;
     return w.trial_jacobian_ready;
 }
 
-double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx,
-                   const VecX& xscale, double alpha_start, DampingWork& w, bool& saw_singular) {
+double damped_step(NonlinearSystem& system, SparseLUSolver& lu, const VecX& dx, const VecX& xscale,
+                   double alpha_start, DampingWork& w, bool& saw_singular) {
     constexpr double kMinAlpha = 1.0 / 8192.0;
     const double norm_dx = scaled_rms(dx, xscale);
     w.trial_jacobian_ready = false;
     system.save_state(NonlinearSystem::kLineSearchSlot);
     for (double alpha = alpha_start; alpha >= kMinAlpha; alpha *= 0.5) {
         try {
-            system.retract(alpha * dx);
+            w.step = alpha * dx;
+            system.retract(w.step);
             system.evaluate(w.r_trial, nullptr);
             if (w.r_trial.allFinite()) {
                 const double limit = (1.0 - 0.25 * alpha) * norm_dx;
-                w.dx_bar = -lu.solve(w.r_trial);
+                lu.solve(w.r_trial, w.dx_bar);
+                w.dx_bar *= -1.0;
                 const double norm_bar = scaled_rms(w.dx_bar, xscale);
                 if (std::isfinite(norm_bar) && norm_bar <= limit) return alpha;
                 if (alpha == alpha_start && exact_correction_accepts(system, w, xscale, limit)) {
@@ -121,16 +122,16 @@ double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx,
 }  // namespace
 
 struct NewtonWorkspace::Impl {
+    explicit Impl(bool refactor_in_place) : damping(refactor_in_place), lu(refactor_in_place) {}
     VecX r, dx;
     SparseMatrix J;
     DampingWork damping;
-    SparseLU lu;
-    bool analyzed = false;
+    SparseLUSolver lu;
     int size = -1;
-    Eigen::Index pattern_nonzeros = -1;
 };
 
-NewtonWorkspace::NewtonWorkspace() : impl(std::make_unique<Impl>()) {}
+NewtonWorkspace::NewtonWorkspace(bool refactor_in_place)
+    : impl(std::make_unique<Impl>(refactor_in_place)) {}
 NewtonWorkspace::~NewtonWorkspace() = default;
 
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
@@ -147,8 +148,8 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
         w.r.resize(n);
         w.dx.resize(n);
         w.damping.r_trial.resize(n);
-        w.analyzed = false;
-        w.damping.trial_analyzed = false;
+        w.damping.dx_bar.resize(n);
+        w.damping.step.resize(n);
         w.size = n;
     }
     w.damping.trial_jacobian_ready = false;
@@ -156,9 +157,8 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
     VecX& dx = w.dx;
     SparseMatrix& J = w.J;
     DampingWork& damping = w.damping;
-    SparseLU& lu = w.lu;
+    SparseLUSolver& lu = w.lu;
     double previous_alpha = 1.0;
-    bool& analyzed = w.analyzed;
     const VecX& rscale = system.residual_scale();
     const VecX& xscale = system.increment_scale();
     double last_increment = std::numeric_limits<double>::infinity();
@@ -212,17 +212,12 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
             out.failure = s.str();
             return out;
         }
-        if (!analyzed || J.nonZeros() != w.pattern_nonzeros) {
-            lu.analyzePattern(J);
-            analyzed = true;
-            w.pattern_nonzeros = J.nonZeros();
-        }
-        lu.factorize(J);
-        if (lu.info() != Eigen::Success) {
+        if (!lu.factorize(J)) {
             out.failure = "singular tangent matrix";
             return out;
         }
-        dx = -lu.solve(r);
+        lu.solve(r, dx);
+        dx *= -1.0;
         if (!dx.allFinite()) {
             out.failure = "non-finite Newton increment";
             return out;
@@ -271,8 +266,8 @@ std::string failure_message(const char* what, size_t step, double target, double
     std::ostringstream s;
     s.precision(6);
     s << what << " at load step " << step + 1 << " (target load factor " << target
-      << "): Newton failed at load factor " << lambda << " after " << cuts
-      << " step cuts (" << last.failure << "); last converged load factor " << converged;
+      << "): Newton failed at load factor " << lambda << " after " << cuts << " step cuts ("
+      << last.failure << "); last converged load factor " << converged;
     const std::string state = problem.describe_state();
     if (!state.empty()) s << "; " << state;
     return s.str();
@@ -299,11 +294,9 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
         NewtonOutcome last;
         problem.save_state(NonlinearSystem::kStepSlot);
         // Relative to the load factors themselves: a tiny load (1e-14 of the case's) is a load.
-        while (std::abs(target - lambda) >
-               1e-14 * std::max(std::abs(target), std::abs(lambda))) {
-            const double trial = (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12))
-                                     ? target
-                                     : lambda + h;
+        while (std::abs(target - lambda) > 1e-14 * std::max(std::abs(target), std::abs(lambda))) {
+            const double trial =
+                (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12)) ? target : lambda + h;
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
             last = solver ? solver(problem, settings) : solve_newton(problem, settings);
@@ -327,8 +320,8 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                 const bool singular = last.singular;
                 outcome.status = singular ? SolveStatus::singular : SolveStatus::diverged;
                 outcome.last_converged_load_factor = lambda;
-                outcome.message = failure_message(singular ? "singular" : "diverged", step,
-                                                  target, trial, lambda, cuts - 1, last, problem);
+                outcome.message = failure_message(singular ? "singular" : "diverged", step, target,
+                                                  trial, lambda, cuts - 1, last, problem);
                 return outcome;
             }
             h *= 0.5;

@@ -55,8 +55,10 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
 
 // Buffers of solve_newton kept between calls on the same system (a time integration solves one
 // Newton per step): vectors, the Jacobian, the LU and its symbolic analysis are set up once.
+// refactor_in_place: KLU refactoring into the same memory (core/sparse_lu.hpp) instead of Eigen's
+// SparseLU, so that repeated solves allocate nothing.
 struct NewtonWorkspace {
-    NewtonWorkspace();
+    explicit NewtonWorkspace(bool refactor_in_place = false);
     ~NewtonWorkspace();
     struct Impl;
     std::unique_ptr<Impl> impl;
