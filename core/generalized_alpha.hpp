@@ -19,8 +19,9 @@
 // numerical dissipation).
 //
 // This file knows nothing of the formulation: a SecondOrderProblem is a NonlinearSystem whose
-// unknowns are the step increment Δ, plus the four calls below. The per-step Newton is the shared
-// solve_newton (core/static_driver.hpp), with the same settings and reporting as statics.
+// unknowns are the step increment Δ, plus the calls below. The per-step Newton is the shared
+// solve_newton (core/static_driver.hpp), with the same settings and reporting as statics, and a
+// NewtonWorkspace kept for the run (KLU refactored in place: no allocation per step).
 #pragma once
 
 #include <functional>
