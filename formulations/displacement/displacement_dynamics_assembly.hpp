@@ -140,6 +140,7 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
 // Σ_q w (N_a′ F^D1 + N_a F^D2) on the stiffness points (seed 000 Eq. 10, errata). Nodal columns
 // of node b: δv = cv N_b, δv′ = cv N_b′, δq = [N_b I, 0; 0, A_b T_b],
 // δq′ = [N_b′ I, 0; 0, (K_b + κ̃ A_b) T_b] (δθ′ = δκ + κ̃ δθ, δκ = Σ K_b δθ_b).
+// Long for the same reason as DisplacementStatics::assemble_element: gather, kernel, scatter.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double cv) {
     const bool relative = statics_.relative_interpolation();
@@ -260,7 +261,9 @@ BeamEnergy DisplacementDynamics<P>::energy() {
 
 // The residual rows a constrained node would have: its elements' elastic, damping and inertial
 // terms minus distributed loads and gravity (point loads on a support are carried by it
-// directly and are not included): the support's force and moment on the beam.
+// directly and are not included): the support's force and moment on the beam. One function,
+// though long: it is the residual's chain (elastic, damping, loads, inertia) restricted to one
+// row, and splitting it would hand the interpolated state between four functions.
 template <param::RotationParameterization P>
 Vec6 DisplacementDynamics<P>::reaction(int node) {
     Vec6 out = Vec6::Zero();
