@@ -1,12 +1,12 @@
 #include "core/static_driver.hpp"
 
-#include <Eigen/SparseLU>
 #include <cmath>
 #include <limits>
 #include <ostream>
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/sparse_lu.hpp"
 
 namespace rotbeam {
 
@@ -50,8 +50,6 @@ double scaled_max_norm(const VecX& v, const VecX& scale) {
     return m;
 }
 
-using SparseLU = Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>;
-
 // Root-mean-square of v_i / scale_i (the increment norm of the monotonicity test).
 double scaled_rms(const VecX& v, const VecX& scale) {
     return std::sqrt((v.array() / scale.array()).square().mean());
@@ -72,10 +70,11 @@ double scaled_rms(const VecX& v, const VecX& scale) {
 // test is made with the true correction (one more Jacobian, kept for the next iteration). On the
 // precessing helix this takes the iterations per load step from 20–170 to 4–10.
 struct DampingWork {
+    explicit DampingWork(bool refactor_in_place) : lu_trial(refactor_in_place) {}
     VecX r_trial, dx_bar;
+    VecX step;  // α δ: a named vector, since Ref<const VecX> of an expression is a heap temporary
     SparseMatrix J_trial;
-    SparseLU lu_trial;
-    bool trial_analyzed = false;
+    SparseLUSolver lu_trial;
     bool trial_jacobian_ready = false;  // J_trial, r_trial belong to the accepted state
 };
 
@@ -83,19 +82,15 @@ bool exact_correction_accepts(NonlinearSystem& system, DampingWork& w, const Vec
                               double limit) {
     system.evaluate(w.r_trial, &w.J_trial);
     if (!w.r_trial.allFinite()) return false;
-    if (!w.trial_analyzed) {
-        w.lu_trial.analyzePattern(w.J_trial);
-        w.trial_analyzed = true;
-    }
-    w.lu_trial.factorize(w.J_trial);
-    if (w.lu_trial.info() != Eigen::Success) return false;
-    w.dx_bar = -w.lu_trial.solve(w.r_trial);
+    if (!w.lu_trial.factorize(w.J_trial)) return false;
+    w.lu_trial.solve(w.r_trial, w.dx_bar);
+    w.dx_bar *= -1.0;
     const double norm = scaled_rms(w.dx_bar, xscale);
     w.trial_jacobian_ready = std::isfinite(norm) && norm <= limit;
     return w.trial_jacobian_ready;
 }
 
-double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx, const VecX& xscale,
+double damped_step(NonlinearSystem& system, SparseLUSolver& lu, const VecX& dx, const VecX& xscale,
                    double alpha_start, DampingWork& w, bool& saw_singular) {
     constexpr double kMinAlpha = 1.0 / 8192.0;
     const double norm_dx = scaled_rms(dx, xscale);
@@ -103,11 +98,13 @@ double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx, 
     system.save_state(NonlinearSystem::kLineSearchSlot);
     for (double alpha = alpha_start; alpha >= kMinAlpha; alpha *= 0.5) {
         try {
-            system.retract(alpha * dx);
+            w.step = alpha * dx;
+            system.retract(w.step);
             system.evaluate(w.r_trial, nullptr);
             if (w.r_trial.allFinite()) {
                 const double limit = (1.0 - 0.25 * alpha) * norm_dx;
-                w.dx_bar = -lu.solve(w.r_trial);
+                lu.solve(w.r_trial, w.dx_bar);
+                w.dx_bar *= -1.0;
                 const double norm_bar = scaled_rms(w.dx_bar, xscale);
                 if (std::isfinite(norm_bar) && norm_bar <= limit) return alpha;
                 if (alpha == alpha_start && exact_correction_accepts(system, w, xscale, limit)) {
@@ -124,16 +121,44 @@ double damped_step(NonlinearSystem& system, const SparseLU& lu, const VecX& dx, 
 
 }  // namespace
 
+struct NewtonWorkspace::Impl {
+    explicit Impl(bool refactor_in_place) : damping(refactor_in_place), lu(refactor_in_place) {}
+    VecX r, dx;
+    SparseMatrix J;
+    DampingWork damping;
+    SparseLUSolver lu;
+    int size = -1;
+};
+
+NewtonWorkspace::NewtonWorkspace(bool refactor_in_place)
+    : impl(std::make_unique<Impl>(refactor_in_place)) {}
+NewtonWorkspace::~NewtonWorkspace() = default;
+
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
+    NewtonWorkspace workspace;
+    return solve_newton(system, settings, workspace);
+}
+
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings,
+                           NewtonWorkspace& workspace) {
     const int n = system.size();
     NewtonOutcome out;
-    VecX r(n), dx(n);
-    SparseMatrix J(n, n);
-    DampingWork damping;
-    damping.r_trial.resize(n);
-    SparseLU lu;
+    NewtonWorkspace::Impl& w = *workspace.impl;
+    if (w.size != n) {
+        w.r.resize(n);
+        w.dx.resize(n);
+        w.damping.r_trial.resize(n);
+        w.damping.dx_bar.resize(n);
+        w.damping.step.resize(n);
+        w.size = n;
+    }
+    w.damping.trial_jacobian_ready = false;
+    VecX& r = w.r;
+    VecX& dx = w.dx;
+    SparseMatrix& J = w.J;
+    DampingWork& damping = w.damping;
+    SparseLUSolver& lu = w.lu;
     double previous_alpha = 1.0;
-    bool analyzed = false;
     const VecX& rscale = system.residual_scale();
     const VecX& xscale = system.increment_scale();
     double last_increment = std::numeric_limits<double>::infinity();
@@ -187,16 +212,12 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
             out.failure = s.str();
             return out;
         }
-        if (!analyzed) {
-            lu.analyzePattern(J);
-            analyzed = true;
-        }
-        lu.factorize(J);
-        if (lu.info() != Eigen::Success) {
+        if (!lu.factorize(J)) {
             out.failure = "singular tangent matrix";
             return out;
         }
-        dx = -lu.solve(r);
+        lu.solve(r, dx);
+        dx *= -1.0;
         if (!dx.allFinite()) {
             out.failure = "non-finite Newton increment";
             return out;

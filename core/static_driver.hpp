@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,19 @@ struct NewtonOutcome {
 
 // One Newton solve at the current load: the in-house damped Newton along the retraction.
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings);
+
+// Buffers of solve_newton kept between calls on the same system (a time integration solves one
+// Newton per step): vectors, the Jacobian, the LU and its symbolic analysis are set up once.
+// refactor_in_place: KLU refactoring into the same memory (core/sparse_lu.hpp) instead of Eigen's
+// SparseLU, so that repeated solves allocate nothing.
+struct NewtonWorkspace {
+    explicit NewtonWorkspace(bool refactor_in_place = false);
+    ~NewtonWorkspace();
+    struct Impl;
+    std::unique_ptr<Impl> impl;
+};
+NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings,
+                           NewtonWorkspace& workspace);
 
 struct StepRecord {
     double load_factor = 0.0;

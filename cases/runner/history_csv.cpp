@@ -21,6 +21,15 @@ std::string history_csv(const nlohmann::json& result) {
                 os << "," << name << "_" << c;
             }
         }
+        // Support reactions (force and moment on the beam) where the formulation provides them.
+        if (steps[0].contains("reactions")) {
+            for (const auto& [name, r] : steps[0]["reactions"].items()) {
+                for (const char* c : {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}) {
+                    os << "," << name << "_" << c;
+                }
+            }
+        }
+        if (steps[0].contains("energy")) os << ",kinetic_energy,strain_energy";
     }
     os << "\n";
     for (const nlohmann::json& step : steps) {
@@ -29,6 +38,16 @@ std::string history_csv(const nlohmann::json& result) {
             for (int i = 0; i < 3; ++i) os << "," << point["displacement"][i].get<double>();
             for (int i = 0; i < 3; ++i) os << "," << point["rotation_vector"][i].get<double>();
             os << "," << point["rotation_angle"].get<double>();
+        }
+        if (step.contains("reactions")) {
+            for (const auto& [name, r] : step["reactions"].items()) {
+                for (int i = 0; i < 3; ++i) os << "," << r["force"][i].get<double>();
+                for (int i = 0; i < 3; ++i) os << "," << r["moment"][i].get<double>();
+            }
+        }
+        if (step.contains("energy")) {
+            os << "," << step["energy"]["kinetic"].get<double>() << ","
+               << step["energy"]["strain"].get<double>();
         }
         os << "\n";
     }

@@ -1,6 +1,7 @@
 // The CSV time history of a dynamic run (DESIGN.md §Program and results contract), built from
 // the result JSON's `steps`: one row per output time; per named point the displacement, the
-// principal rotation vector and the unwrapped rotation angle.
+// principal rotation vector and the unwrapped rotation angle; then, when the steps carry them,
+// each support's reaction (force and moment on the beam) and the kinetic and strain energy.
 #pragma once
 
 #include <nlohmann/json.hpp>

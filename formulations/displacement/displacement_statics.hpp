@@ -47,6 +47,19 @@ public:
     std::string describe_state() const override;
 
     void set_load_factor(double lambda) override;
+    // Dynamics: every load multiplied by its own time function at t (gravity by 1), λ = 1; the
+    // residual scale stays the one of λ = 1. Prescribed motion is not time-dependent here (the
+    // dynamic problem rejects non-zero prescribed motion).
+    void set_time(double t);
+    // Dynamics: the state of a free node set directly (the time integrator owns the update).
+    void set_node_state(int node, const Vec3& u, const Params& p) {
+        u_[node] = u;
+        p_[node] = p;
+    }
+    bool relative_interpolation() const { return relative_; }
+    bool rescales_nodes() const { return rescale_nodes_; }
+    // Adds a 6×6 node block (rows of element node a, columns of node b) into J's fixed pattern.
+    void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
     PointState point_state(int point_index) const override;
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
@@ -100,6 +113,8 @@ private:
         Vec3 force = Vec3::Zero();
         Vec3 moment = Vec3::Zero();
         bool follower = false;
+        double factor = 1.0;  // time function value (dynamics), 1 in statics
+        int source = -1;      // index into Model::point_loads
     };
 
     void build_pattern();
@@ -112,11 +127,11 @@ private:
     void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
                           bool jacobian, Vec6& f, Eigen::Matrix<double, 6, 3>& df_dpsi);
     void assemble_point_loads(VecX& r, SparseMatrix* J);
-    void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
 
     Model model_;
     Mesh mesh_;
     std::vector<NodeLoad> point_loads_;
+    std::vector<double> distributed_factor_;  // per distributed load: time function value
     double lambda_ = 0.0;
     double force_scale_ = 1.0;
     double unit_force_scale_ = 1.0;  // at λ = 1

@@ -59,17 +59,19 @@ void DisplacementStatics<P>::distributed_load(const MeshElement& e, const Quadra
                                               Eigen::Matrix<double, 6, 3>& df_dpsi) {
     f.setZero();
     df_dpsi.setZero();
-    for (const DistributedLoad& l : model_.distributed_loads) {
+    for (size_t i = 0; i < model_.distributed_loads.size(); ++i) {
+        const DistributedLoad& l = model_.distributed_loads[i];
         if (l.member != e.member) continue;
         ++counters_.distributed_load_terms;
+        const double lambda = lambda_ * distributed_factor_[i];
         if (l.frame == LoadFrame::dead) {
-            f.head<3>() += lambda_ * l.force;
-            f.tail<3>() += lambda_ * l.moment;
+            f.head<3>() += lambda * l.force;
+            f.tail<3>() += lambda * l.moment;
             continue;
         }
         // f = λ R f0: δf = δψ × f = −f̃ δψ.
-        const Vec3 fr = lambda_ * (R * l.force);
-        const Vec3 mr = lambda_ * (R * l.moment);
+        const Vec3 fr = lambda * (R * l.force);
+        const Vec3 mr = lambda * (R * l.moment);
         f.head<3>() += fr;
         f.tail<3>() += mr;
         if (jacobian) {
@@ -174,14 +176,15 @@ void DisplacementStatics<P>::assemble_point_loads(VecX& r, SparseMatrix* J) {
     for (const NodeLoad& l : point_loads_) {
         const int d = mesh_.nodes[l.node].dof;
         if (d < 0) continue;
+        const double lambda = lambda_ * l.factor;
         if (!l.follower) {
-            r.segment<3>(d) -= lambda_ * l.force;
-            r.segment<3>(d + 3) -= lambda_ * l.moment;
+            r.segment<3>(d) -= lambda * l.force;
+            r.segment<3>(d + 3) -= lambda * l.moment;
             continue;
         }
         const Mat3 R = P::matrix(p_[l.node]);
-        const Vec3 f = lambda_ * (R * l.force);
-        const Vec3 m = lambda_ * (R * l.moment);
+        const Vec3 f = lambda * (R * l.force);
+        const Vec3 m = lambda * (R * l.moment);
         r.segment<3>(d) -= f;
         r.segment<3>(d + 3) -= m;
         if (J == nullptr) continue;

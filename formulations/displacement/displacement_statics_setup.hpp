@@ -23,13 +23,16 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
         saved_u_[k] = u_;
         saved_p_[k] = p_;
     }
-    for (const PointLoad& l : model.point_loads) {
+    for (size_t k = 0; k < model.point_loads.size(); ++k) {
+        const PointLoad& l = model.point_loads[k];
         const int node = (l.point >= 0 && l.point < static_cast<int>(mesh_.point_node.size()))
                              ? mesh_.point_node[l.point]
                              : -1;
         if (node < 0) throw InputError("point load on a point that no member reaches");
-        point_loads_.push_back({node, l.force, l.moment, l.frame == LoadFrame::follower});
+        point_loads_.push_back(
+            {node, l.force, l.moment, l.frame == LoadFrame::follower, 1.0, static_cast<int>(k)});
     }
+    distributed_factor_.assign(model.distributed_loads.size(), 1.0);
     for (const DistributedLoad& l : model.distributed_loads) {
         if (l.member < 0 || l.member >= static_cast<int>(model.members.size())) {
             throw InputError("distributed load on an unknown member");
@@ -194,6 +197,15 @@ void DisplacementStatics<P>::set_load_factor(double lambda) {
     for (const PrescribedMotion& m : mesh_.prescribed) {
         u_[m.node] = lambda * m.displacement;
         p_[m.node] = P::from_rotation_vector(lambda * m.rotation);
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::set_time(double t) {
+    set_load_factor(1.0);
+    for (NodeLoad& l : point_loads_) l.factor = model_.point_loads[l.source].time(t);
+    for (size_t i = 0; i < distributed_factor_.size(); ++i) {
+        distributed_factor_[i] = model_.distributed_loads[i].time(t);
     }
 }
 

@@ -14,7 +14,8 @@ namespace rotbeam::form {
 namespace {
 
 // Material section at s/L: linear interpolation between stations (one station: constant).
-void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta, Mat6& M_star) {
+void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta, Mat6& M_star,
+                Mat6& D_star) {
     const auto& st = m.sections;
     size_t k = 0;
     while (k + 2 < st.size() && st[k + 1].s_fraction < t) ++k;
@@ -26,6 +27,9 @@ void section_at(const Member& m, double t, Mat6& C, double& mass, Vec3& eta, Mat
     const Section& a = st[k].section;
     const Section& b = st.size() > 1 ? st[k + 1].section : st[k].section;
     C = (1.0 - w) * *a.stiffness + w * *b.stiffness;
+    // Stiffness-proportional damping μ C* (seed 000 Eq. 10), μ = diag(damping) scaling the rows.
+    D_star = (1.0 - w) * (a.damping.asDiagonal() * *a.stiffness) +
+             w * (b.damping.asDiagonal() * *b.stiffness);
     mass = 0.0;
     eta.setZero();
     M_star.setZero();
@@ -86,7 +90,7 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
         p.weight = rule.weights[q] * jac;
         p.s = s;
         p.Rr = g.frame(s);
-        section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star, p.M_star);
+        section_at(m, s / g.length(), p.C_star, p.mass, p.eta_star, p.M_star, p.D_star);
     }
     return e;
 }

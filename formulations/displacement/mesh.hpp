@@ -36,6 +36,7 @@ struct QuadraturePoint {
     double mass = 0.0;             // mass per unit length (gravity), 0 when no mass is given
     Vec3 eta_star = Vec3::Zero();  // centre of mass offset in material axes
     Mat6 M_star = Mat6::Zero();    // material-axis 6×6 mass [m I, m η̃ᵀ; m η̃, ρ], zero when none
+    Mat6 D_star = Mat6::Zero();    // material-axis damping μ C* (seed 000 Eq. 10), zero when none
 };
 
 struct MeshElement {

@@ -1,10 +1,15 @@
 // Residual + Jacobian evaluation allocates nothing after the first call (issue 5 item 8; STYLE.md
 // "no allocation inside the Newton loop"): a counting global operator new around evaluate().
 #define BOOST_TEST_MODULE displacement_allocation
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cstdlib>
+#include <iostream>
+#include <vector>
 
+#include "core/generalized_alpha.hpp"
 #include "deformed.hpp"
+#include "dynamic_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 
 // Eigen allocates with std::malloc, not operator new, so malloc itself is interposed (the
@@ -60,4 +65,73 @@ BOOST_AUTO_TEST_CASE(evaluate_and_retract_allocate_nothing_after_the_first_call)
     BOOST_TEST(allocations_in_repeated_evaluations<param::Quaternion>() == 0);
     BOOST_TEST(allocations_in_repeated_evaluations<param::WienerMilenkovic>() == 0);
     BOOST_TEST(allocations_in_repeated_evaluations<param::RotationVector>() == 0);
+}
+
+// The dynamics (issue 6 point 7): step start, residual + iteration matrix, retraction, checkpoints,
+// energy, reactions and step end allocate nothing after the first step, damped, at a moving state.
+template <class P>
+long allocations_in_dynamic_steps() {
+    form::DisplacementDynamics<P> d(test::moving_model(3, 3, true));
+    test::set_moving_state(d);
+    VecX r;
+    SparseMatrix J;
+    d.evaluate(r, &J);  // first call: sizes r and copies the fixed pattern into J
+    const GeneralizedAlpha g = GeneralizedAlpha::from_rho_infinity(0.6);
+    const VecX dx = VecX::Constant(d.size(), 1e-5);
+    const int root = d.mesh().point_node[0];
+    d.end_step();
+    const long before = g_allocations;
+    for (int k = 0; k < 3; ++k) {
+        d.begin_step(0.22 + 0.01 * k, 0.01, g);
+        d.evaluate(r, &J);
+        d.evaluate(r, nullptr);
+        d.save_state(0);
+        d.retract(dx);
+        d.restore_state(0);
+        d.retract(dx);
+        BOOST_TEST(d.energy().total() > 0.0);
+        BOOST_TEST(d.reaction(root).norm() > 0.0);
+        d.end_step();
+    }
+    return g_allocations - before;
+}
+
+BOOST_AUTO_TEST_CASE(dynamic_steps_of_the_formulation_allocate_nothing_after_the_first) {
+    BOOST_TEST(allocations_in_dynamic_steps<param::Quaternion>() == 0);
+    BOOST_TEST(allocations_in_dynamic_steps<param::WienerMilenkovic>() == 0);
+    BOOST_TEST(allocations_in_dynamic_steps<param::RotationVector>() == 0);
+}
+
+// A whole time step through run_generalized_alpha: the formulation's part above plus the shared
+// solve_newton with its NewtonWorkspace kept for the run (vectors, Jacobian, KLU refactored in
+// place: core/sparse_lu.hpp) allocates nothing after the first step, whatever the number of
+// Newton iterations.
+BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
+    Model m = test::moving_model(3, 3, false);
+    m.point_loads[0].frame = LoadFrame::dead;
+    m.distributed_loads[0].frame = LoadFrame::dead;
+    form::DisplacementDynamics<param::Quaternion> d(m);
+    TimeIntegrationSettings ts;
+    ts.time_step = 1e-3;
+    ts.end_time = 12e-3;
+    ts.rho_infinity = 0.8;
+    std::vector<long> at_step;
+    std::vector<int> iterations;
+    at_step.reserve(32);
+    iterations.reserve(32);
+    const DynamicOutcome out =
+        run_generalized_alpha(d, ts, NewtonSettings{}, [&](const TimeStepRecord& s) {
+            at_step.push_back(g_allocations);
+            iterations.push_back(s.newton_iterations);
+        });
+    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged), out.message);
+    BOOST_TEST_REQUIRE(at_step.size() == 13u);
+    std::cout << "allocations per full time step (steps 2-12, " << d.size()
+              << " unknowns; Newton iterations in brackets):";
+    for (size_t k = 2; k < at_step.size(); ++k) {
+        const long a = at_step[k] - at_step[k - 1];
+        std::cout << " " << a << " (" << iterations[k] << ")";
+        BOOST_TEST(a == 0);
+    }
+    std::cout << "\n";
 }

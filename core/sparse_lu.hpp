@@ -1,0 +1,37 @@
+// The sparse LU factorization of the Newton driver (core/static_driver.cpp).
+//
+// Default: Eigen's SparseLU (COLAMD ordering, partial pivoting at every factorization), the
+// symbolic analysis done once per pattern. `refactor_in_place`: KLU (SuiteSparse, as SUNDIALS
+// uses it) factors once with pivoting and afterwards refactors with the same pivot order into the
+// same memory (klu_refactor) and solves in place (klu_solve): no heap allocation per
+// factorization, for drivers that factor one pattern many times (a time integration). When the
+// reciprocal pivot ratio (klu_rcond) of a refactorization falls below 1e-3 of the pivoted one's,
+// the pivot order has gone stale and the matrix is factored again with pivoting.
+#pragma once
+
+#include <memory>
+
+#include "core/nonlinear_system.hpp"
+#include "core/types.hpp"
+
+namespace rotbeam {
+
+class SparseLUSolver {
+  public:
+    explicit SparseLUSolver(bool refactor_in_place = false);
+    ~SparseLUSolver();
+    SparseLUSolver(SparseLUSolver&&) noexcept;
+    SparseLUSolver& operator=(SparseLUSolver&&) noexcept;
+
+    // Factors J (compressed, column-major); analyses the pattern when it is new. False when J is
+    // numerically singular.
+    bool factorize(const SparseMatrix& J);
+    // x = J⁻¹ b for the last factorized J; x must not alias b.
+    void solve(const VecX& b, VecX& x);
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rotbeam

@@ -1,0 +1,145 @@
+// Dynamics of the displacement-based formulation (seed 000 Eq. 9 with the inertial and damping
+// forces) as a SecondOrderProblem for the Lie-group generalized-α integrator
+// (core/generalized_alpha.hpp; Brüls, Cardona & Arnold 2012).
+//
+// State per free node: displacement u and rotation R (stored as parameters p of P), spatial
+// velocity v = [u˙; ω] (Ṙ = ω̃ R), true acceleration v˙ and the pseudo-acceleration a. The Newton
+// unknowns of a step are the increment Δ = [Δu; ψ] per node:
+//   u_{n+1} = u_n + Δu,   R_{n+1} = exp(ψ̃) R_n   (p_{n+1} = compose(p(ψ), p_n): the spatial
+//   increment is composed on the left, as the static retraction does),
+// and v_{n+1}, v˙_{n+1} follow from Δ by the generalized-α relations. Velocities and
+// accelerations are spatial vectors, so a chart rescale of p changes none of them and needs no
+// restart of the integrator's history.
+//
+// Residual rows per free node a (weak form of seed 000 Eq. 9):
+//   r_a = [static part: Σ w (N_a′ F^E1 + N_a F^E2 − N_a f_ext) − point loads]
+//       + Σ_mass points w N_a F^I + Σ_stiffness points w (N_a′ F^D1 + N_a F^D2),
+// with v, v˙ interpolated from the nodes by N_j (and v′ by N_j′), F^I and its blocks from
+// calculate_inertial_forces.hpp on the mass rule's quadrature (consistent by default, the same M
+// as the modal analysis), F^D from calculate_damping_forces.hpp on the stiffness quadrature, built
+// only when a section has damping (AssemblyCounters::damping_terms stays 0 otherwise).
+// Jacobian with respect to Δ: ∂r/∂q · diag(I, T(ψ_i)) + c_v ∂r/∂v + c_a ∂r/∂v˙ (T = dexp, the
+// rotation vector's spatial tangent; c_v, c_a the generalized-α slopes). Loads carry their own
+// time functions (DisplacementStatics::set_time).
+//
+// Nothing allocates after the first evaluation (buffers sized in the constructor).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/generalized_alpha.hpp"
+#include "core/model.hpp"
+#include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/displacement/interpolate_rotation.hpp"
+#include "formulations/displacement/mesh.hpp"
+#include "parameterizations/registry.hpp"
+
+namespace rotbeam::form {
+
+struct BeamEnergy {
+    double kinetic = 0.0;  // ½ vᵀ M v with the mass rule's quadrature
+    double strain = 0.0;   // ½ ∫ [ε; κ]ᵀ C [ε; κ] (= the material-axis form with C*)
+    double total() const { return kinetic + strain; }
+};
+
+template <param::RotationParameterization P>
+class DisplacementDynamics : public SecondOrderProblem {
+  public:
+    using Params = param::Params<P::kSize>;
+
+    explicit DisplacementDynamics(const Model& model);
+
+    // NonlinearSystem (unknowns: the step increment Δ)
+    int size() const override { return statics_.size(); }
+    void evaluate(VecX& residual, SparseMatrix* jacobian) override;
+    void retract(const Eigen::Ref<const VecX>& dx) override;
+    void save_state(int slot) override;
+    void restore_state(int slot) override;
+    const VecX& residual_scale() const override { return statics_.residual_scale(); }
+    const VecX& increment_scale() const override { return statics_.increment_scale(); }
+    std::string describe_state() const override { return statics_.describe_state(); }
+
+    // SecondOrderProblem
+    void initialize_acceleration(double t) override;
+    void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) override;
+    void end_step() override;
+
+    // The static problem on the same mesh (its state is this problem's configuration): used for
+    // `initial_state: static` (run_static on it at the loads of t = 0, then adopt_static_state()).
+    DisplacementStatics<P>& statics() { return statics_; }
+    void adopt_static_state();
+    // Sets every free node's velocity: translation u˙ and spatial angular velocity ω.
+    void set_velocity(const Vec3& u_dot, const Vec3& omega);
+    void set_node_velocity(int node, const Vec6& v) { v_n_[node] = v_[node] = v; }
+    // Sets a node's acceleration v˙ (and a = v˙) at the step start, e.g. for tests of a moving
+    // state that is not consistent; initialize_acceleration sets the consistent one.
+    void set_node_acceleration(int node, const Vec6& a) {
+        vd_n_[node] = a_n_[node] = vd_[node] = a_[node] = a;
+    }
+
+    PointState point_state(int point) const { return statics_.point_state(point); }
+    AssemblyCounters counters() const;
+    BeamEnergy energy();
+    // Reaction at a constrained node: the residual rows it would have (elastic, damping, inertial
+    // and distributed-load terms of its elements). The support load R is an external load on the
+    // node, r_a − R = 0, so this is the force and moment the support exerts on the beam (inertial
+    // axes; a +z tip force on a cantilever gives a −z root force).
+    Vec6 reaction(int node);
+
+    const Mesh& mesh() const { return statics_.mesh(); }
+    const Vec6& node_velocity(int node) const { return v_[node]; }
+    const Vec6& node_acceleration(int node) const { return vd_[node]; }
+    const Vec3& node_displacement(int node) const { return statics_.node_displacement(node); }
+    const Params& node_rotation(int node) const { return statics_.node_rotation(node); }
+    bool damped() const { return damped_; }
+    // ∫ [ε˙; κ˙]ᵀ D [ε˙; κ˙] ds with seed 000 Eq. 10's spatial rates: the power the damping law
+    // dissipates at the current state (its lack of objectivity: benchmarks.md Errata).
+    double damping_dissipation();
+
+  private:
+    void update_iterate();
+    void gather(const MeshElement& e);
+    void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot) const;
+    // Inertial forces on the mass mesh: r += F^I terms; J += kq ∂/∂q T + cv ∂/∂v + ca ∂/∂v˙.
+    void assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv, double ca);
+    void assemble_damping(VecX& r, SparseMatrix* J, double cv);
+    void apply_exp_tangent(SparseMatrix& J) const;
+
+    Model model_;
+    DisplacementStatics<P> statics_;
+    Mesh mass_mesh_;
+    bool damped_ = false;
+    GeneralizedAlpha scheme_;
+    double h_ = 0.0;
+    double time_ = 0.0;  // time of the loads (t_{n+1} in a step)
+    double cv_ = 0.0, ca_ = 0.0;
+
+    // Step state (n) and the current iterate (n+1), per node (constrained nodes stay at rest).
+    std::vector<Vec3> u_n_;
+    std::vector<Params> p_n_;
+    std::vector<Vec6> v_n_, vd_n_, a_n_;
+    std::vector<Vec6> v_, vd_, a_;
+    std::vector<Mat3> T_;  // dexp(ψ_i)
+    std::vector<Params> p_trial_;
+    VecX delta_;
+    std::array<VecX, kCheckpointSlots> saved_delta_;
+
+    // Per-element workspace (p+1 nodes).
+    std::vector<Params> pe_;
+    std::vector<param::TangentInverse<P::kSize>> Me_;
+    std::vector<Mat3> A_, K_;
+    std::vector<Mat6> X1_, X2_;  // damping: per-node column maps of F^D1, F^D2
+    Mat3 R0_ = Mat3::Identity();
+    SparseMatrix mass_;  // initialize_acceleration
+    VecX r0_;
+    long inertial_terms_ = 0;
+    long damping_terms_ = 0;
+};
+
+#define ROTBEAM_DISPLACEMENT_DYNAMICS_EXTERN(P) \
+    extern template class DisplacementDynamics<param::P>;
+ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DISPLACEMENT_DYNAMICS_EXTERN)
+#undef ROTBEAM_DISPLACEMENT_DYNAMICS_EXTERN
+
+}  // namespace rotbeam::form
