@@ -14,6 +14,7 @@
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/sundials_callbacks.hpp"
 
 namespace rotbeam {
 
@@ -34,24 +35,14 @@ struct IdaUser {
 
 extern "C" int ida_residual(double t, N_Vector yy, N_Vector yp, N_Vector rr, void* data) {
     IdaUser& user = *static_cast<IdaUser*>(data);
-    try {
+    return sundials_guard(user, "residual", [&] {
         user.load(yy, yp);
         user.dae->evaluate(t, user.x, user.xdot, user.residual, nullptr, nullptr);
         if (!user.residual.allFinite()) return 1;  // recoverable: IDA cuts the step
         std::copy(user.residual.data(), user.residual.data() + user.residual.size(),
                   N_VGetArrayPointer(rr));
         return 0;
-    } catch (const SingularityError& e) {
-        user.singular = true;  // near the singular angle: recoverable, IDA cuts the step
-        user.message = e.what();
-        return 1;
-    } catch (const std::exception& e) {
-        user.message = e.what();
-        return -1;
-    } catch (...) {
-        user.message = "unknown exception in the residual";
-        return -1;
-    }
+    });
 }
 
 // J = ∂F/∂X + c_j ∂F/∂Ẋ in the fixed pattern, copied into IDA's CSC matrix.
@@ -59,32 +50,12 @@ extern "C" int ida_jacobian(double t, double cj, N_Vector yy, N_Vector yp, N_Vec
                             SUNMatrix J, void* data, N_Vector /*t1*/, N_Vector /*t2*/,
                             N_Vector /*t3*/) {
     IdaUser& user = *static_cast<IdaUser*>(data);
-    try {
+    return sundials_guard(user, "Jacobian", [&] {
         user.load(yy, yp);
         user.dae->evaluate(t, user.x, user.xdot, user.residual, &user.Jx, &user.Jxd);
         combine_same_pattern(user.Jx, cj, user.Jxd, user.J);
-        const SparseMatrix& A = user.J;
-        if (A.nonZeros() > SUNSparseMatrix_NNZ(J)) return -1;  // the pattern must not grow
-        sunindextype* ptr = SUNSparseMatrix_IndexPointers(J);
-        sunindextype* idx = SUNSparseMatrix_IndexValues(J);
-        double* val = SUNSparseMatrix_Data(J);
-        for (Eigen::Index c = 0; c <= A.outerSize(); ++c) ptr[c] = A.outerIndexPtr()[c];
-        for (Eigen::Index k = 0; k < A.nonZeros(); ++k) {
-            idx[k] = A.innerIndexPtr()[k];
-            val[k] = A.valuePtr()[k];
-        }
-        return 0;
-    } catch (const SingularityError& e) {
-        user.singular = true;
-        user.message = e.what();
-        return 1;
-    } catch (const std::exception& e) {
-        user.message = e.what();
-        return -1;
-    } catch (...) {
-        user.message = "unknown exception in the Jacobian";
-        return -1;
-    }
+        return copy_to_sunmatrix(user.J, J);  // −1: the pattern must not grow
+    });
 }
 
 // IDA's own error messages go to the outcome, not to stderr.

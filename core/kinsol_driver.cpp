@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "core/errors.hpp"
+#include "core/sundials_callbacks.hpp"
 
 namespace rotbeam {
 
@@ -33,55 +34,25 @@ void set_state(KinsolUser& user, N_Vector x) {
 
 extern "C" int kinsol_residual(N_Vector x, N_Vector f, void* data) {
     KinsolUser& user = *static_cast<KinsolUser*>(data);
-    try {
+    return sundials_guard(user, "residual", [&] {
         set_state(user, x);
         user.system->evaluate(user.residual, nullptr);
         if (!user.residual.allFinite()) return 1;  // recoverable: the line search backs off
         std::copy(user.residual.data(), user.residual.data() + user.residual.size(),
                   N_VGetArrayPointer(f));
         return 0;
-    } catch (const SingularityError& e) {
-        user.singular = true;
-        user.message = e.what();
-        return 1;
-    } catch (const std::exception& e) {
-        user.message = e.what();
-        return -1;
-    } catch (...) {
-        user.message = "unknown exception in the residual";
-        return -1;
-    }
+    });
 }
 
 extern "C" int kinsol_jacobian(N_Vector x, N_Vector /*f*/, SUNMatrix J, void* data,
                                N_Vector /*tmp1*/, N_Vector /*tmp2*/) {
     KinsolUser& user = *static_cast<KinsolUser*>(data);
-    try {
+    return sundials_guard(user, "Jacobian", [&] {
         set_state(user, x);
         user.system->evaluate(user.residual, &user.jacobian);
         user.jacobian.makeCompressed();
-        const SparseMatrix& A = user.jacobian;
-        if (A.nonZeros() > SUNSparseMatrix_NNZ(J)) return -1;  // the pattern must not grow
-        sunindextype* ptr = SUNSparseMatrix_IndexPointers(J);
-        sunindextype* idx = SUNSparseMatrix_IndexValues(J);
-        double* val = SUNSparseMatrix_Data(J);
-        for (Eigen::Index c = 0; c <= A.outerSize(); ++c) ptr[c] = A.outerIndexPtr()[c];
-        for (Eigen::Index k = 0; k < A.nonZeros(); ++k) {
-            idx[k] = A.innerIndexPtr()[k];
-            val[k] = A.valuePtr()[k];
-        }
-        return 0;
-    } catch (const SingularityError& e) {
-        user.singular = true;
-        user.message = e.what();
-        return 1;
-    } catch (const std::exception& e) {
-        user.message = e.what();
-        return -1;
-    } catch (...) {
-        user.message = "unknown exception in the Jacobian";
-        return -1;
-    }
+        return copy_to_sunmatrix(user.jacobian, J);  // −1: the pattern must not grow
+    });
 }
 
 extern "C" void kinsol_error(int /*code*/, const char* /*module*/, const char* /*function*/,
