@@ -8,6 +8,7 @@
 #include "formulations/displacement/calculate_damping_forces.hpp"
 #include "formulations/displacement/calculate_elastic_forces.hpp"
 #include "formulations/displacement/calculate_inertial_forces.hpp"
+#include "formulations/displacement/rotation_columns.hpp"
 #include "formulations/displacement/calculate_strain.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/rotate_section.hpp"
@@ -28,28 +29,10 @@ void DisplacementDynamics<P>::evaluate(VecX& r, SparseMatrix* J) {
     if (damped_) assemble_damping(r, J, cv_);
 }
 
-// J's rotation columns of node i times T_i = dexp(ψ_i): δθ_i = T_i δψ_i. The three columns of a
-// node share one row pattern (6×6 node blocks), so the product is formed in place.
+// J's rotation columns of node i times T_i = dexp(ψ_i): δθ_i = T_i δψ_i.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::apply_exp_tangent(SparseMatrix& J) const {
-    const int* outer = J.outerIndexPtr();
-    double* values = J.valuePtr();
-    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
-        const int d = mesh().nodes[i].dof;
-        if (d < 0) continue;
-        const Mat3& T = T_[i];
-        const int c = d + 3;
-        const int count = outer[c + 1] - outer[c];
-        for (int k = 0; k < count; ++k) {
-            double* v0 = values + outer[c] + k;
-            double* v1 = values + outer[c + 1] + k;
-            double* v2 = values + outer[c + 2] + k;
-            const Eigen::RowVector3d row = Eigen::RowVector3d(*v0, *v1, *v2) * T;
-            *v0 = row[0];
-            *v1 = row[1];
-            *v2 = row[2];
-        }
-    }
+    right_multiply_rotation_columns(J, mesh(), [&](size_t i) { return T_[i]; });
 }
 
 // Nodal parameters of element e as the interpolation needs them (DisplacementStatics::

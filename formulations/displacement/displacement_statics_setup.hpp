@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/so3.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/displacement/rotation_columns.hpp"
 
 namespace rotbeam::form {
 
@@ -288,30 +289,12 @@ std::string DisplacementStatics<P>::describe_state() const {
     return s.str();
 }
 
-// Additive update: J_p = J_ψ · blockdiag(H_s(p_i)) on each node's rotation columns. The three
-// columns of a node share one row pattern (the pattern is built from 6×6 node blocks), so the
-// product is formed in place, entry by entry of the column triple.
+// Additive update: J_p = J_ψ · blockdiag(H_s(p_i)) on each node's rotation columns.
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::apply_parameter_tangent(SparseMatrix& J) const {
     if constexpr (P::kSize == 3) {
-        const int* outer = J.outerIndexPtr();
-        double* values = J.valuePtr();
-        for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
-            const int d = mesh_.nodes[i].dof;
-            if (d < 0) continue;
-            const Mat3 H = P::spatial_tangent(p_[i]);
-            const int c = d + 3;
-            const int count = outer[c + 1] - outer[c];
-            for (int k = 0; k < count; ++k) {
-                double* v0 = values + outer[c] + k;
-                double* v1 = values + outer[c + 1] + k;
-                double* v2 = values + outer[c + 2] + k;
-                const Eigen::RowVector3d row = Eigen::RowVector3d(*v0, *v1, *v2) * H;
-                *v0 = row[0];
-                *v1 = row[1];
-                *v2 = row[2];
-            }
-        }
+        right_multiply_rotation_columns(J, mesh_,
+                                        [&](size_t i) { return P::spatial_tangent(p_[i]); });
     } else {
         (void)J;
     }
