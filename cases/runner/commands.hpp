@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace rotbeam {
+struct ReferenceValue;
+}
+
 namespace rotbeam::cli {
 
 using Args = std::vector<std::string>;
@@ -17,6 +21,8 @@ int command_suite(const Args& args);
 int command_verify(const Args& args);
 // The comparison `verify` makes, for the given cases, as the report's Markdown section.
 std::string published_references_markdown(const std::vector<std::string>& cases);
+// The --set overrides that put a case into the discretization a reference applies to (verify.cpp).
+std::vector<std::string> reference_overrides(const ReferenceValue& ref);
 int command_reference(const Args& args);
 int command_study(const Args& args);
 int command_bench(const Args& args);  // bench_command.cpp

@@ -1,5 +1,4 @@
 #include "report.hpp"
-#include "report_table_one.hpp"
 
 #include <sys/utsname.h>
 
@@ -15,6 +14,8 @@
 
 #include "core/results.hpp"
 #include "core/version.hpp"
+#include "report_dynamics.hpp"
+#include "report_table_one.hpp"
 #include "studies.hpp"
 
 namespace rotbeam::cli {
@@ -66,14 +67,15 @@ bool gnuplot(const std::string& script, const std::map<std::string, std::string>
 
 // The roll-up's tip path u1/L, u3/L against λ for every converged combination, plus the exact
 // solution, as a data file per combination.
-std::vector<Figure> rollup_figures(const std::string& out, const std::vector<nlohmann::json>& runs) {
+std::vector<Figure> rollup_figures(const std::string& out,
+                                   const std::vector<nlohmann::json>& runs) {
     const fs::path data = fs::path(out) / "data";
     fs::create_directories(data);
     std::string files;
     for (const nlohmann::json& r : runs) {
         if (r.value("case", "") != "cantilever-moment" || r["steps"].empty()) continue;
-        const std::string name = r["rotation"].get<std::string>() + "-" +
-                                 r["formulation"].get<std::string>();
+        const std::string name =
+            r["rotation"].get<std::string>() + "-" + r["formulation"].get<std::string>();
         const fs::path file = data / ("rollup_" + name + ".dat");
         std::ofstream f(file);
         f << "# load_factor u1 u3 newton_iterations (" << name << ")\n";
@@ -86,12 +88,13 @@ std::vector<Figure> rollup_figures(const std::string& out, const std::vector<nlo
     }
     if (files.empty()) return {};
     const std::string png = "rollup-tip.png";
-    if (!gnuplot("rollup_tip.gp", {{"files", files},
-                                   {"outbase", (fs::path(out) / "rollup-tip").string()}})) {
+    if (!gnuplot("rollup_tip.gp",
+                 {{"files", files}, {"outbase", (fs::path(out) / "rollup-tip").string()}})) {
         return {};
     }
-    return {{png, "Tip displacement of the moment-loaded cantilever (seed 002 Example 1) against the "
-                  "load factor λ for every combination that ran, over the exact solution (lines)."}};
+    return {{png,
+             "Tip displacement of the moment-loaded cantilever (seed 002 Example 1) against the "
+             "load factor λ for every combination that ran, over the exact solution (lines)."}};
 }
 
 // Fig. 3 of seed 002: the roll-up's deformed centre lines for every reported λ, from the
@@ -117,9 +120,10 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
             lambdas << s["load_factor"].get<double>() << " ";
         }
         f.close();
-        if (!gnuplot("rollup_shapes.gp", {{"datafile", file.string()},
-                                          {"lambdas", lambdas.str()},
-                                          {"outbase", (fs::path(out) / "rollup-shapes").string()}})) {
+        if (!gnuplot("rollup_shapes.gp",
+                     {{"datafile", file.string()},
+                      {"lambdas", lambdas.str()},
+                      {"outbase", (fs::path(out) / "rollup-shapes").string()}})) {
             return {};
         }
         return {{"rollup-shapes.png",
@@ -190,12 +194,14 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     }
     std::ostringstream md;
     md << "# rotbeam report\n\nrotbeam " << kGitDescribe << ", " << machine_description() << ", "
-       << today() << ".\n\n## Runs\n\nEvery static and modal catalog case with every "
+       << today() << ".\n\n## Runs\n\nEvery static, modal and dynamic catalog case with every "
        << "parameterization and formulation at the case's own mesh. `status` is the solver's own "
        << "verdict; the last column is the tip (or joint) displacement at the last converged "
-       << "step, or the natural frequencies of a modal run.\n\n"
-       << "| case | rotation | formulation | status | steps | Newton iterations | wall [s] | "
-          "last point displacement / frequencies [Hz] |\n|---|---|---|---|---|---|---|---|\n";
+       << "step (the last output time of a dynamic run), or the natural frequencies of a modal "
+          "run.\n\n"
+       << "| case | elements | rotation | formulation | status | steps | Newton iterations | "
+          "wall [s] | last point displacement / frequencies [Hz] |\n"
+          "|---|---|---|---|---|---|---|---|---|\n";
     for (const nlohmann::json& r : runs) {
         int iterations = 0;
         for (const auto& s : r["steps"]) iterations += s.value("newton_iterations", 0);
@@ -219,12 +225,14 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
             if (m.size() > 90) m = m.substr(0, 87) + "...";
             message += ": " + m;
         }
-        md << "| " << r.value("case", "") << " | " << r.value("rotation", "") << " | "
-           << r.value("formulation", "") << " | " << message << " | " << r["steps"].size() << " | "
-           << iterations << " | " << std::setprecision(3) << r.value("wall_seconds", 0.0) << " | "
-           << last.str() << " |\n";
+        md << "| " << r.value("case", "") << " | " << r.value("elements", 0) << " | "
+           << r.value("rotation", "") << " | " << r.value("formulation", "") << " | " << message
+           << " | " << r["steps"].size() << " | " << iterations << " | " << std::setprecision(3)
+           << r.value("wall_seconds", 0.0) << " | " << last.str() << " |\n";
     }
-    md << "\n" << table_one_section("cantilever-moment", runs);
+    md << "\n"
+       << table_one_section("cantilever-moment", runs) << table_three_section(runs)
+       << joined_beam_histories_section(out_dir, runs) << blade_histories_section(out_dir, runs);
     {
         std::ifstream published(fs::path(out_dir) / "published.md");
         if (published) md << published.rdbuf();
@@ -234,14 +242,16 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     for (Figure& f : rotation_study_figures(out_dir)) figures.push_back(f);
     md << "\n## Figures\n\n";
     if (figures.empty()) md << "(no figures: gnuplot missing or no data)\n";
-    for (const Figure& f : figures) md << "![" << f.caption << "](" << f.file << ")\n\n" << f.caption << "\n\n";
+    for (const Figure& f : figures)
+        md << "![" << f.caption << "](" << f.file << ")\n\n" << f.caption << "\n\n";
     // The studies (issue 12), each a section written by its study function, when present.
     for (const auto& entry : static_studies()) {
         std::ifstream study(fs::path(out_dir) / ("study-" + entry.first + ".md"));
         if (study) md << "\n" << study.rdbuf() << "\n";
     }
     write_file_atomically((fs::path(out_dir) / "index.md").string(), md.str());
-    write_file_atomically((fs::path(out_dir) / "index.html").string(), markdown_page_html(md.str(), out_dir));
+    write_file_atomically((fs::path(out_dir) / "index.html").string(),
+                          markdown_page_html(md.str(), out_dir));
 }
 
 }  // namespace rotbeam::cli

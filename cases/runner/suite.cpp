@@ -1,11 +1,12 @@
-// `rotbeam suite`: the main job. Runs every catalog case (matching --cases) with every
-// parameterization × formulation, in parallel over --jobs worker threads, writes one result file
-// per run (skipped on a rerun when its inputs and the rotbeam version are unchanged), the rotation
-// study, and a report (index.md + index.html) with the runs table and the plots made by gnuplot
-// scripts in reports/.
+// `rotbeam suite`: the main job. Runs every catalog case (static, modal and dynamic; matching
+// --cases) with every parameterization × formulation, in parallel over --jobs worker threads,
+// writes one result file per run (skipped on a rerun when its inputs and the rotbeam version are
+// unchanged), the rotation study, and a report (index.md + index.html) with the runs table and the
+// plots made by gnuplot scripts in reports/.
 #include <fnmatch.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -38,9 +40,16 @@ namespace {
 
 struct PlannedRun {
     std::string case_name, case_path, rotation, formulation;
-    std::string output;  // result file
-    std::string key;     // hash of the inputs
+    std::string output{};                  // result file
+    std::string key{};                     // hash of the inputs
+    std::vector<std::string> overrides{};  // further --set overrides (a variant's settings)
+    int elements_per_member = 0;           // 0: the case's own mesh
 };
+
+// Table III's converged column: a modal case refined to this many elements per member with its
+// own formulation and parameterization (0.1 s for the joined beam, whose paper mesh of 10 per
+// member sits 0.4–3.9 % above it).
+constexpr int kConvergedElementsPerMember = 160;
 
 std::string read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -49,10 +58,12 @@ std::string read_file(const std::string& path) {
     return s.str();
 }
 
-std::string input_key(const std::string& case_text, const std::string& rotation,
-                      const std::string& formulation) {
-    const size_t h = std::hash<std::string>{}(case_text + "\n" + rotation + "\n" + formulation +
-                                              "\n" + kGitDescribe);
+std::string input_key(const std::string& case_text, const PlannedRun& run) {
+    std::string settings = run.rotation + "\n" + run.formulation;
+    for (const std::string& o : run.overrides) settings += "\n" + o;
+    if (run.elements_per_member > 0)
+        settings += "\nelements " + std::to_string(run.elements_per_member);
+    const size_t h = std::hash<std::string>{}(case_text + "\n" + settings + "\n" + kGitDescribe);
     std::ostringstream s;
     s << std::hex << h;
     return s.str();
@@ -68,25 +79,66 @@ bool up_to_date(const PlannedRun& run) {
     }
 }
 
-std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir,
-                                  bool quick) {
+// A modal case's runs beyond formulation × parameterization, for Table III: one with the
+// settings of each published column (its references' `applies_to`, as `verify` runs them) and
+// one refined to kConvergedElementsPerMember. `output` is the file's base name.
+std::vector<PlannedRun> modal_variants(const std::string& name, const std::string& path,
+                                       const Model& model) {
+    std::vector<PlannedRun> variants;
+    std::vector<std::map<std::string, std::string>> seen;
+    for (const ReferenceValue& ref : model.references) {
+        if (ref.applies_to.empty() ||
+            std::find(seen.begin(), seen.end(), ref.applies_to) != seen.end()) {
+            continue;
+        }
+        seen.push_back(ref.applies_to);
+        PlannedRun run{name, path, model.discretization.rotation, model.discretization.formulation};
+        run.overrides = reference_overrides(ref);
+        const auto get = [&](const char* key, std::string& value) {
+            const auto it = ref.applies_to.find(key);
+            if (it != ref.applies_to.end()) value = it->second;
+        };
+        get("rotation", run.rotation);
+        get("formulation", run.formulation);
+        std::string elements = "0";
+        get("elements", elements);
+        run.elements_per_member = std::stoi(elements);
+        run.output = name + "-as-published-" + std::to_string(seen.size()) + "_" + run.rotation +
+                     "_" + run.formulation;
+        variants.push_back(run);
+    }
+    PlannedRun refined{name, path, model.discretization.rotation, model.discretization.formulation};
+    refined.elements_per_member = kConvergedElementsPerMember;
+    refined.output = name + "-" + std::to_string(kConvergedElementsPerMember) + "-per-member_" +
+                     refined.rotation + "_" + refined.formulation;
+    variants.push_back(refined);
+    return variants;
+}
+
+std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick) {
     std::vector<PlannedRun> runs;
     for (const std::string& name : catalog_cases()) {
         if (fnmatch(glob.c_str(), name.c_str(), 0) != 0) continue;
         const std::string path = resolve_case_path(name);
-        const Model model = load_case(path, {});
-        // Static and modal cases; dynamic ones join when a formulation integrates in time.
-        if (model.analysis.kind == AnalysisKind::dynamic) continue;
+        // Static, modal and dynamic cases alike; --quick keeps two static ones (no dynamics).
         if (quick && name != "cantilever-moment" && name != "bend-45") continue;
+        const Model model = load_case(path, {});
         const std::string text = read_file(path);
         for (const std::string& formulation : formulation_names()) {
             for (const std::string& rotation : param::parameterization_names()) {
-                PlannedRun run{name, path, rotation, formulation, "", ""};
+                PlannedRun run{name, path, rotation, formulation};
                 run.output = (fs::path(out_dir) / "runs" /
                               (name + "_" + rotation + "_" + formulation + ".json"))
                                  .string();
-                run.key = input_key(text, rotation, formulation);
+                run.key = input_key(text, run);
                 runs.push_back(run);
+            }
+        }
+        if (!quick && model.analysis.kind == AnalysisKind::modal) {
+            for (PlannedRun& run : modal_variants(name, path, model)) {
+                run.output = (fs::path(out_dir) / "runs" / (run.output + ".json")).string();
+                run.key = input_key(text, run);
+                runs.push_back(std::move(run));
             }
         }
     }
@@ -96,20 +148,27 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
 nlohmann::json execute(const PlannedRun& run) {
     Model model;
     try {
-        model = load_case(run.case_path, {"discretization.rotation=" + run.rotation,
-                                          "discretization.formulation=" + run.formulation});
+        std::vector<std::string> overrides = {"discretization.rotation=" + run.rotation,
+                                              "discretization.formulation=" + run.formulation};
+        overrides.insert(overrides.end(), run.overrides.begin(), run.overrides.end());
+        model = load_case(run.case_path, overrides);
+        if (run.elements_per_member > 0) {
+            for (Member& m : model.members) m.elements = run.elements_per_member;
+        }
     } catch (const InputError& e) {
-        return {{"case", run.case_name}, {"rotation", run.rotation},
-                {"formulation", run.formulation}, {"status", "error"}, {"message", e.what()},
-                {"steps", nlohmann::json::array()}, {"wall_seconds", 0.0}};
+        return {
+            {"case", run.case_name}, {"rotation", run.rotation}, {"formulation", run.formulation},
+            {"status", "error"},     {"message", e.what()},      {"steps", nlohmann::json::array()},
+            {"wall_seconds", 0.0}};
     }
     try {
         return run_case(RunRequest{run.case_path, model});
     } catch (const InputError& e) {
         // The combination does not exist for this case (e.g. a formulation not built yet).
-        return {{"case", run.case_name}, {"rotation", run.rotation},
-                {"formulation", run.formulation}, {"status", "error"}, {"message", e.what()},
-                {"steps", nlohmann::json::array()}, {"wall_seconds", 0.0}};
+        return {
+            {"case", run.case_name}, {"rotation", run.rotation}, {"formulation", run.formulation},
+            {"status", "error"},     {"message", e.what()},      {"steps", nlohmann::json::array()},
+            {"wall_seconds", 0.0}};
     }
 }
 
@@ -147,9 +206,13 @@ void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
 
 int command_suite(const Args& args) {
     const CommandSpec spec{
-        "suite", "", 0, 0,
-        "Run the benchmark suite: every static catalog case with every parameterization and "
-        "formulation, the rotation study, and the report (DIR/index.md, DIR/index.html, plots). "
+        "suite",
+        "",
+        0,
+        0,
+        "Run the benchmark suite: every catalog case (static, modal, dynamic) with every "
+        "parameterization and formulation, the rotation study, and the report (DIR/index.md, "
+        "DIR/index.html, plots). "
         "Finished runs whose inputs are unchanged are skipped on a rerun.",
         {{"out", "DIR", "output folder (default: out)"},
          {"jobs", "N", "worker threads (default: all cores)"},
@@ -164,8 +227,8 @@ int command_suite(const Args& args) {
         return 0;
     }
     const std::string out = a.value("out").value_or("out");
-    const int jobs = a.positive_int("suite", "jobs")
-                         .value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs =
+        a.positive_int("suite", "jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
     const std::vector<PlannedRun> runs =
         plan_runs(a.value("cases").value_or("*"), out, a.has("quick"));
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out

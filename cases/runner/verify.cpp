@@ -16,10 +16,9 @@
 
 namespace rotbeam::cli {
 
-namespace {
-
-// The --set overrides that put a case into the discretization a reference applies to.
-std::vector<std::string> overrides_for(const ReferenceValue& ref) {
+// The --set overrides that put a case into the discretization a reference applies to (its
+// `elements` is per member and set on the model, not by an override).
+std::vector<std::string> reference_overrides(const ReferenceValue& ref) {
     static const std::map<std::string, std::string> keys = {
         {"formulation", "discretization.formulation"},
         {"rotation", "discretization.rotation"},
@@ -36,6 +35,8 @@ std::vector<std::string> overrides_for(const ReferenceValue& ref) {
     }
     return overrides;
 }
+
+namespace {
 
 std::string combination_key(const ReferenceValue& ref) {
     std::string key;
@@ -118,13 +119,14 @@ std::string format_vector(const std::vector<double>& v) {
 }
 
 struct Row {
-    std::string case_name, id, quantity, combination, published, computed, difference,
-        tolerance, verdict;
+    std::string case_name, id, quantity, combination, published, computed, difference, tolerance,
+        verdict;
 };
 
 Row compare(const Model& model, const nlohmann::json& result, const ReferenceValue& ref) {
-    Row row{model.name, ref.id, ref.quantity, combination_key(ref), format_vector(ref.value),
-            "-", "-", "", ""};
+    Row row{
+        model.name, ref.id, ref.quantity, combination_key(ref), format_vector(ref.value), "-", "-",
+        "",         ""};
     std::ostringstream tol;
     tol << std::setprecision(3) << ref.tolerance << (ref.relative ? " rel" : " abs");
     row.tolerance = tol.str();
@@ -144,8 +146,10 @@ Row compare(const Model& model, const nlohmann::json& result, const ReferenceVal
     bool pass = true;
     for (size_t i = 0; i < computed.size(); ++i) {
         const double d = std::abs(computed[i] - ref.value[i]);
-        const double allowed = ref.relative ? ref.tolerance * std::abs(ref.value[i]) : ref.tolerance;
-        worst = std::max(worst, ref.relative && ref.value[i] != 0.0 ? d / std::abs(ref.value[i]) : d);
+        const double allowed =
+            ref.relative ? ref.tolerance * std::abs(ref.value[i]) : ref.tolerance;
+        worst =
+            std::max(worst, ref.relative && ref.value[i] != 0.0 ? d / std::abs(ref.value[i]) : d);
         if (!(d <= allowed)) pass = false;
     }
     row.computed = format_vector(computed);
@@ -157,22 +161,25 @@ Row compare(const Model& model, const nlohmann::json& result, const ReferenceVal
 }
 
 void print_table(const std::vector<Row>& rows, std::ostream& os) {
-    const char* headers[] = {"case", "reference", "quantity", "combination", "published",
+    const char* headers[] = {"case",     "reference",  "quantity",  "combination", "published",
                              "computed", "difference", "tolerance", "result"};
     std::vector<size_t> width(9);
     auto cells = [](const Row& r) {
-        return std::vector<std::string>{r.case_name, r.id, r.quantity, r.combination, r.published,
-                                        r.computed, r.difference, r.tolerance, r.verdict};
+        return std::vector<std::string>{r.case_name,   r.id,        r.quantity,
+                                        r.combination, r.published, r.computed,
+                                        r.difference,  r.tolerance, r.verdict};
     };
     for (int i = 0; i < 9; ++i) width[i] = std::string(headers[i]).size();
     for (const Row& r : rows) {
         const auto c = cells(r);
-        for (int i = 0; i < 9; ++i) width[i] = std::min<size_t>(60, std::max(width[i], c[i].size()));
+        for (int i = 0; i < 9; ++i)
+            width[i] = std::min<size_t>(60, std::max(width[i], c[i].size()));
     }
     auto line = [&](const std::vector<std::string>& c) {
         for (int i = 0; i < 9; ++i) {
             std::string cell = c[i].size() > 60 ? c[i].substr(0, 57) + "..." : c[i];
-            os << std::left << std::setw(static_cast<int>(width[i])) << cell << (i < 8 ? "  " : "\n");
+            os << std::left << std::setw(static_cast<int>(width[i])) << cell
+               << (i < 8 ? "  " : "\n");
         }
     };
     line({headers, headers + 9});
@@ -185,9 +192,10 @@ std::vector<Row> verify_rows(const std::vector<std::string>& cases) {
         const std::string path = resolve_case_path(c);
         const Model base = load_case(path, {});
         std::map<std::string, std::vector<const ReferenceValue*>> groups;
-        for (const ReferenceValue& ref : base.references) groups[combination_key(ref)].push_back(&ref);
+        for (const ReferenceValue& ref : base.references)
+            groups[combination_key(ref)].push_back(&ref);
         for (const auto& [key, refs] : groups) {
-            Model model = load_case(path, overrides_for(*refs.front()));
+            Model model = load_case(path, reference_overrides(*refs.front()));
             const auto elements = refs.front()->applies_to.find("elements");
             if (elements != refs.front()->applies_to.end()) {
                 for (Member& m : model.members) m.elements = std::stoi(elements->second);
@@ -214,16 +222,19 @@ std::string published_references_markdown(const std::vector<std::string>& cases)
           "result |\n|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
         md << "| " << r.case_name << " | " << r.id << " | "
-           << (r.combination.empty() ? "the case's own" : r.combination) << " | "
-           << r.published << " | " << r.computed << " | " << r.difference << " | "
-           << r.tolerance << " | " << r.verdict << " |\n";
+           << (r.combination.empty() ? "the case's own" : r.combination) << " | " << r.published
+           << " | " << r.computed << " | " << r.difference << " | " << r.tolerance << " | "
+           << r.verdict << " |\n";
     }
     return md.str() + "\n";
 }
 
 int command_verify(const Args& args) {
     const CommandSpec spec{
-        "verify", "[CASE ...]", 0, -1,
+        "verify",
+        "[CASE ...]",
+        0,
+        -1,
         "Run every applicable published reference of the given cases (default: the whole catalog) "
         "and compare with its tolerance. Prints a table; exit 1 on any gated miss.",
         {{"json", "FILE", "also write the table as JSON"}}};
@@ -242,10 +253,15 @@ int command_verify(const Args& args) {
         if (r.verdict == "FAIL") ++misses;
         if (r.verdict == "pass" || r.verdict == "FAIL") ++gated;
         if (r.verdict == "unavailable") ++unavailable;
-        table.push_back({{"case", r.case_name}, {"reference", r.id}, {"quantity", r.quantity},
-                         {"combination", r.combination}, {"published", r.published},
-                         {"computed", r.computed}, {"difference", r.difference},
-                         {"tolerance", r.tolerance}, {"result", r.verdict}});
+        table.push_back({{"case", r.case_name},
+                         {"reference", r.id},
+                         {"quantity", r.quantity},
+                         {"combination", r.combination},
+                         {"published", r.published},
+                         {"computed", r.computed},
+                         {"difference", r.difference},
+                         {"tolerance", r.tolerance},
+                         {"result", r.verdict}});
     }
     std::cout << "\nverify: " << gated - misses << " gated references passed, " << misses
               << " missed; " << rows.size() - gated - unavailable << " recorded only; "
