@@ -175,24 +175,35 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     // consistent: an initial velocity, a step load). tout1 only sets IDACalcIC's step scale.
     const bool consistent =
         already_consistent(dae, s.start_time, x, xdot, s.newton.residual_tolerance);
-    int flag =
-        consistent ? IDA_SUCCESS : IDACalcIC(r.ida, IDA_YA_YDP_INIT, s.start_time + interval);
-    if (flag < 0) {
-        outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
-        outcome.message = failure("IDACalcIC", s.start_time, flag, user);
-        statistics(r.ida, outcome);
-        return outcome;
+    if (!consistent) {
+        // IDACalcIC with the initial-condition split (DaeSystem::initial_condition_differential),
+        // then the integration's id again; the completed rates restart IDA (IDAReInit keeps every
+        // option).
+        fill(r.id, dae.initial_condition_differential(x));
+        check(IDASetId(r.ida, r.id), "IDASetId");
+        const int flag = IDACalcIC(r.ida, IDA_YA_YDP_INIT, s.start_time + interval);
+        if (flag < 0) {
+            outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
+            outcome.message = failure("IDACalcIC", s.start_time, flag, user);
+            statistics(r.ida, outcome);
+            return outcome;
+        }
+        check(IDAGetConsistentIC(r.ida, r.yy, r.yp), "IDAGetConsistentIC");
+        x = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yy), x.size());
+        xdot = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yp), x.size());
+        dae.complete_initial_rates(x, xdot);
+        fill(r.yp, xdot);
+        fill(r.id, dae.differential());
+        check(IDASetId(r.ida, r.id), "IDASetId");
+        check(IDAReInit(r.ida, s.start_time, r.yy, r.yp), "IDAReInit");
     }
-    if (!consistent) check(IDAGetConsistentIC(r.ida, r.yy, r.yp), "IDAGetConsistentIC");
-    x = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yy), x.size());
-    xdot = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yp), x.size());
     if (output) output(s.start_time, x, xdot, 0);
     const long outputs = std::lround((s.end_time - s.start_time) / interval);
     long iterations_before = 0;
     for (long k = 1; k <= outputs; ++k) {
         const double tout = k == outputs ? s.end_time : s.start_time + k * interval;
         double tret = outcome.last_time;
-        flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);
+        const int flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);
         statistics(r.ida, outcome);
         if (flag < 0) {
             outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;

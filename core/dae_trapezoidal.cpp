@@ -101,8 +101,8 @@ class TrapezoidalStep : public AdditiveSystem {
 class InitialConditions : public AdditiveSystem {
   public:
     InitialConditions(DaeSystem& dae, double t, const VecX& x, const VecX& xdot, double rate_time)
-        : AdditiveSystem(dae), t_(t), x_(x) {
-        const VecX& d = dae.differential();
+        : AdditiveSystem(dae), t_(t), x_(x), d_(dae.initial_condition_differential(x)) {
+        const VecX& d = d_;
         z_ = VecX(x.size());
         scale_ = dae.increment_scale();
         for (Eigen::Index i = 0; i < x.size(); ++i) {
@@ -116,7 +116,7 @@ class InitialConditions : public AdditiveSystem {
         raise_to_resolution(J, dae.residual_scale(), scale_);
     }
     void split(VecX& x, VecX& xdot) const {
-        const VecX& d = dae_.differential();
+        const VecX& d = d_;
         x = x_;
         xdot = VecX::Zero(x_.size());
         for (Eigen::Index i = 0; i < x_.size(); ++i) {
@@ -135,7 +135,7 @@ class InitialConditions : public AdditiveSystem {
         }
         dae_.evaluate(t_, xs_, xdot_, residual, &Jx_, &Jxd_);
         if (jacobian->nonZeros() != Jx_.nonZeros()) *jacobian = Jx_;
-        const VecX& d = dae_.differential();
+        const VecX& d = d_;
         for (Eigen::Index c = 0; c < Jx_.outerSize(); ++c) {
             const SparseMatrix& from = d[c] != 0.0 ? Jxd_ : Jx_;
             for (int k = Jx_.outerIndexPtr()[c]; k < Jx_.outerIndexPtr()[c + 1]; ++k) {
@@ -148,6 +148,7 @@ class InitialConditions : public AdditiveSystem {
   private:
     double t_;
     VecX x_;
+    VecX d_;  // the initial-condition split (DaeSystem::initial_condition_differential)
     VecX xs_;
     VecX scale_;
 };
@@ -170,7 +171,10 @@ NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, V
     }
     InitialConditions ic(dae, t, x, xdot, rate_time);
     const NewtonOutcome out = solve_newton(ic, settings);
-    if (out.converged) ic.split(x, xdot);
+    if (out.converged) {
+        ic.split(x, xdot);
+        dae.complete_initial_rates(x, xdot);
+    }
     return out;
 }
 

@@ -1,6 +1,8 @@
 // Dynamic and modal analyses of the mixed formulation (issue 9; analyses.hpp). This file holds the
 // parameterization switch for them, as make_problem.cpp does for statics.
+#include <algorithm>
 #include <iostream>
+#include <sstream>
 #include <type_traits>
 
 #include "analyses.hpp"
@@ -8,9 +10,9 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
-#include "formulations/mixed/mixed_dynamics.hpp"
+#include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
-#include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/mixed_statics_of.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/registry.hpp"
 
@@ -29,7 +31,7 @@ nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v
 template <class P>
 bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& state,
                   double& lambda, bool record = true) {
-    form::MixedStatics<P> statics(model);
+    form::MixedStaticsOf<P> statics(model);
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
     std::vector<double> loads = model.analysis.statics.load_factors;
@@ -54,16 +56,16 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
 
 // Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
 // the largest free-node component, real part, largest component 1; rotations as spatial rotation
-// increments H_s(ĉ₀) δĉ.
+// increments H_s(ĉ₀) δĉ (3 × 3, or 3 × 4 for the quaternion's q̂).
 template <class P>
-nlohmann::json mode_json(const Model& model, const form::MixedDynamics<P>& dyn, const VecX& x0,
+nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
                          const form::VecXc& shape, double frequency_hz, double growth_rate) {
-    const form::MixedLayout& layout = dyn.layout();
+    constexpr int K = P::kSize;
     std::complex<double> peak = 0.0;
-    for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
-        if (layout.supported(n)) continue;
-        for (int k = 0; k < 6; ++k) {
-            const std::complex<double> v = shape[6 * n + k];
+    for (int n = 0; n < dyn.node_count(); ++n) {
+        if (dyn.supported(n)) continue;
+        for (int k = 0; k < 3 + K; ++k) {
+            const std::complex<double> v = shape[dyn.node_column(n) + k];
             if (std::abs(v) > std::abs(peak)) peak = v;
         }
     }
@@ -71,12 +73,12 @@ nlohmann::json mode_json(const Model& model, const form::MixedDynamics<P>& dyn, 
     for (size_t i = 0; i < model.points.size(); ++i) {
         Vec3 d = Vec3::Zero(), r = Vec3::Zero();
         const int n = static_cast<int>(i);
-        if (!layout.supported(n) && std::abs(peak) > 0.0) {
-            for (int k = 0; k < 3; ++k) {
-                d[k] = (shape[6 * n + k] / peak).real();
-                r[k] = (shape[6 * n + 3 + k] / peak).real();
-            }
-            r = P::spatial_tangent(x0.segment<3>(6 * n + 3)) * r;
+        if (!dyn.supported(n) && std::abs(peak) > 0.0) {
+            const int c = dyn.node_column(n);
+            param::Params<K> dq;
+            for (int k = 0; k < 3; ++k) d[k] = (shape[c + k] / peak).real();
+            for (int k = 0; k < K; ++k) dq[k] = (shape[c + 3 + k] / peak).real();
+            r = P::spatial_tangent(x0.segment<K>(c + 3)) * dq;
         }
         points[model.points[i].name] = {{"displacement", vec3(d)}, {"rotation", vec3(r)}};
     }
@@ -85,12 +87,13 @@ nlohmann::json mode_json(const Model& model, const form::MixedDynamics<P>& dyn, 
 
 template <class P>
 void modal(const Model& model, bool trace, nlohmann::json& result) {
-    VecX state = VecX::Zero(form::MixedStatics<P>(model).size());
+    // The reference configuration (zero for three parameters, unit quaternions for four).
+    VecX state = form::MixedStaticsOf<P>(model).state_vector();
     double lambda = 0.0;
     if (model.analysis.modal.about_static_state && has_static_load(model)) {
         if (!static_state<P>(model, trace, result, state, lambda)) return;
     }
-    form::MixedDynamics<P> dyn(form::frozen_loads(model, lambda), 1.0);
+    form::MixedDynamicsOf<P> dyn(form::frozen_loads(model, lambda), 1.0);
     result["dofs"] = dyn.size();
     const VecX x0 = dyn.from_static_state(state);
     VecX r;
@@ -112,6 +115,11 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
         "modes of the " + std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
 }
 
+void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNormDrift& worst) {
+    worst.nodes = std::max(worst.nodes, now.nodes);
+    worst.elements = std::max(worst.elements, now.elements);
+}
+
 // The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
 // or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = 1e-6 × the state scales).
 bool use_ida(const DynamicSettings& d) {
@@ -129,7 +137,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
             "analysis: a dynamic analysis needs time_step > 0 and end_time > time_step");
     }
     const bool ida = use_ida(d);
-    VecX state = VecX::Zero(form::MixedStatics<P>(model).size());
+    VecX state = form::MixedStaticsOf<P>(model).state_vector();
     if (d.initial_state == "static" && has_static_load(model)) {
         double lambda = 0.0;
         Model at_start = model;
@@ -137,7 +145,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         if (!static_state<P>(at_start, trace, result, state, lambda, false)) return;
     }
     // Loads are evaluated at max(t, 1e-6 Δt): their right limit at the start (mixed_dynamics.hpp).
-    form::MixedDynamics<P> dyn(model, d.end_time, 1e-6 * d.time_step);
+    form::MixedDynamicsOf<P> dyn(model, d.end_time, 1e-6 * d.time_step);
     result["dofs"] = dyn.size();
     VecX x = dyn.from_static_state(state);
     if (d.initial_velocity.squaredNorm() > 0.0)
@@ -152,6 +160,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
     result["steps"] = nlohmann::json::array();
+    form::QuaternionNormDrift drift;  // the quaternion's, over the output times
     const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int iterations) {
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = dyn.point_state(xs, t, static_cast<int>(i));
@@ -160,12 +169,14 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         // Supported points also carry their reactions (the node unknowns, inertial components):
         // the root force and moment histories (seed 002 Fig. 11).
         for (size_t i = 0; i < model.points.size(); ++i) {
-            if (!dyn.layout().supported(static_cast<int>(i))) continue;
+            const int n = static_cast<int>(i);
+            if (!dyn.supported(n)) continue;
             nlohmann::json& p = step["points"][model.points[i].name];
-            p["reaction_force"] = vec3(xs.segment<3>(6 * static_cast<int>(i)));
-            p["reaction_moment"] = vec3(xs.segment<3>(6 * static_cast<int>(i) + 3));
+            p["reaction_force"] = vec3(xs.segment<3>(dyn.node_column(n)));
+            p["reaction_moment"] = vec3(xs.segment<3>(dyn.node_column(n) + 3));
         }
         result["steps"].push_back(std::move(step));
+        if constexpr (P::kSize == 4) track_norm_drift(dyn.norm_drift(xs, t), drift);
     };
     const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
                                : integrate_trapezoidal(dyn, x, xdot, s, output);
@@ -181,12 +192,19 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     result["counters"] = counters_json(dyn.counters());
     result["status"] = to_string(out.status);
     result["message"] = out.message;
+    if constexpr (P::kSize == 4) {
+        result["quaternion_norm_drift"] = {{"nodes", drift.nodes}, {"elements", drift.elements}};
+        std::ostringstream m;
+        m << "; max ||q| - 1| over the output times: nodes " << drift.nodes
+          << ", elements (midpoint averages, O(dL^2)) " << drift.elements;
+        result["message"] = out.message + m.str();
+    }
 }
 
-// The parameterizations the mixed dynamics instantiate (the quaternion's mixed kinematics are
-// still open, issue 8): f.template operator()<P>() or `available = false`.
+// The parameterization switch of the mixed dynamics and modal analysis: f.template operator()<P>()
+// (WM with the continuous map when the case asks for it).
 template <class F>
-void dispatch_mixed(const Model& model, nlohmann::json& result, F&& f) {
+void dispatch_mixed(const Model& model, F&& f) {
     const Discretization& d = model.discretization;
     param::dispatch_parameterization(d.rotation, [&]<class P>() {
         if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
@@ -195,22 +213,18 @@ void dispatch_mixed(const Model& model, nlohmann::json& result, F&& f) {
                 return;
             }
         }
-        if constexpr (P::kSize == 3) {
-            f.template operator()<P>();
-        } else {
-            report_unavailable(model, result);
-        }
+        f.template operator()<P>();
     });
 }
 
 }  // namespace
 
 void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result) {
-    dispatch_mixed(model, result, [&]<class P>() { dynamic<P>(model, trace, result); });
+    dispatch_mixed(model, [&]<class P>() { dynamic<P>(model, trace, result); });
 }
 
 void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result) {
-    dispatch_mixed(model, result, [&]<class P>() { modal<P>(model, trace, result); });
+    dispatch_mixed(model, [&]<class P>() { modal<P>(model, trace, result); });
 }
 
 }  // namespace rotbeam

@@ -18,6 +18,10 @@
 // time derivative of the product is taken with ċ itself (not Ω), as the overbar says, so the
 // residual is exact for any (X, Ẋ); at a solution f_H = 0 makes the two agree (C^ba H ċ = Ω).
 // Both halves f^− and f^+ carry the same inertial term (each half-element's momentum).
+//
+// Generic in the parameter count K: for the quaternion (K = 4, docs/mixed-formulation.md) H_m is
+// 3 × 4 and ċ enters only through H_m ċ, so the radial part of the rate (H_m q = 0) enters nowhere
+// and R = C(q)/|q|² needs no unit norm.
 #pragma once
 
 #include "core/so3.hpp"
@@ -28,34 +32,38 @@
 namespace rotbeam::form {
 
 // Rates of the element unknowns u, c, P, H (the kinematic unknowns F, M have none).
+template <int K = 3>
 struct MixedElementRates {
     Vec3 u_dot = Vec3::Zero();
-    Vec3 c_dot = Vec3::Zero();
+    param::Params<K> c_dot = param::Params<K>::Zero();
     Vec3 P_dot = Vec3::Zero();
     Vec3 H_dot = Vec3::Zero();
 };
 
+template <int K = 3>
 struct MixedInertiaResult {
     Vec3 fu = Vec3::Zero();    // added to f_u^− and f_u^+
     Vec3 fpsi = Vec3::Zero();  // added to f_ψ^− and f_ψ^+
     Vec3 fP = Vec3::Zero();    // Eq. 49
     Vec3 fH = Vec3::Zero();    // Eq. 50
     // Rows [fu; fpsi; fP; fH]; columns [c; P; H] (x) and [u̇; ċ; Ṗ; Ḣ] (xdot).
-    Eigen::Matrix<double, 12, 9> J_x = Eigen::Matrix<double, 12, 9>::Zero();
-    Eigen::Matrix<double, 12, 12> J_xdot = Eigen::Matrix<double, 12, 12>::Zero();
+    Eigen::Matrix<double, 12, K + 6> J_x = Eigen::Matrix<double, 12, K + 6>::Zero();
+    Eigen::Matrix<double, 12, K + 9> J_xdot = Eigen::Matrix<double, 12, K + 9>::Zero();
 };
 
 // Evaluates the momentum terms of one element. `mass_inverse` is I⁻¹ (material axes of the
 // element). Jacobians only when `with_jacobian`.
 template <param::RotationParameterization P>
-void mixed_element_inertia(const MixedElement& el, const Mat6& mass_inverse, const Vec3& c,
-                           const Vec3& Pm, const Vec3& Hm, const MixedElementRates& rate,
-                           bool with_jacobian, MixedInertiaResult& out) {
-    static_assert(P::kSize == 3, "the additive mixed kinematics need three rotation parameters");
+void mixed_element_inertia(const MixedElement& el, const Mat6& mass_inverse,
+                           const param::Params<P::kSize>& c, const Vec3& Pm, const Vec3& Hm,
+                           const MixedElementRates<P::kSize>& rate, bool with_jacobian,
+                           MixedInertiaResult<P::kSize>& out) {
+    constexpr int K = P::kSize;
+    using Tan = param::Tangent<K>;
     const double h = 0.5 * el.length;
     const Mat3 R = P::matrix(c);
     const Mat3 A = R * el.Cab;
-    const Mat3 Ht = P::material_tangent(c);
+    const Tan Ht = P::material_tangent(c);
     const Vec6 W = mass_inverse * (Vec6() << Pm, Hm).finished();  // [V; Ω], Eq. 18 inverted
     const Vec3 V = W.head<3>();
     const Vec3 Omega = W.tail<3>();
@@ -69,37 +77,38 @@ void mixed_element_inertia(const MixedElement& el, const Mat6& mass_inverse, con
     out.fH = Omega - el.Cab.transpose() * y;
     if (!with_jacobian) return;
     const Mat3 ytil = so3::skew(y);
-    const Mat3 D = P::material_tangent_derivative(c, rate.c_dot);  // ∂(H ċ)/∂c
+    const Tan D = P::material_tangent_derivative(c, rate.c_dot);  // ∂(H ċ)/∂c
     const Mat3 dV_dP = mass_inverse.topLeftCorner<3, 3>();
     const Mat3 dV_dH = mass_inverse.topRightCorner<3, 3>();
     const Mat3 dW_dP = mass_inverse.bottomLeftCorner<3, 3>();
     const Mat3 dW_dH = mass_inverse.bottomRightCorner<3, 3>();
     const Mat3 Ptil = so3::skew(Pm);
-    Eigen::Matrix<double, 12, 9>& J = out.J_x;
-    // ∂/∂c of R z with z(c): −R z̃ H + R ∂z/∂c.
-    J.block<3, 3>(0, 0) = h * (-R * so3::skew(el.Cab * rate.P_dot) * Ht +
-                               R * so3::skew(wP.cross(y)) * Ht - R * so3::skew(wP) * D);
-    J.block<3, 3>(0, 3) = h * R * ytil * el.Cab;
-    J.block<3, 3>(0, 6).setZero();
-    J.block<3, 3>(3, 0) =
+    Eigen::Matrix<double, 12, K + 6>& J = out.J_x;
+    // ∂/∂c of R z with z(c): −R z̃ H + R ∂z/∂c. Columns: c (K), P (3), H (3).
+    J.template block<3, K>(0, 0) = h * (-R * so3::skew(el.Cab * rate.P_dot) * Ht +
+                                        R * so3::skew(wP.cross(y)) * Ht - R * so3::skew(wP) * D);
+    J.template block<3, 3>(0, K) = h * R * ytil * el.Cab;
+    J.template block<3, 3>(0, K + 3).setZero();
+    J.template block<3, K>(3, 0) =
         h * (-R * so3::skew(el.Cab * rate.H_dot) * Ht + R * so3::skew(wH.cross(y)) * Ht -
              R * so3::skew(wH) * D - R * so3::skew(el.Cab * VxP) * Ht);
-    J.block<3, 3>(3, 3) = h * A * (so3::skew(V) - Ptil * dV_dP);
-    J.block<3, 3>(3, 6) = h * (R * ytil * el.Cab - A * Ptil * dV_dH);
-    J.block<3, 3>(6, 0) = -R * so3::skew(el.Cab * V) * Ht;
-    J.block<3, 3>(6, 3) = A * dV_dP;
-    J.block<3, 3>(6, 6) = A * dV_dH;
-    J.block<3, 3>(9, 0) = -el.Cab.transpose() * D;
-    J.block<3, 3>(9, 3) = dW_dP;
-    J.block<3, 3>(9, 6) = dW_dH;
-    Eigen::Matrix<double, 12, 12>& K = out.J_xdot;
-    K.setZero();
-    K.block<3, 3>(0, 3) = -h * R * so3::skew(wP) * Ht;
-    K.block<3, 3>(0, 6) = h * A;
-    K.block<3, 3>(3, 3) = -h * R * so3::skew(wH) * Ht;
-    K.block<3, 3>(3, 9) = h * A;
-    K.block<3, 3>(6, 0) = -Mat3::Identity();
-    K.block<3, 3>(9, 3) = -el.Cab.transpose() * Ht;
+    J.template block<3, 3>(3, K) = h * A * (so3::skew(V) - Ptil * dV_dP);
+    J.template block<3, 3>(3, K + 3) = h * (R * ytil * el.Cab - A * Ptil * dV_dH);
+    J.template block<3, K>(6, 0) = -R * so3::skew(el.Cab * V) * Ht;
+    J.template block<3, 3>(6, K) = A * dV_dP;
+    J.template block<3, 3>(6, K + 3) = A * dV_dH;
+    J.template block<3, K>(9, 0) = -el.Cab.transpose() * D;
+    J.template block<3, 3>(9, K) = dW_dP;
+    J.template block<3, 3>(9, K + 3) = dW_dH;
+    // Columns of ∂/∂Ẋ: u̇ (3), ċ (K), Ṗ (3), Ḣ (3).
+    Eigen::Matrix<double, 12, K + 9>& Kd = out.J_xdot;
+    Kd.setZero();
+    Kd.template block<3, K>(0, 3) = -h * R * so3::skew(wP) * Ht;
+    Kd.template block<3, 3>(0, 3 + K) = h * A;
+    Kd.template block<3, K>(3, 3) = -h * R * so3::skew(wH) * Ht;
+    Kd.template block<3, 3>(3, 6 + K) = h * A;
+    Kd.template block<3, 3>(6, 0) = -Mat3::Identity();
+    Kd.template block<3, K>(9, 3) = -el.Cab.transpose() * Ht;
 }
 
 }  // namespace rotbeam::form

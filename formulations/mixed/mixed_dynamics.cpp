@@ -1,7 +1,9 @@
 // The non-template parts of the mixed dynamics (pattern, section mass) and the explicit
 // instantiations for every three-parameter parameterization (the quaternion's mixed kinematics
 // are not written yet: issue 8).
+#include "core/errors.hpp"
 #include "core/geometry.hpp"
+#include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics_impl.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rodrigues.hpp"
@@ -58,6 +60,57 @@ Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
         }
     }
     return mass_of(st.back());
+}
+
+Model without_distributed_loads(Model m) {
+    m.distributed_loads.clear();
+    return m;
+}
+
+void refuse_mixed_damping(const Model& model) {
+    if (model.has_damping()) {
+        throw InputError("sections: damping is not available in the mixed dynamics (seed 002 "
+                         "Eqs. 45–50 are undamped)");
+    }
+}
+
+double mixed_time_value(const TimeFunction& f, double t, double floor) {
+    const bool may_jump = f.kind == TimeFunction::Kind::table || f.kind == TimeFunction::Kind::ramp;
+    return f(may_jump ? std::max(t, floor) : t);
+}
+
+MixedElement mixed_loaded_element(const Model& model, const MixedElement& element, double t,
+                                  double floor) {
+    MixedElement el = element;
+    for (const DistributedLoad& load : model.distributed_loads) {
+        if (load.member != el.member) continue;
+        const double s = mixed_time_value(load.time, t, floor);
+        if (load.frame == LoadFrame::dead) {
+            el.f_dead += s * load.force;
+            el.m_dead += s * load.moment;
+        } else {
+            el.f_follower += s * load.force;
+            el.m_follower += s * load.moment;
+        }
+    }
+    return el;
+}
+
+MixedMassInverses mixed_mass_inverses(const Model& model, const MixedLayout& layout) {
+    MixedMassInverses out;
+    for (const MixedElement& el : layout.elements) {
+        const Mat6 I = mixed_element_mass(model, el);
+        const Eigen::FullPivLU<Mat6> lu(I);
+        if (!lu.isInvertible() || lu.rcond() < 1e-14) {
+            throw InputError("member '" + model.members[static_cast<std::size_t>(el.member)].name +
+                             "': the mixed dynamics invert the section mass (seed 002 Eq. 18); "
+                             "it is singular");
+        }
+        out.inverse.push_back(lu.inverse());
+        out.mass_scale = std::max(out.mass_scale, I(0, 0));
+        out.inertia_scale = std::max(out.inertia_scale, I.diagonal().tail<3>().maxCoeff());
+    }
+    return out;
 }
 
 template class MixedDynamics<param::WienerMilenkovic>;

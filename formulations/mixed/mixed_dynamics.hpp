@@ -65,6 +65,10 @@ class MixedDynamics : public DaeSystem {
 
     const MixedLayout& layout() const { return layout_; }
     const MixedDynamicNumbering& numbering() const { return numbering_; }
+    // The accessors MixedQuaternionDynamics has too (the runner is generic over both).
+    int node_count() const { return numbering_.nodes; }
+    bool supported(int node) const { return layout_.supported(node); }
+    int node_column(int node) const { return numbering_.node_offset(node); }
     void set_load_time_floor(double t) { load_time_floor_ = t; }
 
     // The dynamic state at rest with the statics' unknowns (MixedStatics<P>::state_vector()).
@@ -96,7 +100,7 @@ class MixedDynamics : public DaeSystem {
     double load_time_floor_ = 0.0;
     AssemblyCounters counters_;
     MixedElementResult static_result_;
-    MixedInertiaResult inertia_result_;
+    MixedInertiaResult<> inertia_result_;
 };
 
 // The fixed sparsity pattern of ∂F/∂X and ∂F/∂Ẋ (all structural entries of both).

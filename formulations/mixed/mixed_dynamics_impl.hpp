@@ -6,18 +6,12 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 
 namespace rotbeam::form {
 
 namespace detail {
-
-// The model without its distributed loads: build_mixed_layout then folds only gravity into the
-// elements, and the dynamics add the distributed loads with their time functions.
-inline Model without_distributed_loads(Model m) {
-    m.distributed_loads.clear();
-    return m;
-}
 
 template <class Derived>
 void add_block(SparseMatrix& J, int r0, int c0, const Eigen::MatrixBase<Derived>& b) {
@@ -38,14 +32,10 @@ inline void reset_to_pattern(const SparseMatrix& pattern, SparseMatrix& J) {
 template <param::RotationParameterization P>
 MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double load_time_floor)
     : model_(model),
-      layout_(build_mixed_layout(detail::without_distributed_loads(model))),
+      layout_(build_mixed_layout(without_distributed_loads(model))),
       load_time_floor_(load_time_floor) {
-    static_assert(P::kSize == 3, "the quaternion's mixed dynamics are not written yet");
-    if (model.has_damping()) {
-        // Seed 002's mixed equations carry no damping; refusing beats ignoring the input.
-        throw InputError("sections: damping is not available in the mixed dynamics (seed 002 "
-                         "Eqs. 45–50 are undamped)");
-    }
+    static_assert(P::kSize == 3, "the quaternion has MixedQuaternionDynamics");
+    refuse_mixed_damping(model);
     numbering_.nodes = static_cast<int>(layout_.nodes.size());
     numbering_.elements = layout_.element_count();
     numbering_.rotation_size = P::kSize;
@@ -53,19 +43,9 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
     // from the full model so both analyses scale alike.
     layout_.force_scale = build_mixed_layout(model).force_scale;
     layout_.has_follower = model.has_follower_loads();
-    double mass_scale = 0.0, inertia_scale = 0.0;
-    for (const MixedElement& el : layout_.elements) {
-        const Mat6 I = mixed_element_mass(model_, el);
-        const Eigen::FullPivLU<Mat6> lu(I);
-        if (!lu.isInvertible() || lu.rcond() < 1e-14) {
-            throw InputError("member '" + model_.members[static_cast<std::size_t>(el.member)].name +
-                             "': the mixed dynamics invert the section mass (seed 002 Eq. 18); "
-                             "it is singular");
-        }
-        mass_inverse_.push_back(lu.inverse());
-        mass_scale = std::max(mass_scale, I(0, 0));
-        inertia_scale = std::max(inertia_scale, I.diagonal().tail<3>().maxCoeff());
-    }
+    const MixedMassInverses masses = mixed_mass_inverses(model_, layout_);
+    mass_inverse_ = masses.inverse;
+    const double mass_scale = masses.mass_scale, inertia_scale = masses.inertia_scale;
     pattern_ = mixed_dynamic_pattern(layout_, numbering_);
     const int n = numbering_.size();
     differential_ = VecX::Zero(n);
@@ -118,12 +98,9 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
     }
 }
 
-// Tables and ramps may jump at the start (a release: 1 → 0 within 1e-12 s); they are evaluated
-// at their right limit there, max(t, t⁺). Sines and constants are continuous and evaluated at t.
 template <param::RotationParameterization P>
 double MixedDynamics<P>::time_value(const TimeFunction& f, double t) const {
-    const bool may_jump = f.kind == TimeFunction::Kind::table || f.kind == TimeFunction::Kind::ramp;
-    return f(may_jump ? std::max(t, load_time_floor_) : t);
+    return mixed_time_value(f, t, load_time_floor_);
 }
 
 template <param::RotationParameterization P>
@@ -147,23 +124,10 @@ void MixedDynamics<P>::node_motion(const VecX& x, double t, int node, Vec3& u_ha
     c_hat = P::from_rotation_vector(s * con.rotation);
 }
 
-// The element with its distributed loads at time t (Eqs. 51–54, constant per length); gravity
-// is already in the layout's f_dead.
 template <param::RotationParameterization P>
 MixedElement MixedDynamics<P>::loaded_element(int e, double t) const {
-    MixedElement el = layout_.elements[static_cast<std::size_t>(e)];
-    for (const DistributedLoad& load : model_.distributed_loads) {
-        if (load.member != el.member) continue;
-        const double s = time_value(load.time, t);
-        if (load.frame == LoadFrame::dead) {
-            el.f_dead += s * load.force;
-            el.m_dead += s * load.moment;
-        } else {
-            el.f_follower += s * load.force;
-            el.m_follower += s * load.moment;
-        }
-    }
-    return el;
+    return mixed_loaded_element(model_, layout_.elements[static_cast<std::size_t>(e)], t,
+                                load_time_floor_);
 }
 
 template <param::RotationParameterization P>
@@ -192,14 +156,14 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
     s.c = x.segment<3>(o + nb.c());
     s.F = x.segment<3>(o + nb.F());
     s.M = x.segment<3>(o + nb.M());
-    MixedElementRates rate;
+    MixedElementRates<> rate;
     rate.u_dot = xdot.segment<3>(o + nb.u());
     rate.c_dot = xdot.segment<3>(o + nb.c());
     rate.P_dot = xdot.segment<3>(o + nb.P());
     rate.H_dot = xdot.segment<3>(o + nb.H());
     const bool jac = J_x != nullptr || J_xdot != nullptr;
     MixedElementResult& r = static_result_;
-    MixedInertiaResult& q = inertia_result_;
+    MixedInertiaResult<>& q = inertia_result_;
     mixed_element_statics<P>(el, s, 1.0, jac, r);  // Eqs. 45–48, static part
     mixed_element_inertia<P>(el, mass_inverse_[static_cast<std::size_t>(e)], s.c,
                              x.segment<3>(o + nb.P()), x.segment<3>(o + nb.H()), rate, jac, q);

@@ -1,0 +1,42 @@
+// What the mixed dynamics of three parameters (mixed_dynamics.hpp) and of the quaternion
+// (mixed_quaternion_dynamics.hpp) share beyond the element (mixed_dynamic_element.hpp): loads in
+// time, the inverted section masses (seed 002 Eq. 18) and the scales of the momentum unknowns and
+// rows. Independent of the parameterization.
+#pragma once
+
+#include <vector>
+
+#include "core/model.hpp"
+#include "formulations/mixed/mixed_layout.hpp"
+
+namespace rotbeam::form {
+
+// The model without its distributed loads: build_mixed_layout then folds only gravity into the
+// elements, and the dynamics add the distributed loads with their time functions.
+Model without_distributed_loads(Model m);
+
+// Throws InputError when a section carries damping: seed 002's mixed equations are undamped, and
+// refusing beats ignoring the input.
+void refuse_mixed_damping(const Model& model);
+
+// A time function at t. Tables and ramps may jump at the start (a release: 1 → 0 within 1e-12 s);
+// they are evaluated at their right limit there, max(t, floor). Sines and constants are continuous
+// and evaluated at t.
+double mixed_time_value(const TimeFunction& f, double t, double floor);
+
+// The element with its distributed loads at time t (Eqs. 51–54, constant per length); gravity is
+// already in the layout's f_dead.
+MixedElement mixed_loaded_element(const Model& model, const MixedElement& element, double t,
+                                  double floor);
+
+// The inverse of every element's section mass I (Eq. 18 is inverted: [V; Ω] = I⁻¹ [P; H]) and the
+// largest mass per length and rotary inertia (the momentum scales). Throws InputError when a
+// section has no mass or a singular one.
+struct MixedMassInverses {
+    std::vector<Mat6> inverse;
+    double mass_scale = 0.0;
+    double inertia_scale = 0.0;
+};
+MixedMassInverses mixed_mass_inverses(const Model& model, const MixedLayout& layout);
+
+}  // namespace rotbeam::form
