@@ -108,13 +108,28 @@ struct DistributedLoad {
 };
 
 // A dead distributed load given as a function of the arc length s along one member (from its
-// start) and of the load factor λ: force and moment per unit reference length, inertial
-// components, already scaled (λ is not applied again). It is built in code, not read from case
-// files: the load of a manufactured solution (core/oracles/manufactured.hpp), which must vary
-// along the member and with λ in a way no case-file load can.
+// start): force and moment per unit reference length, inertial components. It is built in code,
+// not read from case files: the load of a manufactured solution (core/oracles/manufactured.hpp,
+// manufactured_motion.hpp), which must vary along the member and in λ or t in a way no case-file
+// load can. Two forms, one of which is set:
+//  - `density(s, λ)`: a static field, already scaled (λ is not applied again); dynamic analyses
+//    see it at λ = 1, constant in time;
+//  - `density_in_time(s, t)`: a field in time (the inertial loads of a manufactured motion);
+//    statics take it at the analysis time (0 unless a dynamic analysis set one) times λ.
 struct LoadField {
     int member = -1;
     std::function<void(double s, double lambda, Vec3& force, Vec3& moment)> density;
+    std::function<void(double s, double t, Vec3& force, Vec3& moment)> density_in_time;
+    // The load at s for load factor λ at time t, whichever form is set.
+    void evaluate(double s, double lambda, double t, Vec3& force, Vec3& moment) const {
+        if (density_in_time) {
+            density_in_time(s, t, force, moment);
+            force *= lambda;
+            moment *= lambda;
+            return;
+        }
+        density(s, lambda, force, moment);
+    }
 };
 
 struct Constraint {

@@ -21,6 +21,7 @@ nlohmann::json study_convergence(const StudyOptions& o);     // study_convergenc
 nlohmann::json study_singularity(const StudyOptions& o);     // study_singularity.cpp
 nlohmann::json study_extremes(const StudyOptions& o);        // study_extremes.cpp
 nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
+nlohmann::json study_manufactured_time(const StudyOptions& o);  // study_manufactured_time.cpp
 
 using StudyFunction = nlohmann::json (*)(const StudyOptions&);
 // The studies in report order (study_commands.cpp).

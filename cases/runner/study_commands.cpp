@@ -15,6 +15,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"convergence", study_convergence},
         {"singularity", study_singularity},
         {"extremes", study_extremes},
+        {"manufactured-time", study_manufactured_time},
         {"speed-accuracy", study_speed_accuracy},
     };
     return table;

@@ -133,6 +133,7 @@ private:
     std::vector<NodeLoad> point_loads_;
     std::vector<double> distributed_factor_;  // per distributed load: time function value
     double lambda_ = 0.0;
+    double time_ = 0.0;  // the loads' time (set_time; load fields in time)
     double force_scale_ = 1.0;
     double unit_force_scale_ = 1.0;  // at λ = 1
     double axial_stiffness_ = 0.0;   // largest EA-like diagonal entry

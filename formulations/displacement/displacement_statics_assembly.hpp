@@ -84,7 +84,7 @@ void DisplacementStatics<P>::distributed_load(const MeshElement& e, const Quadra
         if (l.member != e.member) continue;
         ++counters_.distributed_load_terms;
         Vec3 force, moment;
-        l.density(qp.s, lambda_, force, moment);  // dead: no load stiffness
+        l.evaluate(qp.s, lambda_, time_, force, moment);  // dead: no load stiffness
         f.head<3>() += force;
         f.tail<3>() += moment;
     }

@@ -204,6 +204,7 @@ void DisplacementStatics<P>::set_load_factor(double lambda) {
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::set_time(double t) {
     set_load_factor(1.0);
+    time_ = t;
     for (NodeLoad& l : point_loads_) l.factor = model_.point_loads[l.source].time(t);
     for (size_t i = 0; i < distributed_factor_.size(); ++i) {
         distributed_factor_[i] = model_.distributed_loads[i].time(t);

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
+#include "formulations/mixed/mixed_load_fields.hpp"
 
 namespace rotbeam::form {
 
@@ -178,6 +179,9 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
     residual.segment<3>(a + 3) += r.fpsi_minus + q.fpsi;
     residual.segment<3>(b) += r.fu_plus + q.fu;
     residual.segment<3>(b + 3) += r.fpsi_plus + q.fpsi;
+    // Load fields (manufactured motions): dead, so no Jacobian term.
+    counters_.distributed_load_terms += add_mixed_load_fields(
+        model_.load_fields, el, 1.0, mixed_load_field_rule(), a, b, residual, t);
     Vec3 ua, ca, ub, cb;
     node_motion(x, t, el.start_node, ua, ca);
     node_motion(x, t, el.end_node, ub, cb);
