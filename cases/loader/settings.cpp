@@ -26,6 +26,7 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"output_interval", {"dynamic"}},
     {"rho_infinity", {"dynamic"}},
     {"integrator", {"dynamic"}},
+    {"ida_tolerance", {"dynamic"}},
     {"initial_velocity", {"dynamic"}},
     {"initial_state", {"dynamic"}},
     {"modes", {"modal"}},
@@ -61,6 +62,12 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
         }
     }
     if (n["integrator"]) d.integrator = r.string(n["integrator"], "analysis.integrator");
+    if (n["ida_tolerance"]) {
+        d.ida_tolerance = r.positive(n["ida_tolerance"], "analysis.ida_tolerance");
+        if (d.ida_tolerance >= 1.0) {
+            r.fail(n["ida_tolerance"], "analysis.ida_tolerance", "must be below 1");
+        }
+    }
     if (n["initial_state"]) {
         d.initial_state =
             r.choice(n["initial_state"], "analysis.initial_state", {"rest", "static"});

@@ -13,6 +13,7 @@
 
 #include "arguments.hpp"
 #include "bench.hpp"
+#include "bench_joined_beam.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
 #include "core/results.hpp"
@@ -189,11 +190,18 @@ int command_bench(const Args& args) {
         "Benchmark the static targets (issue 13): for every parameterization × formulation the "
         "cheapest discretization reaching the target accuracy (roll-up λ = 0.4, 1.6, 2.0 to "
         "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
-        "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up.",
+        "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up; "
+        "the joined-beam modal (5 frequencies to 1e-6 of converged) and 0–2 s dynamic (joint "
+        "history to 1e-3 of a same-mesh self-converged reference) targets.",
         {{"json", "FILE", "write the results (default out/bench.json)"},
          {"history", "", "also write reports/history/<date>-<machine>.json"},
          {"repeats", "N", "timing repeats (default 11, --quick 5)"},
-         {"quick", "", "a smaller search grid and fewer repeats"}}};
+         {"quick", "", "a smaller search grid and fewer repeats"},
+         {"targets", "LIST", "comma-separated target names (default: all; e.g. joined-beam-modal)"},
+         {"references", "DIR",
+          "cache of the joined-beam dynamic references (default: joined-beam-references beside "
+          "the --json file; `rotbeam study joined-beam-dynamics --out D` writes "
+          "D/joined-beam-references)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -211,10 +219,32 @@ int command_bench(const Args& args) {
               << ms(out["startup"]["whole_process_seconds"].get<double>()) << " ms (bare process "
               << ms(out["startup"]["bare_process_seconds"].get<double>()) << " ms), in process "
               << ms(out["startup"]["in_process_seconds"].get<double>()) << " ms; target ≤ 2 ms\n\n";
+    // ",a,b," so that every name is matched whole (an empty list selects every target).
+    std::string selection(1, ',');
+    selection.append(a.value("targets").value_or(""));
+    selection.push_back(',');
+    auto selected = [&](const std::string& name) {
+        std::string whole(1, ',');
+        whole.append(name);
+        whole.push_back(',');
+        return selection == ",," || selection.find(whole) != std::string::npos;
+    };
     out["targets"] = nlohmann::json::array();
     for (const BenchTarget& t : bench_targets()) {
+        if (!selected(t.name)) continue;
         nlohmann::json target = bench_target(t, quick, repeats);
         if (!target.is_null()) out["targets"].push_back(std::move(target));
+    }
+    if (selected("joined-beam-modal"))
+        out["targets"].push_back(bench_joined_beam_modal(quick, repeats));
+    if (selected("joined-beam-dynamic")) {
+        const fs::path json_dir =
+            fs::path(a.value("json").value_or("out/bench.json")).parent_path();
+        const std::string references =
+            a.value("references")
+                .value_or(((json_dir.empty() ? fs::path(".") : json_dir) / "joined-beam-references")
+                              .string());
+        out["targets"].push_back(bench_joined_beam_dynamic(quick, repeats, references));
     }
     write_bench_outputs(a, out);
     return 0;

@@ -208,8 +208,10 @@ int command_study(const Args& args) {
         "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for every "
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
         "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
-        "`speed-accuracy` (or `all`): the static studies of docs/studies.md, written to --out "
-        "(study-NAME.md, .json, figures).",
+        "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "
+        "convergence), `joined-beam-dynamics` (0–2 s response: error vs CPU time across Δt and "
+        "IDA tolerances); `all`: every one of them. Written to --out (study-NAME.md, .json, "
+        "figures).",
         {{"json", "FILE", "write the study JSON to FILE (rotations)"},
          {"samples", "N", "angles in the sweep (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},

@@ -24,9 +24,11 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
         {"suite", {command_suite, "run the benchmark suite and write the report"}},
         {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},
         {"reference", {command_reference, "continuum reference solution of a static case"}},
-        {"study", {command_study,
-                   "run a study (rotations, convergence, singularity, extremes, speed-accuracy)"}},
-        {"bench", {command_bench, "time-to-solution benchmark of the static targets"}},
+        {"study",
+         {command_study,
+          "run a study (rotations, convergence, singularity, extremes, speed-accuracy, "
+          "joined-beam-modal, joined-beam-dynamics)"}},
+        {"bench", {command_bench, "time-to-solution benchmark (static and joined-beam targets)"}},
     };
     return table;
 }

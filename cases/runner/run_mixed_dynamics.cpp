@@ -121,7 +121,8 @@ void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNorm
 }
 
 // The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
-// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = 1e-6 × the state scales).
+// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = analysis.ida_tolerance (default 1e-6) ×
+// the state scales).
 bool use_ida(const DynamicSettings& d) {
     if (d.integrator.empty() || d.integrator == "trapezoidal") return false;
     if (d.integrator == "ida") return true;
@@ -156,6 +157,8 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     s.time_step = d.time_step;
     s.output_interval = d.output_interval;
     s.newton.max_iterations = model.solver.max_iterations;
+    s.relative_tolerance = d.ida_tolerance;
+    s.absolute_tolerance = d.ida_tolerance;
     if (trace) s.newton.trace = &std::cerr;
     RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
@@ -189,6 +192,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                           {"nonlinear_failures", out.nonlinear_failures},
                           {"max_order", ida ? s.max_order : 2},
                           {"last_time", out.last_time}};
+    if (ida) result["dynamics"]["ida_tolerance"] = d.ida_tolerance;
     result["counters"] = counters_json(dyn.counters());
     result["status"] = to_string(out.status);
     result["message"] = out.message;

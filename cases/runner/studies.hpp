@@ -22,13 +22,15 @@ nlohmann::json study_singularity(const StudyOptions& o);     // study_singularit
 nlohmann::json study_extremes(const StudyOptions& o);        // study_extremes.cpp
 nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);  // study_manufactured_time.cpp
+nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp
+nlohmann::json study_joined_beam_dynamics(const StudyOptions& o);  // study_joined_beam_dynamics.cpp
 
 using StudyFunction = nlohmann::json (*)(const StudyOptions&);
 // The studies in report order (study_commands.cpp).
 const std::vector<std::pair<std::string, StudyFunction>>& static_studies();
 
-// The suite's studies: the accuracy studies in parallel over `jobs` threads, then the
-// speed-accuracy study alone (its timings must not share the cores).
+// The suite's studies: the accuracy studies in parallel over `jobs` threads, then the timed ones
+// (speed-accuracy, joined-beam-dynamics) alone (their timings must not share the cores).
 void run_suite_studies(const StudyOptions& o, int jobs);
 
 // Runs the named study (InputError for an unknown name) or, for "all", every study.

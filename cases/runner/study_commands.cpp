@@ -17,6 +17,8 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"extremes", study_extremes},
         {"manufactured-time", study_manufactured_time},
         {"speed-accuracy", study_speed_accuracy},
+        {"joined-beam-modal", study_joined_beam_modal},
+        {"joined-beam-dynamics", study_joined_beam_dynamics},
     };
     return table;
 }
@@ -43,10 +45,19 @@ void run_named_study(const std::string& name, const StudyOptions& o) {
     }
 }
 
+namespace {
+
+// Studies whose timings decide their results: run alone, after the others.
+bool timed_study(const std::string& name) {
+    return name == "speed-accuracy" || name == "joined-beam-dynamics";
+}
+
+}  // namespace
+
 void run_suite_studies(const StudyOptions& o, int jobs) {
     std::vector<std::string> parallel;
     for (const auto& entry : static_studies()) {
-        if (entry.first != "speed-accuracy") parallel.push_back(entry.first);
+        if (!timed_study(entry.first)) parallel.push_back(entry.first);
     }
     std::atomic<size_t> next{0};
     auto worker = [&] {
@@ -55,7 +66,9 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
     std::vector<std::thread> pool;
     for (int t = 0; t < std::max(1, jobs); ++t) pool.emplace_back(worker);
     for (std::thread& t : pool) t.join();
-    run_named_study("speed-accuracy", o);
+    for (const auto& entry : static_studies()) {
+        if (timed_study(entry.first)) run_named_study(entry.first, o);
+    }
 }
 
 }  // namespace rotbeam::cli

@@ -52,7 +52,8 @@ void write_peak_rss() {
 // posix_spawn (glibc: clone with CLONE_VM | CLONE_VFORK), not fork: fork copies the page tables of
 // this process, which the bench and the studies make large, and the copy was charged to the child
 // (~3 ms of a 12.6 ms 45° bend run). A user's shell pays no such cost.
-double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& exit_code) {
+double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& exit_code,
+                 double& cpu_seconds) {
     const std::string rss_file = "/tmp/rotbeam-peak-rss-" + std::to_string(getpid()) + ".txt";
     std::vector<char*> argv;
     std::string self = "/proc/self/exe";
@@ -88,6 +89,8 @@ double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& e
     if (!(reported >> rss_kb)) rss_kb = usage.ru_maxrss;  // an older binary: the kernel's figure
     std::remove(rss_file.c_str());
     exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
     return elapsed;
 }
 
@@ -137,17 +140,20 @@ Timing time_in_process(const std::function<void()>& work, int repeats, double bu
 
 Timing time_whole_process(const std::vector<std::string>& arguments, int repeats,
                           double budget_seconds) {
-    std::vector<double> samples;
+    std::vector<double> samples, cpu;
     long peak = 0;
     int exit_code = 0;
     const Clock::time_point begin = Clock::now();
     for (int i = 0; i < std::max(1, repeats); ++i) {
         long rss = 0;
-        samples.push_back(run_child(arguments, rss, exit_code));
+        double cpu_seconds = 0.0;
+        samples.push_back(run_child(arguments, rss, exit_code, cpu_seconds));
+        cpu.push_back(cpu_seconds);
         peak = std::max(peak, rss);
         if (budget_seconds > 0.0 && seconds_since(begin) > budget_seconds) break;
     }
     Timing t = summarize(std::move(samples));
+    t.median_cpu_seconds = median(std::move(cpu));
     t.peak_rss_kb = peak;
     t.exit_code = exit_code;
     return t;

@@ -22,6 +22,9 @@ struct Timing {
     int repeats = 0;
     long peak_rss_kb = 0;  // whole-process: largest child max RSS; in-process: this process's
     int exit_code = 0;     // whole-process: the child's exit code of the last repeat
+    // Whole-process: median of the child's user + system CPU time (wait4's rusage), which a
+    // shared machine inflates far less than the wall time. 0 in process.
+    double median_cpu_seconds = 0.0;
 };
 
 // Wall time (steady clock) of `work`, repeated `repeats` times (at least once), median.

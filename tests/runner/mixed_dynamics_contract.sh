@@ -54,6 +54,19 @@ grep -q "damping:" "$work/damped.yaml" || fail "could not make the damped case"
 grep -q "damping is not available in the mixed dynamics" "$work/err" || fail "damping message: $(cat "$work/err")"
 [ ! -e "$work/d.json" ] || fail "a result file was written for a refused damped case"
 
+# analysis.ida_tolerance reaches IDA: a looser tolerance takes fewer steps, and the JSON says which.
+for tol in 1e-3 1e-5; do
+    "$rotbeam" run "$src/cases/joined-beam-dead.yaml" --formulation mixed --rotation rodrigues \
+        --set analysis.integrator=ida --set analysis.ida_tolerance=$tol --set analysis.end_time=0.05 \
+        --quiet --json "$work/ida-$tol.json" >/dev/null 2>&1 || fail "ida tolerance $tol: exit $?"
+done
+python3 - "$work/ida-1e-3.json" "$work/ida-1e-5.json" <<'PY' || fail "ida_tolerance is not applied"
+import json, sys
+loose, tight = (json.load(open(f))["dynamics"] for f in sys.argv[1:])
+assert (loose["ida_tolerance"], tight["ida_tolerance"]) == (1e-3, 1e-5), (loose, tight)
+assert 3 * loose["steps"] < tight["steps"], (loose["steps"], tight["steps"])
+PY
+
 # Modal: Table III's mesh, five modes with their growth rates (undamped: round-off).
 "$rotbeam" run "$src/cases/joined-beam.yaml" --json "$work/modal.json" >/dev/null 2>&1
 python3 - "$work/modal.json" <<'PY' || fail "modal JSON contract"
