@@ -198,6 +198,9 @@ struct SolverSettings {
     double increment_tolerance = 1e-12;  // on the scaled Newton increment
     int max_iterations = 50;
     bool line_search = true;
+    // Mixed-integration-point Newton (displacement statics, formulations/displacement/
+    // mip_stresses.hpp): same solution, the geometric stiffness from the predicted resultants.
+    bool mip = false;
     std::string driver = "newton";       // newton | kinsol
     double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
     double length_scale = 0.0;           // 0 = derive from the model (total length)

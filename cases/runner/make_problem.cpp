@@ -30,6 +30,11 @@ std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
                 return std::make_unique<form::DisplacementStatics<P>>(model);
             }
             if (d.formulation == "mixed") {
+                if (model.solver.mip) {
+                    throw InputError("solver.mip: the mixed formulation's section resultants "
+                                     "are unknowns already; mip is for the displacement "
+                                     "formulation");
+                }
                 if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
                     if (d.wm_map == "continuous") {
                         return std::make_unique<

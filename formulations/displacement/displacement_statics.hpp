@@ -25,6 +25,7 @@
 #include "core/nonlinear_system.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/mesh.hpp"
+#include "formulations/displacement/mip_stresses.hpp"
 #include "parameterizations/concept.hpp"
 #include "parameterizations/registry.hpp"
 
@@ -55,6 +56,7 @@ public:
     void set_node_state(int node, const Vec3& u, const Params& p) {
         u_[node] = u;
         p_[node] = p;
+        mip_.drop();
     }
     bool relative_interpolation() const { return relative_; }
     bool rescales_nodes() const { return rescale_nodes_; }
@@ -122,6 +124,7 @@ private:
     void update_residual_scale();
     void gather_element(const MeshElement& e, bool jacobian);
     void assemble_element(int element, VecX& r, SparseMatrix* J);
+    void record_mip_maps(int g, const Mat3& Q, const Vec6& FE1, const Vec6& F_geometric, int nn);
     // External distributed loads and gravity at one quadrature point: the force/moment density
     // and its derivative with respect to the point's δψ.
     void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
@@ -170,6 +173,7 @@ private:
     void apply_parameter_tangent(SparseMatrix& J) const;
     std::vector<Mat6> D_;
     std::vector<Eigen::Matrix<double, 3, 6>> E_;
+    MipStresses mip_;  // solver.mip (mip_stresses.hpp); inactive by default
 
     AssemblyCounters counters_;
 };

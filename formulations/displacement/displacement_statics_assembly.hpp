@@ -30,6 +30,7 @@ void DisplacementStatics<P>::evaluate(VecX& r, SparseMatrix* J) {
         std::fill(J->valuePtr(), J->valuePtr() + J->nonZeros(), 0.0);
     }
     for (int k = 0; k < static_cast<int>(mesh_.elements.size()); ++k) assemble_element(k, r, J);
+    if (J != nullptr) mip_.maps_recorded();
     assemble_point_loads(r, J);
     if (additive_ && J != nullptr) apply_parameter_tangent(*J);
 }
@@ -136,7 +137,11 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
             r.segment<3>(d + 3) += qp.weight * N[a] * F.FE2;
         }
         if (!jac) continue;
-        const StiffnessBlocks B = calculate_stiffness_blocks(C, F.FE1, xp, rot.kappa);
+        // solver.mip: the geometric part from the predicted resultants (mip_stresses.hpp).
+        const int g = mip_.enabled() ? mip_.first_point(k) + q : -1;
+        const Mat3 Q = mip_.enabled() ? Mat3(rot.R * qp.Rr) : Mat3::Identity();
+        const Vec6 F_geometric = mip_.enabled() ? mip_.geometric_force(g, Q, F.FE1) : F.FE1;
+        const StiffnessBlocks B = calculate_stiffness_blocks(C, F_geometric, xp, rot.kappa);
         const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
         for (int b = 0; b < nn; ++b) rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K_[b]);
         if (relative_) relative_maps(R0_, rot.kappa, nn, A_.data(), K_.data());
@@ -146,6 +151,7 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
             E_[b].leftCols<3>() = B.Pu * dN[b];
             E_[b].rightCols<3>() = B.Pk * K_[b] + B.Qp * A_[b];
         }
+        if (mip_.enabled()) record_mip_maps(g, Q, F.FE1, F_geometric, nn);
         for (int a = 0; a < nn; ++a) {
             if (mesh_.nodes[e.nodes[a]].dof < 0) continue;
             for (int b = 0; b < nn; ++b) {
@@ -156,6 +162,21 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
                 add_block(*J, k, a, b, blk);
             }
         }
+    }
+}
+
+// S_b = D_b without the resultants' own rotation (the geometric −F̃ of O): the material part of
+// δF^E1 (mip_stresses.hpp).
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::record_mip_maps(int g, const Mat3& Q, const Vec6& FE1,
+                                             const Vec6& F_geometric, int nn) {
+    Eigen::Matrix<double, 6, 3> geometric;
+    geometric.topRows<3>() = so3::skew(F_geometric.head<3>());
+    geometric.bottomRows<3>() = so3::skew(F_geometric.tail<3>());
+    for (int b = 0; b < nn; ++b) {
+        Mat6 S = D_[b];
+        S.rightCols<3>().noalias() += geometric * A_[b];
+        mip_.record(g, Q, FE1, b, S);
     }
 }
 

@@ -63,6 +63,10 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
                          "' (multiplicative | additive)");
     }
     additive_ = update == "additive";
+    if (model.solver.mip && additive_) {
+        throw InputError("solver.mip: the mixed-integration-point Newton needs the "
+                         "multiplicative update (its stress prediction maps δψ, not δp)");
+    }
     if (additive_ && P::kSize != 3) {
         throw InputError("discretization.update: additive needs a three-parameter rotation "
                          "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
@@ -77,6 +81,7 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     D_.resize(nn);
     E_.resize(nn);
     build_pattern();
+    mip_.setup(mesh_, model.solver.mip);
     compute_scales(model);
     set_load_factor(0.0);
 }
@@ -194,6 +199,7 @@ void DisplacementStatics<P>::update_residual_scale() {
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::set_load_factor(double lambda) {
     lambda_ = lambda;
+    mip_.drop();
     if (residual_scale_.size() == mesh_.unknowns) update_residual_scale();
     for (const PrescribedMotion& m : mesh_.prescribed) {
         u_[m.node] = lambda * m.displacement;
@@ -237,6 +243,7 @@ void DisplacementStatics<P>::retract(const Eigen::Ref<const VecX>& dx) {
         u_[i] += dx.segment<3>(d);
         p_[i] = p_trial_[i];
     }
+    mip_.retract(mesh_, dx);
 }
 
 template <param::RotationParameterization P>
@@ -244,6 +251,7 @@ void DisplacementStatics<P>::save_state(int slot) {
     ROTBEAM_VERIFY(slot >= 0 && slot < kCheckpointSlots, "checkpoint slot out of range");
     saved_u_[slot] = u_;
     saved_p_[slot] = p_;
+    mip_.save(slot);
 }
 
 template <param::RotationParameterization P>
@@ -251,6 +259,7 @@ void DisplacementStatics<P>::restore_state(int slot) {
     ROTBEAM_VERIFY(slot >= 0 && slot < kCheckpointSlots, "checkpoint slot out of range");
     u_ = saved_u_[slot];
     p_ = saved_p_[slot];
+    mip_.restore(slot);
 }
 
 template <param::RotationParameterization P>
