@@ -155,9 +155,10 @@ struct DynamicSettings {
     double output_interval = 0.0;  // 0 = every step
     double rho_infinity = 1.0;     // generalized-α spectral radius at infinity
     std::string integrator;        // formulation-specific name; empty = default
-    // Variable-step integrators (mixed: IDA): rtol, and atol as a multiple of each unknown's
-    // state scale (docs/mixed-dynamics.md). Ignored by fixed-step schemes.
-    double ida_tolerance = 1e-6;
+    // IDA (integrator "ida"): relative tolerance and absolute tolerance per unit of each unknown's
+    // state scale (IDASVtolerances, docs/mixed-dynamics.md).
+    double relative_tolerance = 1e-6;
+    double absolute_tolerance = 1e-6;
     Vec3 initial_velocity = Vec3::Zero();
     // "rest": start from the reference configuration at rest; "static": start at rest from the
     // static equilibrium under the loads evaluated at t = 0 (a release, benchmarks.md §8).

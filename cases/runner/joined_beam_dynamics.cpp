@@ -58,7 +58,10 @@ std::vector<std::string> response_overrides(const Combination& c, const TimeSett
         if (!w.mass_rule.empty()) o.push_back("discretization.mass_rule=" + w.mass_rule);
     } else {
         o.push_back("analysis.integrator=" + s.integrator);
-        if (s.integrator == "ida") o.push_back("analysis.ida_tolerance=" + number(s.tolerance));
+        if (s.integrator == "ida") {
+            o.push_back("analysis.relative_tolerance=" + number(s.tolerance));
+            o.push_back("analysis.absolute_tolerance=" + number(s.tolerance));
+        }
     }
     return o;
 }

@@ -28,7 +28,7 @@ namespace rotbeam::cli {
 struct TimeSetting {
     std::string integrator;  // "generalized-alpha" (displacement), "trapezoidal" or "ida" (mixed)
     double time_step = 0.0;  // fixed step; IDA: the initial step hint and output spacing only
-    double tolerance = 0.0;  // IDA: rtol = atol factor (analysis.ida_tolerance)
+    double tolerance = 0.0;  // IDA: rtol = atol factor (analysis.relative_tolerance and absolute_tolerance)
     std::string label() const;  // "Δt=0.001" | "ida-tol=1e-06"
 };
 

@@ -108,7 +108,10 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     }
     result["modal"] = {{"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
                        {"arnoldi_vectors", s.arnoldi_vectors},
-                       {"mass_rule", "midpoint (element momenta P, H; seed 002)"}};
+                       {"mass_rule", model.discretization.mass_rule +
+                                         " (element momenta P, H: consistent = the element "
+                                         "average of the section mass, midpoint = its mid-length "
+                                         "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
     result["status"] = "converged";
     result["message"] =
@@ -121,8 +124,8 @@ void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNorm
 }
 
 // The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
-// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, rtol = atol = analysis.ida_tolerance (default 1e-6) ×
-// the state scales).
+// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, analysis.relative_tolerance and absolute_tolerance,
+// 1e-6 by default, the latter × the state scales).
 bool use_ida(const DynamicSettings& d) {
     if (d.integrator.empty() || d.integrator == "trapezoidal") return false;
     if (d.integrator == "ida") return true;
@@ -156,9 +159,9 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     s.end_time = d.end_time;
     s.time_step = d.time_step;
     s.output_interval = d.output_interval;
+    s.relative_tolerance = d.relative_tolerance;
+    s.absolute_tolerance = d.absolute_tolerance;
     s.newton.max_iterations = model.solver.max_iterations;
-    s.relative_tolerance = d.ida_tolerance;
-    s.absolute_tolerance = d.ida_tolerance;
     if (trace) s.newton.trace = &std::cerr;
     RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
@@ -192,7 +195,10 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                           {"nonlinear_failures", out.nonlinear_failures},
                           {"max_order", ida ? s.max_order : 2},
                           {"last_time", out.last_time}};
-    if (ida) result["dynamics"]["ida_tolerance"] = d.ida_tolerance;
+    if (ida) {
+        result["dynamics"]["relative_tolerance"] = s.relative_tolerance;
+        result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
+    }
     result["counters"] = counters_json(dyn.counters());
     result["status"] = to_string(out.status);
     result["message"] = out.message;

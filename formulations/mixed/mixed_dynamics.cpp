@@ -39,8 +39,10 @@ SparseMatrix mixed_dynamic_pattern(const MixedLayout& layout, const MixedDynamic
     return J;
 }
 
-Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
-    const Member& member = model.members[static_cast<std::size_t>(element.member)];
+namespace {
+
+// The section mass at arc-length fraction f of a member, linear between stations.
+Mat6 section_mass_at(const Member& member, double f) {
     auto mass_of = [&](const SectionStation& s) -> Mat6 {
         if (!s.section.mass) {
             throw InputError("member '" + member.name + "', section '" + s.section.name +
@@ -50,16 +52,46 @@ Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
         return *s.section.mass;
     };
     const std::vector<SectionStation>& st = member.sections;
-    const double fraction = element.s_mid / ReferenceGeometry(model, element.member).length();
-    if (st.size() == 1 || fraction <= st.front().s_fraction) return mass_of(st.front());
+    if (st.size() == 1 || f <= st.front().s_fraction) return mass_of(st.front());
     for (std::size_t k = 1; k < st.size(); ++k) {
-        if (fraction <= st[k].s_fraction) {
-            const double w =
-                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
+        if (f <= st[k].s_fraction) {
+            const double w = (f - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
             return (1.0 - w) * mass_of(st[k - 1]) + w * mass_of(st[k]);
         }
     }
     return mass_of(st.back());
+}
+
+}  // namespace
+
+Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
+    const std::string& rule = model.discretization.mass_rule;
+    if (rule == "lumped") {
+        throw InputError(
+            "discretization.mass_rule: 'lumped' is not available in the mixed formulation (its "
+            "momenta P, H are element unknowns: there are no nodal masses to lump; consistent | "
+            "midpoint)");
+    }
+    const Member& member = model.members[static_cast<std::size_t>(element.member)];
+    const double L = ReferenceGeometry(model, element.member).length();
+    if (rule == "midpoint") return section_mass_at(member, element.s_mid / L);
+    // Consistent: ∫ Nᵀ I N ds / ΔL with the element's constant momentum shape N = 1, i.e. the
+    // average of I over the element's arc-length span s_mid ∓ L/2n (build_mixed_layout's uniform
+    // division), exact for the piecewise-linear station interpolation: trapezoids between the
+    // span's ends and the stations inside it.
+    const double half = 0.5 / member.elements;
+    const double a = element.s_mid / L - half, b = element.s_mid / L + half;
+    std::vector<double> breaks = {a};
+    for (const SectionStation& st : member.sections) {
+        if (st.s_fraction > a && st.s_fraction < b) breaks.push_back(st.s_fraction);
+    }
+    breaks.push_back(b);
+    Mat6 sum = Mat6::Zero();
+    for (std::size_t k = 1; k < breaks.size(); ++k) {
+        sum += 0.5 * (breaks[k] - breaks[k - 1]) *
+               (section_mass_at(member, breaks[k - 1]) + section_mass_at(member, breaks[k]));
+    }
+    return sum / (b - a);
 }
 
 Model without_distributed_loads(Model m) {
@@ -69,8 +101,9 @@ Model without_distributed_loads(Model m) {
 
 void refuse_mixed_damping(const Model& model) {
     if (model.has_damping()) {
-        throw InputError("sections: damping is not available in the mixed dynamics (seed 002 "
-                         "Eqs. 45–50 are undamped)");
+        throw InputError(
+            "sections: damping is not available in the mixed dynamics (seed 002 "
+            "Eqs. 45–50 are undamped)");
     }
 }
 

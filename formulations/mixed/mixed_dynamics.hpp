@@ -106,7 +106,10 @@ class MixedDynamics : public DaeSystem {
 // The fixed sparsity pattern of ∂F/∂X and ∂F/∂Ẋ (all structural entries of both).
 SparseMatrix mixed_dynamic_pattern(const MixedLayout& layout, const MixedDynamicNumbering& n);
 
-// The section mass I (material axes) at an element's mid-length, linear between stations.
+// The section mass I (material axes) of an element, by discretization.mass_rule: `midpoint` the
+// mid-length value (seed 002's GEBT), `consistent` the average over the element (the consistent
+// mass of the element's constant momenta; equal to midpoint for a section constant along the
+// element, every shipped case), `lumped` refused (no nodal masses). Linear between stations.
 // Throws InputError when the member's sections carry no mass.
 Mat6 mixed_element_mass(const Model& model, const MixedElement& element);
 

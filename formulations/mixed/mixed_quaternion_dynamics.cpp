@@ -61,7 +61,7 @@ SparseMatrix mixed_quaternion_dynamic_pattern(const MixedQuaternionLayout& layou
         for (int side = 0; side < 2; ++side) {
             const int n = ends[side];
             const int rn = r + 7 * side;
-            if (!layout.supported(n)) block(rn, layout.node_column(n), 7, 7);          // ∓û, ∓q̂
+            if (!layout.supported(n)) block(rn, layout.node_column(n), 7, 7);  // ∓û, ∓q̂
             if (layout.has_scale(n)) block(rn + 3, layout.node_column(n) + 6, 4, 1);  // ∓ρ q_given
         }
     }
@@ -74,8 +74,8 @@ SparseMatrix mixed_quaternion_dynamic_pattern(const MixedQuaternionLayout& layou
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) MixedQuaternionDynamics<P>::MixedQuaternionDynamics(const Model& model,
-                                                                             double time_scale,
-                                                                             double load_time_floor)
+                                                                            double time_scale,
+                                                                            double load_time_floor)
     : model_(model),
       layout_(build_mixed_quaternion_layout(without_distributed_loads(model))),
       load_time_floor_(load_time_floor) {
@@ -146,8 +146,9 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::build_scales(double tim
 }
 
 template <param::RotationParameterization P>
-requires(P::kSize == 4) VecX
-    MixedQuaternionDynamics<P>::initial_condition_differential(const VecX& x) const {
+requires(P::kSize ==
+         4) VecX MixedQuaternionDynamics<P>::initial_condition_differential(const VecX& x)
+const {
     VecX d = differential_;
     for (int e = 0; e < element_count(); ++e) {
         const int c = element_column(e) + Block::q;
@@ -160,7 +161,7 @@ requires(P::kSize == 4) VecX
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) void MixedQuaternionDynamics<P>::complete_initial_rates(const VecX& x,
-                                                                               VecX& xdot) const {
+                                                                                VecX& xdot) const {
     for (int e = 0; e < element_count(); ++e) {
         const int c = element_column(e) + Block::q;
         const Params q = x.segment<K>(c);
@@ -175,14 +176,13 @@ requires(P::kSize == 4) typename MixedQuaternionDynamics<P>::Params
     const Constraint& con = model_.constraints[static_cast<std::size_t>(
         layout_.base.nodes[static_cast<std::size_t>(node)].constraint)];
     if (con.kind == Constraint::Kind::clamped) return P::identity();
-    return P::from_rotation_vector(mixed_time_value(con.time, t, load_time_floor_) *
-                                   con.rotation);
+    return P::from_rotation_vector(mixed_time_value(con.time, t, load_time_floor_) * con.rotation);
 }
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) void MixedQuaternionDynamics<P>::node_motion(const VecX& x, double t,
-                                                                    int node, Vec3& u_hat,
-                                                                    Params& q_hat) const {
+                                                                     int node, Vec3& u_hat,
+                                                                     Params& q_hat) const {
     const int c = node_column(node);
     if (!supported(node)) {
         u_hat = x.segment<3>(c);
@@ -200,9 +200,9 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::node_motion(const VecX&
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) void MixedQuaternionDynamics<P>::evaluate(double t, const VecX& x,
-                                                                 const VecX& xdot, VecX& residual,
-                                                                 SparseMatrix* J_x,
-                                                                 SparseMatrix* J_xdot) {
+                                                                  const VecX& xdot, VecX& residual,
+                                                                  SparseMatrix* J_x,
+                                                                  SparseMatrix* J_xdot) {
     ROTBEAM_VERIFY(x.size() == size_ && xdot.size() == size_, "state size mismatch");
     residual.setZero(size_);
     if (J_x != nullptr) reset_to_pattern(pattern_, *J_x);
@@ -219,9 +219,11 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::evaluate(double t, cons
 // The statics' element (Eqs. 45–48, Eq. 48 in four components) plus the momentum terms
 // (Eqs. 45–46, 49–50) into the end nodes' equilibrium rows and the element's own rows.
 template <param::RotationParameterization P>
-requires(P::kSize == 4) void MixedQuaternionDynamics<P>::assemble_element(
-    int e, double t, const VecX& x, const VecX& xdot, VecX& residual, SparseMatrix* J_x,
-    SparseMatrix* J_xdot) {
+requires(P::kSize ==
+         4) void MixedQuaternionDynamics<P>::assemble_element(int e, double t, const VecX& x,
+                                                              const VecX& xdot, VecX& residual,
+                                                              SparseMatrix* J_x,
+                                                              SparseMatrix* J_xdot) {
     const MixedElement el = mixed_loaded_element(
         model_, layout_.base.elements[static_cast<std::size_t>(e)], t, load_time_floor_);
     const int c = element_column(e);
@@ -282,9 +284,9 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::assemble_element(
 // at time t (× ρ after the first support: ∂/∂ρ = q_given).
 template <param::RotationParameterization P>
 requires(P::kSize == 4) void MixedQuaternionDynamics<P>::add_node_terms(int e, double t,
-                                                                       const VecX& x,
-                                                                       VecX& residual,
-                                                                       SparseMatrix* J_x) const {
+                                                                        const VecX& x,
+                                                                        VecX& residual,
+                                                                        SparseMatrix* J_x) const {
     const MixedElement& el = layout_.base.elements[static_cast<std::size_t>(e)];
     const int ends[2] = {el.start_node, el.end_node};
     for (int side = 0; side < 2; ++side) {
@@ -309,8 +311,8 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::add_node_terms(int e, d
 // supported nodes; a follower load at a free node is R(q̂) f0, ∂(−R f0)/∂q̂ = R f̃0 H_m(q̂).
 template <param::RotationParameterization P>
 requires(P::kSize == 4) void MixedQuaternionDynamics<P>::add_point_loads(double t, const VecX& x,
-                                                                        VecX& residual,
-                                                                        SparseMatrix* J_x) const {
+                                                                         VecX& residual,
+                                                                         SparseMatrix* J_x) const {
     for (const PointLoad& load : model_.point_loads) {
         const int r = 6 * load.point;
         const double s = mixed_time_value(load.time, t, load_time_floor_);
@@ -334,8 +336,8 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::add_point_loads(double 
 }
 
 template <param::RotationParameterization P>
-requires(P::kSize == 4) VecX
-    MixedQuaternionDynamics<P>::from_static_state(const VecX& static_state) const {
+requires(P::kSize == 4) VecX MixedQuaternionDynamics<P>::from_static_state(const VecX& static_state)
+const {
     ROTBEAM_VERIFY(static_state.size() == layout_.size(), "static state size mismatch");
     VecX x = VecX::Zero(size_);
     x.head(layout_.node_unknowns) = static_state.head(layout_.node_unknowns);
@@ -348,8 +350,9 @@ requires(P::kSize == 4) VecX
 }
 
 template <param::RotationParameterization P>
-requires(P::kSize == 4) void MixedQuaternionDynamics<P>::set_translational_momenta(
-    VecX& x, const Vec3& v) const {
+requires(P::kSize ==
+         4) void MixedQuaternionDynamics<P>::set_translational_momenta(VecX& x,
+                                                                       const Vec3& v) const {
     for (int e = 0; e < element_count(); ++e) {
         const MixedElement& el = layout_.base.elements[static_cast<std::size_t>(e)];
         const int c = element_column(e);
@@ -360,8 +363,9 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::set_translational_momen
 }
 
 template <param::RotationParameterization P>
-requires(P::kSize == 4) PointState
-    MixedQuaternionDynamics<P>::point_state(const VecX& x, double t, int point_index) const {
+requires(P::kSize == 4) PointState MixedQuaternionDynamics<P>::point_state(const VecX& x, double t,
+                                                                           int point_index)
+const {
     ROTBEAM_VERIFY(point_index >= 0 && point_index < static_cast<int>(model_.points.size()),
                    "point index out of range");
     Vec3 u_hat;
@@ -383,8 +387,9 @@ requires(P::kSize == 4) double MixedQuaternionDynamics<P>::max_rotation_angle(co
 }
 
 template <param::RotationParameterization P>
-requires(P::kSize == 4) QuaternionNormDrift
-    MixedQuaternionDynamics<P>::norm_drift(const VecX& x, double t) const {
+requires(P::kSize == 4) QuaternionNormDrift MixedQuaternionDynamics<P>::norm_drift(const VecX& x,
+                                                                                   double t)
+const {
     QuaternionNormDrift d;
     for (int n = 0; n < node_count(); ++n) {
         Vec3 u_hat;

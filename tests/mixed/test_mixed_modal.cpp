@@ -5,11 +5,14 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/errors.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
+#include "formulations/mixed/mixed_quaternion_dynamics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
+#include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -54,9 +57,46 @@ form::DaeModalSolution modes_of(const Model& model, int count, bool dense = fals
     return dense ? form::solve_dae_modal_dense(A, B, count) : form::solve_dae_modal(A, B, count);
 }
 
+// The quaternion's A, B about a static state of its statics (the reference one by default).
+void quaternion_operators(const Model& model, const VecX& static_state, SparseMatrix& A,
+                          SparseMatrix& B) {
+    form::MixedQuaternionDynamics<param::Quaternion> dyn(model, 1.0);
+    const VecX x0 = dyn.from_static_state(static_state);
+    VecX r;
+    dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
+    BOOST_TEST((r.array() / dyn.residual_scale().array()).abs().maxCoeff() < 1e-10);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_modal)
+
+// The quaternion's modes of the joined beam at rest (Table III's setting: 10 elements per member,
+// midpoint inertia) equal WM's: about the reference state the linearized four-component
+// kinematics are the three-parameter ones in other coordinates (δq = H_m⁺ δψ, and the radial
+// direction is an infinite eigenvalue), so the discrete frequencies agree to the eigensolver's
+// accuracy (1e-8 as above) and Table III's GEBT column, gated by `rotbeam verify` on WM, holds for
+// the quaternion too. Arnoldi = dense for the quaternion's operator as well.
+BOOST_AUTO_TEST_CASE(quaternion_modes_of_the_joined_beam_equal_the_three_parameter_ones) {
+    const Model model = joined_beam(10);
+    SparseMatrix A, B;
+    quaternion_operators(
+        model, form::MixedQuaternionStatics<param::Quaternion>(model).state_vector(), A, B);
+    const form::DaeModalSolution q = form::solve_dae_modal(A, B, 8);
+    const form::DaeModalSolution qd = form::solve_dae_modal_dense(A, B, 8);
+    const form::DaeModalSolution w = modes_of<param::WienerMilenkovic>(model, 8);
+    for (int i = 0; i < 8; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        BOOST_TEST_MESSAGE("quaternion mode " << i + 1 << ": " << q.frequencies_hz[k] << " Hz (WM "
+                                              << w.frequencies_hz[k] << "), Re s "
+                                              << q.growth_rates[k]);
+        BOOST_TEST(std::abs(q.frequencies_hz[k] - w.frequencies_hz[k]) <
+                   1e-8 * w.frequencies_hz[k]);
+        BOOST_TEST(std::abs(q.frequencies_hz[k] - qd.frequencies_hz[k]) <
+                   1e-8 * qd.frequencies_hz[k]);
+        BOOST_TEST(std::abs(q.growth_rates[k]) < 1e-8 * 2 * kPi * q.frequencies_hz[k]);
+    }
+}
 
 // Arnoldi on (A + σB)⁻¹B keeps the lowest modes of the dense decomposition of the same operator:
 // both are backward stable on a matrix of norm ~1/ω₁², so the frequencies agree to ~1e-10
@@ -155,6 +195,120 @@ BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
         BOOST_TEST(std::abs(fa - d.frequencies_hz[static_cast<std::size_t>(i)]) < 1e-8 * fa);
     }
     BOOST_TEST(std::abs(a.frequencies_hz[0] - 35.2131) > 0.1);
+    // The quaternion about its own static state: a different discretization of Eq. 48 (the
+    // midpoint rule in four components), so close to WM's but not equal (the statics' tips differ
+    // by O(ΔL²) at this deflection): within 1e-3, and Arnoldi = dense on its operator.
+    form::MixedQuaternionStatics<param::Quaternion> qs(model);
+    qs.set_load_factor(1.0);
+    BOOST_REQUIRE(solve_newton(qs, NewtonSettings{}).converged);
+    SparseMatrix Aq, Bq;
+    quaternion_operators(form::frozen_loads(model, 1.0), qs.state_vector(), Aq, Bq);
+    const form::DaeModalSolution q = form::solve_dae_modal(Aq, Bq, 5);
+    const form::DaeModalSolution qd = form::solve_dae_modal_dense(Aq, Bq, 5);
+    for (int i = 0; i < 5; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        BOOST_TEST_MESSAGE("follower-loaded quaternion mode " << i + 1 << ": "
+                                                              << q.frequencies_hz[k] << " Hz, Re s "
+                                                              << q.growth_rates[k]);
+        BOOST_TEST(std::abs(q.frequencies_hz[k] - qd.frequencies_hz[k]) <
+                   1e-8 * q.frequencies_hz[k]);
+        BOOST_TEST(std::abs(q.frequencies_hz[k] - a.frequencies_hz[k]) <
+                   1e-3 * a.frequencies_hz[k]);
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// The index of the mixed DAE (docs/mixed-dynamics.md, "Index"): the consistent-initialization
+// matrix (∂F/∂X in the algebraic columns, ∂F/∂Ẋ in the differential ones: IDACalcIC's and
+// consistent_initial_conditions' Newton matrix) is regular for a cantilever (index 1) and loses
+// exactly six ranks on the joined beam, whose two clamps close one kinematic loop (index 3: the
+// closure constrains the differential u, c, the redundant reaction is its multiplier). Rows and
+// columns scaled by the residual and state scales (rates by state scale / 1e-3 s), so the singular
+// values are comparable.
+template <class Dyn>
+Eigen::VectorXd initial_condition_singular_values(Dyn& dyn, const VecX& x) {
+    VecX r;
+    SparseMatrix Jx, Jxd;
+    const VecX xd = VecX::Zero(dyn.size());
+    dyn.evaluate(0.0, x, xd, r, &Jx, &Jxd);
+    const VecX d = dyn.initial_condition_differential(x);
+    MatX G(dyn.size(), dyn.size());
+    const MatX X(Jx), Xd(Jxd);
+    for (int j = 0; j < dyn.size(); ++j) {
+        G.col(j) = d[j] != 0.0 ? Xd.col(j) * (dyn.state_scale()[j] / 1e-3)
+                               : X.col(j) * dyn.state_scale()[j];
+    }
+    G = dyn.residual_scale().cwiseInverse().asDiagonal() * G;
+    return Eigen::JacobiSVD<MatX>(G).singularValues();  // descending
+}
+
+BOOST_AUTO_TEST_SUITE(mixed_index)
+
+BOOST_AUTO_TEST_CASE(initial_condition_matrix_loses_six_ranks_on_the_closed_loop) {
+    Model cantilever = joined_beam(3);
+    cantilever.constraints.pop_back();  // root2 free: a tree with one support
+    for (const bool loop : {false, true}) {
+        const Model model = loop ? joined_beam(3) : cantilever;
+        form::MixedDynamics<param::WienerMilenkovic> wm(model, 1.0);
+        form::MixedQuaternionDynamics<param::Quaternion> q(model, 1.0);
+        const Eigen::VectorXd s_wm = initial_condition_singular_values(wm, VecX::Zero(wm.size()));
+        const Eigen::VectorXd s_q = initial_condition_singular_values(
+            q, q.from_static_state(
+                   form::MixedQuaternionStatics<param::Quaternion>(model).state_vector()));
+        for (const Eigen::VectorXd* s : {&s_wm, &s_q}) {
+            const Eigen::Index n = s->size();
+            BOOST_TEST_MESSAGE((s == &s_wm ? "WM" : "quaternion")
+                               << (loop ? ", two clamps" : ", one clamp") << ": σ_max " << (*s)[0]
+                               << ", smallest " << (*s)[n - 1] << ", σ_(n−6) " << (*s)[n - 6]
+                               << ", σ_(n−7) " << (*s)[n - 7]);
+            // The scaled matrix is ill-conditioned (σ_max/σ_min ≈ 5e11 with one clamp: stiff
+            // sections against unit scales) but has no gap: its smallest singular value is within
+            // a factor 10 of the seventh smallest. With two clamps six drop to round-off of σ_max
+            // (≤ 1e-18 σ_max measured), ≥ 1e6 below the seventh.
+            if (loop) {
+                BOOST_TEST((*s)[n - 6] < 1e-15 * (*s)[0]);
+                BOOST_TEST((*s)[n - 6] < 1e-5 * (*s)[n - 7]);
+            } else {
+                BOOST_TEST((*s)[n - 1] > 0.1 * (*s)[n - 7]);
+            }
+        }
+    }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// discretization.mass_rule in the mixed element (docs/mixed-dynamics.md): `consistent` is the
+// element average of the piecewise-linear section mass (the consistent mass of the element's
+// constant momenta), `midpoint` its mid-length value, `lumped` refused. A station with a kink
+// inside the first of two elements separates them: mass per length 1 → 4 → 1 at s/L = 0, 0.3, 1;
+// element 1 spans [0, 0.5]: average (0.3·2.5 + 0.2·(4 + 22/7)/2)/0.5 = 2.9285714…, mid-length
+// value 1 + 3·0.25/0.3 = 3.5. Element 2 has no station inside: both rules agree there.
+BOOST_AUTO_TEST_SUITE(mixed_mass_rule)
+
+BOOST_AUTO_TEST_CASE(consistent_averages_midpoint_samples_lumped_is_refused) {
+    Model m;
+    m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(1, 0, 0)}};
+    auto station = [](double f, double mu) {
+        Section s = test::diagonal_section(Vec6::Ones());
+        s.mass = Mat6(mu * Mat6::Identity());
+        return SectionStation{f, s};
+    };
+    Member beam = test::member("beam", 0, 1, station(0.0, 1.0).section, 2);
+    beam.sections = {station(0.0, 1.0), station(0.3, 4.0), station(1.0, 1.0)};
+    m.members = {beam};
+    const form::MixedLayout layout = form::build_mixed_layout(m);
+    m.discretization.mass_rule = "consistent";
+    const double consistent = form::mixed_element_mass(m, layout.elements[0])(0, 0);
+    const double consistent2 = form::mixed_element_mass(m, layout.elements[1])(0, 0);
+    m.discretization.mass_rule = "midpoint";
+    const double midpoint = form::mixed_element_mass(m, layout.elements[0])(0, 0);
+    const double midpoint2 = form::mixed_element_mass(m, layout.elements[1])(0, 0);
+    BOOST_TEST(std::abs(consistent - (0.75 + 0.1 * (4.0 + 22.0 / 7.0)) / 0.5) < 1e-14);
+    BOOST_TEST(std::abs(midpoint - 3.5) < 1e-14);
+    BOOST_TEST(std::abs(consistent2 - midpoint2) < 1e-14);
+    m.discretization.mass_rule = "lumped";
+    BOOST_CHECK_THROW(form::mixed_element_mass(m, layout.elements[0]), InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -127,8 +127,8 @@ BOOST_AUTO_TEST_CASE(jacobians_match_central_differences_at_moving_deformed_stat
         BOOST_TEST_MESSAGE("quaternion, " << (two_supports ? "two supports (ρ)" : "one support")
                                           << ", " << dyn.size() << " unknowns"
                                           << ": max |∂F/∂X − FD| = " << ex
-                                          << ", max |∂F/∂Ẋ − FD| = " << exd
-                                          << ", largest rotation " << dyn.max_rotation_angle(x0));
+                                          << ", max |∂F/∂Ẋ − FD| = " << exd << ", largest rotation "
+                                          << dyn.max_rotation_angle(x0));
         BOOST_TEST(ex < 1e-6);
         BOOST_TEST(exd < 1e-6);
         BOOST_TEST(dyn.max_rotation_angle(x0) > 2.0);
@@ -264,15 +264,13 @@ BOOST_AUTO_TEST_CASE(fixed_step_run_keeps_the_node_norms_at_round_off) {
                                             : Vec4(xs.segment<4>(dyn.node_column(n) + 3));
                 };
                 const double mid = 0.5 * (node_q(el.start_node) + node_q(el.end_node)).norm();
-                average = std::max(
-                    average, std::abs(xs.segment<4>(dyn.element_column(e) + 3).norm() - mid));
+                average = std::max(average,
+                                   std::abs(xs.segment<4>(dyn.element_column(e) + 3).norm() - mid));
             }
         });
     BOOST_REQUIRE(out.status == SolveStatus::converged);
-    BOOST_TEST_MESSAGE("quaternion, 0.5 s fixed step: max ||q̂| − 1| " << nodes
-                                                                      << ", max ||q_i| − midpoint| "
-                                                                      << average << ", angle "
-                                                                      << angle);
+    BOOST_TEST_MESSAGE("quaternion, 0.5 s fixed step: max ||q̂| − 1| "
+                       << nodes << ", max ||q_i| − midpoint| " << average << ", angle " << angle);
     BOOST_TEST(angle > 1.0);
     BOOST_TEST(nodes < 1e-9);
     BOOST_TEST(average < 1e-9);
