@@ -84,7 +84,7 @@ BOOST_AUTO_TEST_CASE(analytic_time_derivatives_match_differences) {
 // f = ṗ − n′ and μ = ḣ + u̇ × p − m′ − x′ × n against nested central differences (inner 1e-5,
 // outer 1e-4) of p, h, n, m computed from the state alone: accurate to ~1e-7 relative (truncation
 // h² × third derivatives, round-off ε/h² × |n|); 1e-5 of the load's size still fails on any wrong
-// term (the inertial ones are of order one: drop ω × p and the test fails by 0.1 relative).
+// term (dropping ω × p from ṗ makes it fail at every sample).
 BOOST_AUTO_TEST_CASE(loads_balance_the_momenta_and_resultants_of_the_motion) {
     const Motion mm;
     const double d = 1e-4;
