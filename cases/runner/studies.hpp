@@ -9,6 +9,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,9 @@ nlohmann::json study_convergence(const StudyOptions& o);     // study_convergenc
 nlohmann::json study_singularity(const StudyOptions& o);     // study_singularity.cpp
 nlohmann::json study_extremes(const StudyOptions& o);        // study_extremes.cpp
 nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
+// The time "model only what the scene requires" saves against solver.assemble_all_terms: a
+// section of the speed study (study_assembly.cpp).
+nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md);
 
 using StudyFunction = nlohmann::json (*)(const StudyOptions&);
 // The studies in report order (study_commands.cpp).
