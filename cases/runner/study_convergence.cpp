@@ -187,7 +187,7 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
                      {"logy", "1"},
                      {"slopes", sci(x == "elements" ? refx : refd, 6) + " " + sci(refy, 6)},
                      {"hline", c.exact_rollup ? std::string() : sci(kReferenceFitFloor, 6)},
-                     {"hlabel", "fit floor (100x the reference's accuracy)"}});
+                     {"hlabel", "fit floor = 100x the reference accuracy"}});
         out["figures"].push_back(base + ".png");
     }
     return out;
