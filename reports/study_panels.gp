@@ -69,7 +69,7 @@ if (ly) { set logscale y; set format y "10^{%L}" }
 set xrange [x0:x1]
 set yrange [y0:y1]
 set xlabel xlabel noenhanced
-set ylabel ylabel noenhanced
+set ylabel ylabel
 set grid
 set key outside below left Left reverse noenhanced font ",8" maxrows 6
 hy = (hline ne '') ? hline + 0.0 : NaN
