@@ -205,6 +205,11 @@ struct SolverSettings {
     std::string driver = "newton";       // newton | kinsol
     double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
     double length_scale = 0.0;           // 0 = derive from the model (total length)
+    // Assemble every term a formulation has, also those the scene makes zero or needless (inertia
+    // and damping in a static analysis, damping of an undamped section, the load stiffness of a
+    // dead load), with zero coefficients: the results are those of the default to round-off. It
+    // exists to measure what "model only what the scene requires" saves (docs/studies.md).
+    bool assemble_all_terms = false;
 };
 
 struct ReferenceValue {

@@ -11,6 +11,8 @@ set ylabel ylabel
 set title plottitle noenhanced
 set key outside right top noenhanced font ",9"
 set grid
+# Keep extreme points off the frame.
+set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 n = words(files)
 xc = int(xcol + 0)
 rx = refx + 0.0

@@ -11,6 +11,8 @@ set ylabel ylabel
 set title plottitle noenhanced
 set key outside right top noenhanced font ",9"
 set grid
+# Keep extreme points off the frame.
+set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 n = words(files)
 plot for [i=1:n] word(files, i) using 3:4 with linespoints lw 1.2 pt (i % 13 + 1) lc i \
        title word(titles, i), \

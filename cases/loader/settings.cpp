@@ -266,7 +266,7 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     const std::string k = "solver";
     r.expect_map(n, k,
                  {"residual_tolerance", "increment_tolerance", "max_iterations", "line_search",
-                  "mip", "driver", "force_scale", "length_scale"});
+                  "mip", "driver", "force_scale", "length_scale", "assemble_all_terms"});
     SolverSettings& s = model.solver;
     if (n["residual_tolerance"])
         s.residual_tolerance = r.positive(n["residual_tolerance"], k + ".residual_tolerance");
@@ -279,6 +279,8 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     if (n["driver"]) s.driver = r.choice(n["driver"], k + ".driver", {"newton", "kinsol"});
     if (n["force_scale"]) s.force_scale = r.non_negative(n["force_scale"], k + ".force_scale");
     if (n["length_scale"]) s.length_scale = r.non_negative(n["length_scale"], k + ".length_scale");
+    if (n["assemble_all_terms"])
+        s.assemble_all_terms = r.boolean(n["assemble_all_terms"], k + ".assemble_all_terms");
 }
 
 void read_references(const YamlReader& r, const YAML::Node& root, Model& model) {

@@ -58,7 +58,8 @@ nlohmann::json result_header(const RunRequest& request) {
               {"mass_rule", d.mass_rule},
               {"driver", m.solver.driver},
               {"residual_tolerance", m.solver.residual_tolerance},
-              {"increment_tolerance", m.solver.increment_tolerance}}},
+              {"increment_tolerance", m.solver.increment_tolerance},
+              {"assemble_all_terms", m.solver.assemble_all_terms}}},
             {"steps", nlohmann::json::array()}};
 }
 

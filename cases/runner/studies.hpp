@@ -9,6 +9,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,9 @@ nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);  // study_manufactured_time.cpp
 nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp
 nlohmann::json study_joined_beam_dynamics(const StudyOptions& o);  // study_joined_beam_dynamics.cpp
+// The time "model only what the scene requires" saves against solver.assemble_all_terms: a
+// section of the speed study (study_assembly.cpp).
+nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md);
 
 using StudyFunction = nlohmann::json (*)(const StudyOptions&);
 // The studies in report order (study_commands.cpp).

@@ -8,6 +8,7 @@
 
 #include "core/oracles/timoshenko.hpp"
 #include "studies.hpp"
+#include "study_plot.hpp"
 
 namespace rotbeam::cli {
 
@@ -50,6 +51,15 @@ struct Variant {
     // has a floor of 1e-4 EA (displacement_statics_setup.hpp), under which a tiny load's residual
     // already passes the convergence test in the reference state.
     bool own_force_scale = false;
+    // The figure's panel (the discretization) and the curve's title inside it.
+    std::string panel() const {
+        return combination.formulation == "mixed"
+                   ? std::string("mixed")
+                   : "displacement p" + std::to_string(order) + " " + quadrature;
+    }
+    std::string curve() const {
+        return combination.rotation + (own_force_scale ? "+force_scale" : "");
+    }
     std::string label() const {
         return combination.label() +
                (combination.formulation == "displacement"
@@ -100,12 +110,13 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
     md << "\n|---|";
     for (size_t i = 0; i < xs.size(); ++i) md << "---|";
     md << "\n";
-    std::vector<std::string> files, titles;
+    PanelFigure figure;
     for (const Variant& v : variants(quick, with_force_scale)) {
         std::ostringstream data, row;
         data << "# " << x_name << " relative_error\n";
         data.precision(10);
         nlohmann::json errors = nlohmann::json::array();
+        std::vector<double> failures;
         bool unavailable = false;
         for (double x : xs) {
             std::string status;
@@ -114,30 +125,33 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
             if (unavailable) break;
             errors.push_back(std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(status));
             row << " " << (std::isfinite(e) ? sci(e) : status) << " |";
-            if (std::isfinite(e)) data << x << " " << std::max(e, 1e-17) << "\n";
+            if (std::isfinite(e)) {
+                data << x << " " << std::max(e, 1e-17) << "\n";
+            } else {
+                data << "\n";  // a failed run breaks the curve: no line across it
+                failures.push_back(x);
+            }
         }
         if (unavailable) continue;
         md << "| " << v.label() << " |" << row.str() << "\n";
         out.push_back({{"combination", v.label()}, {x_name, xs}, {"relative_error", errors}});
         const std::string rel =
-            "data/extremes_" + key + "_" + std::to_string(files.size()) + ".dat";
+            "data/extremes_" + key + "_" + std::to_string(figure.files.size()) + ".dat";
         write_text(o, rel, data.str());
-        files.push_back(out_path(o, rel));
-        titles.push_back(v.label());
+        figure.add(v.panel(), out_path(o, rel), v.curve());
+        for (double x : failures) figure.add_failure(v.panel(), x);
     }
-    plot("study_lines.gp",
-         {{"files", join_words(files)},
-          {"titles", join_words(titles)},
-          {"xcol", "1"},
-          {"ycol", "2"},
-          {"xlabel", x_name == "L/h" ? "slenderness L/h [-]" : "load scale [-]"},
-          {"ylabel", "relative tip-deflection error vs Timoshenko [-]"},
-          {"plottitle", x_name == "L/h"
-                            ? "Tip-loaded cantilever, 8 elements: error vs slenderness"
-                            : "Tip-loaded cantilever (L/h = 100), 8 elements: error vs load"},
-          {"outbase", out_path(o, "extremes-" + key)},
-          {"logx", "1"},
-          {"logy", "1"}});
+    plot_panels(o, figure,
+                {{"xcol", "1"},
+                 {"ycol", "2"},
+                 {"xlabel", x_name == "L/h" ? "slenderness L/h [-]" : "load scale [-]"},
+                 {"ylabel", "relative tip-deflection error vs Timoshenko [-]"},
+                 {"plottitle",
+                  x_name == "L/h" ? "Tip-loaded cantilever, 8 elements: error vs slenderness"
+                                  : "Tip-loaded cantilever (L/h = 100), 8 elements: error vs load"},
+                 {"outbase", out_path(o, "extremes-" + key)},
+                 {"logx", "1"},
+                 {"logy", "1"}});
     md << "\n![extremes-" << key << ".png](extremes-" << key << ".png)\n\n";
 }
 
@@ -148,10 +162,15 @@ nlohmann::json extremes_slenderness(const StudyOptions& o, std::ostringstream& m
         o.quick ? std::vector<double>{10, 1e3, 1e5} : std::vector<double>{10, 100, 1e3, 1e4, 1e5};
     md << "### Slenderness (shear locking)\n\nThe tip-loaded cantilever (L = 1 m, square h × h, 8 "
           "elements) from L/h = 10 to 1e5, the load scaled so the tip deflects 1e-6 L (linear "
-          "regime), against the Timoshenko tip deflection PL³/(3EI) + PL/(κGA). Full integration "
-          "of "
-          "order-1 displacement elements locks (the error grows like (L/h)²); reduced integration "
-          "and the mixed formulation do not.\n\n";
+          "regime). Plotted and tabulated: the relative tip-deflection error |δ_h − δ_T|/δ_T "
+          "against the Timoshenko deflection δ_T = PL³/(3EI) + PL/(κGA). Full integration of "
+          "order-1 displacement elements locks: the locked mesh deflects δ_h ≈ δ_T/(1 + c (L/h)²), "
+          "so its error c (L/h)²/(1 + c (L/h)²) grows like (L/h)² only while it is small and "
+          "saturates at 1 — the locked beam hardly deflects at all (c ≈ 5e-3 for 8 elements: "
+          "0.33 at L/h = 10, 0.98 at 100, 1 − 2e-4 at 1000). Reduced integration and the mixed "
+          "formulation do not lock: their error is the discretization's, independent of L/h. One "
+          "panel per discretization, the parameterizations inside (nested markers where they "
+          "coincide).\n\n";
     nlohmann::json out = nlohmann::json::array();
     sweep_table(
         o, "slenderness", ratios, "L/h", o.quick, false,
@@ -179,7 +198,8 @@ nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md
           "iterations). The `+force_scale` row fixes solver.force_scale at the load: it shows "
           "why the default scale has a floor of 1e-4 EA — with a scale that small the residual's "
           "round-off (~ε EA from the strain x′ − R e₁) exceeds 1e-12 of it and larger loads "
-          "cannot converge.\n\n";
+          "cannot converge. In the figure a run without a result (diverged) is a red cross on "
+          "its panel's top edge, never joined to the curve.\n\n";
     nlohmann::json out = nlohmann::json::array();
     sweep_table(
         o, "tiny-loads", scales, "scale", o.quick, true,

@@ -7,6 +7,7 @@
 #include "studies.hpp"
 #include "study_extremes.hpp"
 #include "study_math.hpp"
+#include "study_plot.hpp"
 
 namespace rotbeam::cli {
 
@@ -28,7 +29,8 @@ std::vector<Refined> round_off_series(bool quick) {
     return {{"displacement/quaternion/p2", {"displacement", "quaternion", ""}, 2, n2},
             {"displacement/quaternion/p4", {"displacement", "quaternion", ""}, 4, n4},
             {"displacement/rotation-vector/p4", {"displacement", "rotation-vector", ""}, 4, n4},
-            {"mixed/rotation-vector", {"mixed", "rotation-vector", ""}, 1, nm}};
+            {"mixed/rotation-vector", {"mixed", "rotation-vector", ""}, 1, nm},
+            {"mixed/quaternion", {"mixed", "quaternion", ""}, 1, nm}};
 }
 
 }  // namespace
@@ -41,8 +43,12 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
           "tip error ‖Δu‖/L, or how it failed.\n\n| combination | λ = 1 | λ = 2 | λ = 4 |\n"
           "|---|---|---|---|\n";
     nlohmann::json out = nlohmann::json::array();
-    std::vector<std::string> files, titles;
+    PanelFigure figure;
     for (const Combination& c : all_combinations(true)) {
+        const std::string panel = c.formulation == "mixed"
+                                      ? std::string("mixed")
+                                      : "displacement, " + c.interpolation + " interpolation";
+        std::vector<double> failures;
         std::ostringstream row, data;
         data << "# lambda newton_iterations\n";
         bool unavailable = false;
@@ -60,7 +66,12 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
             const double e = ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue;
             const int it = total_newton_iterations(r);
             row << " " << (ok ? std::to_string(it) + " it, " + sci(e) : status) << " |";
-            if (ok) data << lambda << " " << it << "\n";
+            if (ok) {
+                data << lambda << " " << it << "\n";
+            } else {
+                data << "\n";  // no line across a failed run
+                failures.push_back(lambda);
+            }
             out.push_back({{"combination", c.label()},
                            {"lambda", lambda},
                            {"status", status},
@@ -70,34 +81,38 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
         }
         if (unavailable) continue;
         md << "| " << c.label() << " |" << row.str() << "\n";
-        const std::string rel = "data/extremes_single_" + std::to_string(files.size()) + ".dat";
+        const std::string rel =
+            "data/extremes_single_" + std::to_string(figure.files.size()) + ".dat";
         write_text(o, rel, data.str());
-        files.push_back(out_path(o, rel));
-        titles.push_back(c.label());
+        figure.add(panel, out_path(o, rel), c.rotation);
+        for (double lambda : failures) figure.add_failure(panel, lambda);
     }
-    plot("study_lines.gp",
-         {{"files", join_words(files)},
-          {"titles", join_words(titles)},
-          {"xcol", "1"},
-          {"ycol", "2"},
-          {"xlabel", "load factor λ reached in one step"},
-          {"ylabel", "Newton iterations (converged runs only)"},
-          {"plottitle", "Roll-up in one load step, no step cutting: Newton iterations"},
-          {"outbase", out_path(o, "extremes-single-step")},
-          {"logx", "0"},
-          {"logy", "0"}});
+    plot_panels(o, figure,
+                {{"xcol", "1"},
+                 {"ycol", "2"},
+                 {"xlabel", "load factor λ reached in one step"},
+                 {"ylabel", "Newton iterations (converged runs only)"},
+                 {"plottitle",
+                  "Roll-up in one load step, no step cutting: Newton iterations of the "
+                  "converged runs (red crosses: diverged or singular)"},
+                 {"outbase", out_path(o, "extremes-single-step")},
+                 {"logx", "0"},
+                 {"logy", "0"}});
     md << "\n![extremes-single-step.png](extremes-single-step.png)\n\n";
     return out;
 }
 
 nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md) {
-    md << "### Refinement down to round-off\n\nThe roll-up at λ = 0.8 (exact) refined by "
-          "doubling the elements. `floor` is the smallest error and where it occurs; `order "
+    md << "### Refinement towards round-off\n\nThe roll-up at λ = 0.8 (exact) refined by "
+          "doubling the elements, to find where the error stops falling. `smallest` is the "
+          "smallest error and where it occurs; `floor` says whether the series reached a floor "
+          "(the error stopped falling before the finest mesh) or was still falling at the finest "
+          "mesh run (then round-off was not reached and `smallest` is only the last point); `order "
           "before` the observed order up to it; `slope after` the log-log slope of the error past "
-          "it (positive: it grows again).\n\n| series | elements | floor | at N | order before | "
-          "slope after |\n|---|---|---|---|---|---|\n";
+          "it (positive: it grows again).\n\n| series | elements | smallest | at N | floor | order "
+          "before | slope after |\n|---|---|---|---|---|---|---|\n";
     nlohmann::json out = nlohmann::json::array();
-    std::vector<std::string> files, titles;
+    PanelFigure figure;
     for (const Refined& s : round_off_series(o.quick)) {
         Series series{s.label, {}, {}, {}, {}};
         for (int n : s.elements) {
@@ -119,30 +134,36 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
         const std::vector<double> e_after(series.error.begin() + fi, series.error.end());
         const double before = fit_order(n_before, e_before);
         const double after = n_after.size() >= 2 ? -fit_order(n_after, e_after) : kNoValue;
+        const bool reached = f >= 0 && fi + 1 < series.error.size();
         md << "| " << s.label << " | " << s.elements.front() << " … " << s.elements.back() << " | "
            << (f >= 0 ? sci(series.error[fi]) : "—") << " | "
            << (f >= 0 ? std::to_string(static_cast<int>(series.elements[fi])) : "—") << " | "
-           << sci(before, 2) << " | " << sci(after, 2) << " |\n";
+           << (reached ? "reached" : "not reached (still falling)") << " | " << sci(before, 2)
+           << " | " << sci(after, 2) << " |\n";
         out.push_back({{"series", s.label},
                        {"elements", series.elements},
                        {"error", series.error},
                        {"floor_index", f},
                        {"order_before", before},
+                       {"floor_reached", reached},
                        {"slope_after", after}});
-        files.push_back(write_series(
-            o, "data/extremes_roundoff_" + std::to_string(files.size()) + ".dat", series));
-        titles.push_back(s.label);
+        figure.add("roll-up λ = 0.8, elements doubled",
+                   write_series(
+                       o, "data/extremes_roundoff_" + std::to_string(figure.files.size()) + ".dat",
+                       series),
+                   s.label);
     }
-    plot("study_lines.gp", {{"files", join_words(files)},
-                            {"titles", join_words(titles)},
-                            {"xcol", "1"},
-                            {"ycol", "4"},
-                            {"xlabel", "elements N"},
-                            {"ylabel", "tip error ‖Δu‖/L [-]"},
-                            {"plottitle", "Roll-up λ = 0.8: refinement until round-off dominates"},
-                            {"outbase", out_path(o, "extremes-round-off")},
-                            {"logx", "1"},
-                            {"logy", "1"}});
+    plot_panels(o, figure,
+                {{"xcol", "1"},
+                 {"ycol", "4"},
+                 {"xlabel", "elements N"},
+                 {"ylabel", "tip error ‖Δu‖/L [-]"},
+                 {"plottitle",
+                  "Roll-up λ = 0.8: tip error under mesh doubling (where it stops "
+                  "falling, if it does: the table's floor column)"},
+                 {"outbase", out_path(o, "extremes-round-off")},
+                 {"logx", "1"},
+                 {"logy", "1"}});
     md << "\n![extremes-round-off.png](extremes-round-off.png)\n\n";
     return out;
 }

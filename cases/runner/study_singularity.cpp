@@ -12,6 +12,7 @@
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
+#include "study_plot.hpp"
 
 namespace rotbeam::cli {
 
@@ -110,35 +111,37 @@ std::string path_data(const StudyOptions& o, const std::string& name, const Path
     return out_path(o, "data/" + name + ".dat");
 }
 
-void path_plots(const StudyOptions& o, const PathCase& c, const std::vector<std::string>& files,
-                const std::vector<std::string>& titles, nlohmann::json& figures) {
+std::string panel_of(const Combination& c) {
+    return c.formulation == "mixed" ? std::string("mixed")
+                                    : "displacement, " + c.interpolation + " interpolation";
+}
+
+void path_plots(const StudyOptions& o, const PathCase& c, const PanelFigure& figure,
+                nlohmann::json& figures) {
     const std::string xlabel = c.angle_unit == "λ" ? "load factor λ (tip rotation λπ rad)"
                                                    : "load factor κL [rad] (the tip angle for "
                                                      "the isotropic helix)";
     const std::string base = "singularity-" + c.key;
-    plot("study_lines.gp",
-         {{"files", join_words(files)},
-          {"titles", join_words(titles)},
-          {"xcol", "1"},
-          {"ycol", "2"},
-          {"xlabel", xlabel},
-          {"ylabel", "tip error ‖Δu‖/L [-]"},
-          {"plottitle", c.title + ": error along the path (every converged step)"},
-          {"outbase", out_path(o, base + "-error")},
-          {"logx", "0"},
-          {"logy", "1"},
-          {"hline", sci(kWrongBranchTolerance)},
-          {"hlabel", "accuracy tolerance (wrong branch / lost accuracy)"}});
-    plot("study_lines.gp", {{"files", join_words(files)},
-                            {"titles", join_words(titles)},
-                            {"xcol", "1"},
-                            {"ycol", "3"},
-                            {"xlabel", xlabel},
-                            {"ylabel", "Newton iterations per reported step"},
-                            {"plottitle", c.title + ": Newton iterations vs load"},
-                            {"outbase", out_path(o, base + "-iterations")},
-                            {"logx", "0"},
-                            {"logy", "0"}});
+    plot_panels(o, figure,
+                {{"xcol", "1"},
+                 {"ycol", "2"},
+                 {"xlabel", xlabel},
+                 {"ylabel", "tip error ‖Δu‖/L [-]"},
+                 {"plottitle", c.title + ": error along the path (every converged step)"},
+                 {"outbase", out_path(o, base + "-error")},
+                 {"logx", "0"},
+                 {"logy", "1"},
+                 {"hline", sci(kWrongBranchTolerance)},
+                 {"hlabel", "accuracy tolerance (wrong branch / lost accuracy)"}});
+    plot_panels(o, figure,
+                {{"xcol", "1"},
+                 {"ycol", "3"},
+                 {"xlabel", xlabel},
+                 {"ylabel", "Newton iterations per reported step"},
+                 {"plottitle", c.title + ": Newton iterations vs load"},
+                 {"outbase", out_path(o, base + "-iterations")},
+                 {"logx", "0"},
+                 {"logy", "0"}});
     figures.push_back(base + "-error.png");
     figures.push_back(base + "-iterations.png");
 }
@@ -148,7 +151,7 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, std::ostrings
         c.exact_rollup ? nlohmann::json() : continuum_reference(c.case_name, path_overrides(c));
     nlohmann::json out = {
         {"case", c.key}, {"runs", nlohmann::json::array()}, {"figures", nlohmann::json::array()}};
-    std::vector<std::string> files, titles;
+    PanelFigure figure;
     for (const Combination& comb : all_combinations(true)) {
         const PathRun p = run_path(c, comb, 0, reference);
         std::string message = p.message;
@@ -170,11 +173,12 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, std::ostrings
            << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : message)
            << " |\n";
         if (p.lambda.empty()) continue;
-        files.push_back(
-            path_data(o, "singularity_" + c.key + "_" + std::to_string(files.size()), p));
-        titles.push_back(comb.label());
+        figure.add(
+            panel_of(comb),
+            path_data(o, "singularity_" + c.key + "_" + std::to_string(figure.files.size()), p),
+            comb.rotation);
     }
-    if (!files.empty()) path_plots(o, c, files, titles, out["figures"]);
+    if (!figure.files.empty()) path_plots(o, c, figure, out["figures"]);
     return out;
 }
 
@@ -202,7 +206,7 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
     const std::vector<int> meshes =
         o.quick ? std::vector<int>{4, 16} : std::vector<int>{4, 8, 16, 32, 64};
     nlohmann::json out = nlohmann::json::array();
-    std::vector<std::string> files, titles;
+    PanelFigure figure;
     md << "\n| mixed combination |";
     for (int n : meshes) md << " N = " << n << " |";
     md << "\n|---|";
@@ -236,21 +240,20 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
         if (!any) continue;
         md << "| " << comb.label() << " |" << row.str() << "\n";
         write_text(o, "data/lambda_star_" + comb.rotation + ".dat", data.str());
-        files.push_back(out_path(o, "data/lambda_star_" + comb.rotation + ".dat"));
-        titles.push_back(comb.label());
+        figure.add("mixed formulation (λ* = 4: every step converged)",
+                   out_path(o, "data/lambda_star_" + comb.rotation + ".dat"), comb.label());
     }
-    if (!files.empty()) {
-        plot("study_lines.gp",
-             {{"files", join_words(files)},
-              {"titles", join_words(titles)},
-              {"xcol", "1"},
-              {"ycol", "2"},
-              {"xlabel", "elements N"},
-              {"ylabel", "largest load factor reached λ* (tip rotation λ*π)"},
-              {"plottitle", "Mixed formulation: reach on the roll-up against the mesh, λ*(N)"},
-              {"outbase", out_path(o, "singularity-lambda-star")},
-              {"logx", "1"},
-              {"logy", "0"}});
+    if (!figure.files.empty()) {
+        plot_panels(
+            o, figure,
+            {{"xcol", "1"},
+             {"ycol", "2"},
+             {"xlabel", "elements N"},
+             {"ylabel", "largest load factor reached λ* (tip rotation λ*π)"},
+             {"plottitle", "Mixed formulation: reach on the roll-up against the mesh, λ*(N)"},
+             {"outbase", out_path(o, "singularity-lambda-star")},
+             {"logx", "1"},
+             {"logy", "0"}});
         figures.push_back("singularity-lambda-star.png");
     }
     return out;

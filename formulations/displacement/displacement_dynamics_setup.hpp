@@ -38,7 +38,10 @@ DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
             }
         }
     }
-    damped_ = model.has_damping();
+    // solver.assemble_all_terms: the damping terms also for undamped sections (D* = 0: exact
+    // zeros, at the full cost); the inertia is assembled here, not as the statics' rest terms.
+    damped_ = model.has_damping() || model.solver.assemble_all_terms;
+    statics_.assemble_absent_terms(false, model.solver.assemble_all_terms);
     const size_t nodes = mesh().nodes.size();
     u_n_.assign(nodes, Vec3::Zero());
     p_n_.assign(nodes, P::identity());

@@ -2,6 +2,7 @@
 // combination compiles, compile time stays bounded).
 #include "formulations/displacement/displacement_statics.hpp"
 
+#include "formulations/displacement/displacement_statics_absent_terms.hpp"
 #include "formulations/displacement/displacement_statics_assembly.hpp"
 #include "formulations/displacement/displacement_statics_setup.hpp"
 #include "parameterizations/registry.hpp"

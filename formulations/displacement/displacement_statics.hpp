@@ -59,6 +59,14 @@ public:
         mip_.drop();
     }
     bool relative_interpolation() const { return relative_; }
+    // solver.assemble_all_terms (displacement_statics_absent_terms.hpp): `motion` assembles the
+    // inertial and damping kernels at rest in a static analysis, `load_stiffness` the load
+    // stiffness of dead loads, all with zero coefficients. The constructor sets both from the
+    // model; the dynamics switch `motion` off (they assemble the real inertia and damping).
+    void assemble_absent_terms(bool motion, bool load_stiffness) {
+        absent_motion_ = motion;
+        absent_load_stiffness_ = load_stiffness;
+    }
     bool rescales_nodes() const { return rescale_nodes_; }
     // Adds a 6×6 node block (rows of element node a, columns of node b) into J's fixed pattern.
     void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
@@ -130,6 +138,13 @@ private:
     void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
                           bool jacobian, Vec6& f, Eigen::Matrix<double, 6, 3>& df_dpsi);
     void assemble_point_loads(VecX& r, SparseMatrix* J);
+    // solver.assemble_all_terms: the inertial and damping terms at rest at quadrature point q of
+    // element k (J: after assemble_element computed the nodal maps A_, K_ of that point).
+    void assemble_rest_terms(int k, int q, const InterpolatedRotation<P>& rot, const Vec3& xp,
+                             VecX& r, SparseMatrix* J);
+    // The load stiffness (λ R f0)~ of a point load at `node`, scattered with `factor` (1: a
+    // follower load; 0: a dead load under solver.assemble_all_terms).
+    void add_load_stiffness(int node, const Vec3& f, const Vec3& m, double factor, SparseMatrix& J);
 
     Model model_;
     Mesh mesh_;
@@ -176,6 +191,8 @@ private:
     MipStresses mip_;  // solver.mip (mip_stresses.hpp); inactive by default
 
     AssemblyCounters counters_;
+    bool absent_motion_ = false;
+    bool absent_load_stiffness_ = false;
 };
 
 // Instantiated in displacement_statics.cpp for every parameterization of the registry.

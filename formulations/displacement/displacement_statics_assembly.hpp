@@ -136,7 +136,10 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
             r.segment<6>(d) += qp.weight * (dN[a] * F.FE1 - N[a] * f_ext);
             r.segment<3>(d + 3) += qp.weight * N[a] * F.FE2;
         }
-        if (!jac) continue;
+        if (!jac) {
+            if (absent_motion_) assemble_rest_terms(k, q, rot, xp, r, nullptr);
+            continue;
+        }
         // solver.mip: the geometric part from the predicted resultants (mip_stresses.hpp).
         const int g = mip_.enabled() ? mip_.first_point(k) + q : -1;
         const Mat3 Q = mip_.enabled() ? Mat3(rot.R * qp.Rr) : Mat3::Identity();
@@ -162,6 +165,7 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
                 add_block(*J, k, a, b, blk);
             }
         }
+        if (absent_motion_) assemble_rest_terms(k, q, rot, xp, r, J);
     }
 }
 
@@ -201,6 +205,11 @@ void DisplacementStatics<P>::assemble_point_loads(VecX& r, SparseMatrix* J) {
         if (!l.follower) {
             r.segment<3>(d) -= lambda * l.force;
             r.segment<3>(d + 3) -= lambda * l.moment;
+            if (absent_load_stiffness_ && J != nullptr) {
+                const Mat3 R = P::matrix(p_[l.node]);
+                add_load_stiffness(l.node, lambda * (R * l.force), lambda * (R * l.moment), 0.0,
+                                   *J);
+            }
             continue;
         }
         const Mat3 R = P::matrix(p_[l.node]);
@@ -208,17 +217,22 @@ void DisplacementStatics<P>::assemble_point_loads(VecX& r, SparseMatrix* J) {
         const Vec3 m = lambda * (R * l.moment);
         r.segment<3>(d) -= f;
         r.segment<3>(d + 3) -= m;
-        if (J == nullptr) continue;
-        ++counters_.follower_stiffness;
-        const Mat3 ft = so3::skew(f);
-        const Mat3 mt = so3::skew(m);
-        double* v = J->valuePtr();
-        const int* idx = &diagonal_index_[static_cast<size_t>(l.node) * 6];
-        for (int c = 0; c < 3; ++c) {
-            for (int i = 0; i < 3; ++i) {
-                v[idx[3 + c] + i] += ft(i, c);
-                v[idx[3 + c] + 3 + i] += mt(i, c);
-            }
+        if (J != nullptr) add_load_stiffness(l.node, f, m, 1.0, *J);
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::add_load_stiffness(int node, const Vec3& f, const Vec3& m,
+                                                double factor, SparseMatrix& J) {
+    ++counters_.follower_stiffness;
+    const Mat3 ft = factor * so3::skew(f);
+    const Mat3 mt = factor * so3::skew(m);
+    double* v = J.valuePtr();
+    const int* idx = &diagonal_index_[static_cast<size_t>(node) * 6];
+    for (int c = 0; c < 3; ++c) {
+        for (int i = 0; i < 3; ++i) {
+            v[idx[3 + c] + i] += ft(i, c);
+            v[idx[3 + c] + 3 + i] += mt(i, c);
         }
     }
 }

@@ -16,6 +16,7 @@ namespace rotbeam::form {
 template <param::RotationParameterization P>
 DisplacementStatics<P>::DisplacementStatics(const Model& model)
     : model_(model), mesh_(build_mesh(model)) {
+    assemble_absent_terms(model.solver.assemble_all_terms, model.solver.assemble_all_terms);
     const size_t nodes = mesh_.nodes.size();
     u_.assign(nodes, Vec3::Zero());
     p_.assign(nodes, P::identity());

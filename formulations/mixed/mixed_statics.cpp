@@ -2,6 +2,7 @@
 // Milenković and Rodrigues (seed 002, Q⁻¹ of Eq. 25) and the rotation vector (issue 8: the material
 // tangent inverse dexp⁻¹ of rotation_vector.hpp Eq. V4 in place of Q⁻¹ in Eq. 48).
 #include "formulations/mixed/mixed_statics_impl.hpp"
+#include "formulations/mixed/mixed_statics_rest_terms.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"

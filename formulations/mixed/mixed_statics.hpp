@@ -61,6 +61,10 @@ class MixedStatics : public StaticProblem {
     void node_motion(int node, Vec3& u_hat, Vec3& c_hat) const;
     void add_point_loads(VecX& residual, SparseMatrix* jacobian) const;
     void assemble_element(int e, VecX& residual, SparseMatrix* jacobian);
+    // solver.assemble_all_terms (mixed_statics_rest_terms.hpp): element e's inertial terms
+    // (seed 002 Eqs. 45–46, 49–50) at rest, P = H = 0, into its end nodes' rows.
+    void prepare_rest_terms();
+    void assemble_rest_terms(int e, int a, int b, VecX& residual, SparseMatrix* jacobian);
     // J(r0:, c0:) += b for a block inside the fixed pattern (binary search, no allocation).
     template <class Derived>
     static void add_block(SparseMatrix& J, int r0, int c0, const Eigen::MatrixBase<Derived>& b) {
@@ -81,6 +85,7 @@ class MixedStatics : public StaticProblem {
     double lambda_ = 0.0;
     AssemblyCounters counters_;
     MixedElementResult element_result_;
+    std::vector<Mat6> rest_mass_inverse_;  // per element; empty: no rest terms
 };
 
 }  // namespace rotbeam::form

@@ -19,6 +19,7 @@ MixedStatics<P>::MixedStatics(const Model& model)
     pattern_ = mixed_pattern(layout_);
     ROTBEAM_VERIFY(P::identity().norm() == 0.0,
                    "the mixed formulation needs parameters that vanish at the identity");
+    if (model.solver.assemble_all_terms) prepare_rest_terms();
 }
 
 template <param::RotationParameterization P>
@@ -140,12 +141,16 @@ void MixedStatics<P>::assemble_element(int e, VecX& residual, SparseMatrix* jaco
     residual.segment<3>(o + 3) -= ca;
     residual.segment<3>(o + 6) += ub;
     residual.segment<3>(o + 9) += cb;
-    if (jacobian == nullptr) return;
+    if (jacobian == nullptr) {
+        if (!rest_mass_inverse_.empty()) assemble_rest_terms(e, a, b, residual, nullptr);
+        return;
+    }
     add_block(*jacobian, a, o + 3, r.J_minus);
     add_block(*jacobian, b, o + 3, r.J_plus);
     add_block(*jacobian, o, o, r.J_kinematic);
     if (!layout_.supported(el.start_node)) add_block(*jacobian, o, a, -Mat6::Identity());
     if (!layout_.supported(el.end_node)) add_block(*jacobian, o + 6, b, Mat6::Identity());
+    if (!rest_mass_inverse_.empty()) assemble_rest_terms(e, a, b, residual, jacobian);
 }
 
 template <param::RotationParameterization P>
