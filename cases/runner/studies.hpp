@@ -33,8 +33,9 @@ using StudyFunction = nlohmann::json (*)(const StudyOptions&);
 // The studies in report order (study_commands.cpp).
 const std::vector<std::pair<std::string, StudyFunction>>& static_studies();
 
-// The suite's studies: the accuracy studies in parallel over `jobs` threads, then the timed ones
-// (speed-accuracy, joined-beam-dynamics) alone (their timings must not share the cores).
+// The suite's studies: the accuracy studies in parallel over `jobs` threads, then the
+// speed-accuracy study alone (its timings must not share the cores); joined-beam-dynamics only by
+// name or `all` (study_commands.cpp says why).
 void run_suite_studies(const StudyOptions& o, int jobs);
 
 // Runs the named study (InputError for an unknown name) or, for "all", every study.

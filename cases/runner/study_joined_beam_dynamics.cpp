@@ -358,8 +358,8 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
          {{"files", join_words(files)},
           {"titles", join_words(titles)},
           {"front", out_path(o, "data/joined_beam_dynamic_front.dat")},
-          {"plottitle", "Joined beam 0–" + sci(w.end_time, 1) +
-                            " s: time error vs CPU time (every combination, Δt and IDA tolerance)"},
+          {"plottitle", "Joined beam 0–" + seconds_text(w.end_time) +
+                            ": time error vs CPU time (every combination, Δt and IDA tolerance)"},
           {"outbase", out_path(o, "joined-beam-dynamics")}});
     md << "![joined-beam-dynamics.png](joined-beam-dynamics.png)\n\n";
     sweep_table(points, md);
