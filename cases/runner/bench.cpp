@@ -182,7 +182,8 @@ std::vector<BenchTarget> bench_targets() {
 }
 
 // Displacement: spectral elements (few elements, high order) — the exact roll-up is smooth, so
-// p-refinement converges exponentially — with the standard and the MIP Newton (GridPoint::mip). Mixed: second order in h, so only h is searched.
+// p-refinement converges exponentially — with the standard and the MIP Newton (GridPoint::mip).
+// Mixed: second order in h, so only h is searched.
 // Ordered by cost, so the search can stop growing a branch that became too slow.
 std::vector<GridPoint> bench_grid(const std::string& formulation, bool quick) {
     std::vector<GridPoint> grid;
