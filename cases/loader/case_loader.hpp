@@ -14,9 +14,9 @@
 namespace rotbeam {
 
 // What to read. `without_references`: everything but the top-level `references` block, which is
-// neither parsed nor validated and leaves Model::references empty — for `rotbeam run`, which
-// does not use the published numbers (check, verify and the suite read them). On a catalog case
-// that block is 80 % of the file and of the parse (docs/performance.md, start-up).
+// neither parsed nor validated and leaves Model::references empty. On a catalog case that block is
+// 80 % of the parse (docs/performance.md, start-up); `rotbeam run` still reads everything, since
+// the program contract has it refuse a bad reference (exit 2).
 enum class CaseParts { all, without_references };
 
 Model load_case(const std::string& path, const std::vector<std::string>& overrides = {},

@@ -68,8 +68,7 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
 
 Model load_with_options(const std::string& command, const std::string& path,
                         const ParsedArguments& a) {
-    // run solves and reports; the published numbers are check's and verify's (case_loader.hpp).
-    Model model = load_case(path, overrides_from(a), CaseParts::without_references);
+    Model model = load_case(path, overrides_from(a));
     if (const auto n = a.positive_int(command, "elements")) {
         for (Member& m : model.members) m.elements = *n;
     }

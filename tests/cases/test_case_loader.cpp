@@ -185,9 +185,8 @@ BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
                "x.yaml:8: members.beam.elements: must be a positive integer, got '-2'");
 }
 
-// `rotbeam run` reads a case without its published references (CaseParts::without_references):
-// the same model, no references, a broken reference not read, and the same message (line
-// number included) for an error after the blanked block.
+// A case read without its published references (CaseParts::without_references): the same model,
+// no references.
 BOOST_AUTO_TEST_CASE(reading_without_references_gives_the_same_model_and_line_numbers) {
     const std::string path = case_path("cantilever-moment");
     const Model all = load_case(path);
@@ -199,24 +198,6 @@ BOOST_AUTO_TEST_CASE(reading_without_references_gives_the_same_model_and_line_nu
                boost::test_tools::per_element());
     BOOST_TEST(run.point_loads.at(0).moment == all.point_loads.at(0).moment);
     BOOST_TEST(run.discretization.order == all.discretization.order);
-    const std::string head =
-        "points:\n  root: [0, 0, 0]\n  tip: [1, 0, 0]\nsections:\n  s:\n"
-        "    isotropic: {E: 1, G: 1, A: 1, I2: 1, I3: 1, J: 1}\n"
-        "members:\n  beam: {from: root, to: tip, section: s, elements: 2}\n"
-        "references:\n  r: {quantity: nonsense}\n# a comment\n";
-    const std::string good = head + "analysis: {type: static, load_factors: [1]}\n";
-    const std::string bad = head + "analysis: {type: static, load_factors: [1, x]}\n";
-    const auto skip = CaseParts::without_references;
-    BOOST_TEST(!input_error([&] { load_case_text(good, "x.yaml"); }).empty());
-    BOOST_TEST(input_error([&] { load_case_text(good, "x.yaml", {}, skip); }).empty());
-    const std::string whole = input_error([&] { load_case_text(bad, "x.yaml"); });
-    const std::string skipped = input_error([&] { load_case_text(bad, "x.yaml", {}, skip); });
-    BOOST_TEST(skipped.rfind("x.yaml:12: analysis.load_factors", 0) == 0u, skipped);
-    BOOST_TEST(skipped == whole);
-    // An override of a reference reads them all again.
-    BOOST_TEST(!input_error([&] {
-                    load_case_text(good, "x.yaml", {"references.r.tolerance=1"}, skip);
-                }).empty());
 }
 
 BOOST_AUTO_TEST_CASE(describe_model_lists_members_points_loads_and_analysis) {
