@@ -202,6 +202,7 @@ struct SolverSettings {
     // Mixed-integration-point Newton (displacement statics, formulations/displacement/
     // mip_stresses.hpp): same solution, the geometric stiffness from the predicted resultants.
     bool mip = false;
+    std::string linear_solver = "sparse";  // sparse | dense (core/sparse_lu.hpp)
     std::string driver = "newton";       // newton | kinsol
     double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
     double length_scale = 0.0;           // 0 = derive from the model (total length)

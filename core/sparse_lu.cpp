@@ -2,12 +2,18 @@
 
 #include <klu.h>
 
+#include <Eigen/LU>
 #include <Eigen/SparseLU>
+#include <optional>
 
 namespace rotbeam {
 
 struct SparseLUSolver::Impl {
     bool klu = false;
+    bool dense = false;
+    // Dense: the matrix and its LU in the same memory (no allocation after the first pattern).
+    MatX dense_matrix;
+    std::optional<Eigen::PartialPivLU<Eigen::Ref<MatX>>> dense_lu;
     // Eigen
     Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
     // KLU
@@ -38,6 +44,9 @@ SparseLUSolver::SparseLUSolver(bool refactor_in_place) : impl_(std::make_unique<
     impl_->klu = refactor_in_place;
     if (impl_->klu) klu_defaults(&impl_->common);
 }
+SparseLUSolver::SparseLUSolver(Kind kind) : SparseLUSolver(kind == Kind::klu_refactor) {
+    impl_->dense = kind == Kind::dense;
+}
 SparseLUSolver::~SparseLUSolver() = default;
 SparseLUSolver::SparseLUSolver(SparseLUSolver&&) noexcept = default;
 SparseLUSolver& SparseLUSolver::operator=(SparseLUSolver&&) noexcept = default;
@@ -45,6 +54,24 @@ SparseLUSolver& SparseLUSolver::operator=(SparseLUSolver&&) noexcept = default;
 bool SparseLUSolver::factorize(const SparseMatrix& J) {
     Impl& s = *impl_;
     const bool new_pattern = !s.analyzed || J.rows() != s.rows || J.nonZeros() != s.nonzeros;
+    if (s.dense) {
+        if (new_pattern) {
+            s.dense_matrix.setZero(J.rows(), J.cols());
+            s.dense_lu.emplace(s.dense_matrix);  // binds the LU to dense_matrix's memory
+            s.analyzed = true;
+            s.rows = J.rows();
+            s.nonzeros = J.nonZeros();
+        }
+        s.dense_matrix.setZero();
+        for (Eigen::Index c = 0; c < J.outerSize(); ++c) {
+            for (SparseMatrix::InnerIterator it(J, c); it; ++it) {
+                s.dense_matrix(it.row(), c) = it.value();
+            }
+        }
+        s.dense_lu->compute(s.dense_matrix);
+        // PartialPivLU does not flag singularity: a zero pivot leaves a zero on U's diagonal.
+        return s.dense_matrix.allFinite() && (s.dense_matrix.diagonal().array() != 0.0).all();
+    }
     if (!s.klu) {
         if (new_pattern) s.lu.analyzePattern(J);
         s.lu.factorize(J);
@@ -76,6 +103,10 @@ bool SparseLUSolver::factorize(const SparseMatrix& J) {
 
 void SparseLUSolver::solve(const VecX& b, VecX& x) {
     Impl& s = *impl_;
+    if (s.dense) {
+        x = s.dense_lu->solve(b);
+        return;
+    }
     if (!s.klu) {
         x = s.lu.solve(b);
         return;

@@ -7,6 +7,10 @@
 // factorization, for drivers that factor one pattern many times (a time integration). When the
 // reciprocal pivot ratio (klu_rcond) of a refactorization falls below 1e-3 of the pivoted one's,
 // the pivot order has gone stale and the matrix is factored again with pivoting.
+// `dense` (solver.linear_solver: dense): the matrix copied into a dense array and factored by
+// Eigen's PartialPivLU in place — for the systems of one or two spectral elements, which are
+// dense blocks anyway: Eigen's supernodal SparseLU spends ~1.5 M instructions on an 84 × 84
+// matrix whose dense factorization is 0.4 Mflop (docs/performance.md).
 #pragma once
 
 #include <memory>
@@ -18,7 +22,9 @@ namespace rotbeam {
 
 class SparseLUSolver {
   public:
+    enum class Kind { sparse_lu, klu_refactor, dense };
     explicit SparseLUSolver(bool refactor_in_place = false);
+    explicit SparseLUSolver(Kind kind);
     ~SparseLUSolver();
     SparseLUSolver(SparseLUSolver&&) noexcept;
     SparseLUSolver& operator=(SparseLUSolver&&) noexcept;

@@ -34,6 +34,7 @@ NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSe
     s.line_search = solver.line_search;
     s.max_step_cuts = statics.max_step_cuts;
     s.substeps = std::max(1, statics.substeps);
+    s.dense_linear_solver = solver.linear_solver == "dense";
     return s;
 }
 
@@ -70,7 +71,7 @@ double scaled_rms(const VecX& v, const VecX& scale) {
 // test is made with the true correction (one more Jacobian, kept for the next iteration). On the
 // precessing helix this takes the iterations per load step from 20–170 to 4–10.
 struct DampingWork {
-    explicit DampingWork(bool refactor_in_place) : lu_trial(refactor_in_place) {}
+    explicit DampingWork(SparseLUSolver::Kind kind) : lu_trial(kind) {}
     VecX r_trial, dx_bar;
     VecX step;  // α δ: a named vector, since Ref<const VecX> of an expression is a heap temporary
     SparseMatrix J_trial;
@@ -122,7 +123,7 @@ double damped_step(NonlinearSystem& system, SparseLUSolver& lu, const VecX& dx, 
 }  // namespace
 
 struct NewtonWorkspace::Impl {
-    explicit Impl(bool refactor_in_place) : damping(refactor_in_place), lu(refactor_in_place) {}
+    explicit Impl(SparseLUSolver::Kind kind) : damping(kind), lu(kind) {}
     VecX r, dx;
     SparseMatrix J;
     DampingWork damping;
@@ -131,11 +132,14 @@ struct NewtonWorkspace::Impl {
 };
 
 NewtonWorkspace::NewtonWorkspace(bool refactor_in_place)
-    : impl(std::make_unique<Impl>(refactor_in_place)) {}
+    : impl(std::make_unique<Impl>(refactor_in_place ? SparseLUSolver::Kind::klu_refactor
+                                                    : SparseLUSolver::Kind::sparse_lu)) {}
+NewtonWorkspace::NewtonWorkspace(SparseLUSolver::Kind kind) : impl(std::make_unique<Impl>(kind)) {}
 NewtonWorkspace::~NewtonWorkspace() = default;
 
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
-    NewtonWorkspace workspace;
+    NewtonWorkspace workspace(settings.dense_linear_solver ? SparseLUSolver::Kind::dense
+                                                           : SparseLUSolver::Kind::sparse_lu);
     return solve_newton(system, settings, workspace);
 }
 

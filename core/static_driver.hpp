@@ -20,6 +20,7 @@
 
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
+#include "core/sparse_lu.hpp"
 
 namespace rotbeam {
 
@@ -34,6 +35,8 @@ struct NewtonSettings {
     bool line_search = true;
     int max_step_cuts = 12;
     int substeps = 1;
+    // solver.linear_solver: sparse (Eigen SparseLU, default) or dense (core/sparse_lu.hpp).
+    bool dense_linear_solver = false;
     std::ostream* trace = nullptr;  // when set: one line per Newton iteration and step cut
 };
 
@@ -61,6 +64,7 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
 // SparseLU, so that repeated solves allocate nothing.
 struct NewtonWorkspace {
     explicit NewtonWorkspace(bool refactor_in_place = false);
+    explicit NewtonWorkspace(SparseLUSolver::Kind kind);
     ~NewtonWorkspace();
     struct Impl;
     std::unique_ptr<Impl> impl;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "cases/loader/model_builder.hpp"
 #include "core/errors.hpp"
@@ -182,9 +183,58 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
 
 }  // namespace
 
+namespace {
+
+// The text with the top-level `references:` block blanked line by line (line numbers, and so
+// messages, unchanged): from a line `references:` at column 0 to the next line that starts at
+// column 0 with anything but a comment. Empty when the text has no such block.
+std::string without_references_block(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    bool found = false, inside = false;
+    size_t begin = 0;
+    while (begin < text.size()) {
+        size_t end = text.find('\n', begin);
+        end = end == std::string::npos ? text.size() : end + 1;
+        const std::string_view line(text.data() + begin, end - begin);
+        const bool top_level = !line.empty() && line[0] != ' ' && line[0] != '\t' &&
+                               line[0] != '\n' && line[0] != '\r' && line[0] != '#';
+        if (top_level) inside = line.rfind("references:", 0) == 0;
+        found = found || inside;
+        if (inside) {
+            out += '\n';
+        } else {
+            out += line;
+        }
+        begin = end;
+    }
+    return found ? out : std::string();
+}
+
+YAML::Node parse_parts(const std::string& text, const std::string& file_name,
+                       const std::vector<std::string>& overrides, CaseParts parts) {
+    const bool overrides_references =
+        std::any_of(overrides.begin(), overrides.end(),
+                    [](const std::string& o) { return o.rfind("references", 0) == 0; });
+    if (parts == CaseParts::without_references && !overrides_references) {
+        const std::string stripped = without_references_block(text);
+        if (!stripped.empty()) {
+            // A file the blanking cannot cut cleanly (a multi-line flow value at column 0) is
+            // read whole, so its messages are those of the file as written.
+            try {
+                return parse(stripped, file_name);
+            } catch (const InputError&) {
+            }
+        }
+    }
+    return parse(text, file_name);
+}
+
+}  // namespace
+
 Model load_case_text(const std::string& text, const std::string& file_name,
-                     const std::vector<std::string>& overrides) {
-    YAML::Node root = parse(text, file_name);
+                     const std::vector<std::string>& overrides, CaseParts parts) {
+    YAML::Node root = parse_parts(text, file_name, overrides, parts);
     std::set<std::string> overridden;
     for (const std::string& o : overrides) overridden.insert(apply_override(root, o, file_name));
     YamlReader reader(file_name, overridden);
@@ -197,7 +247,8 @@ Model load_case_text(const std::string& text, const std::string& file_name,
     }
 }
 
-Model load_case(const std::string& path, const std::vector<std::string>& overrides) {
+Model load_case(const std::string& path, const std::vector<std::string>& overrides,
+                CaseParts parts) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw InputError(path + ": (file): is a directory, not a case file");
@@ -206,7 +257,7 @@ Model load_case(const std::string& path, const std::vector<std::string>& overrid
     if (!in) throw InputError(path + ": (file): cannot open the case file");
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    return load_case_text(buffer.str(), path, overrides);
+    return load_case_text(buffer.str(), path, overrides, parts);
 }
 
 }  // namespace rotbeam

@@ -13,11 +13,19 @@
 
 namespace rotbeam {
 
-Model load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+// What to read. `without_references`: everything but the top-level `references` block, which is
+// neither parsed nor validated and leaves Model::references empty. On a catalog case that block is
+// 80 % of the parse (docs/performance.md, start-up); `rotbeam run` still reads everything, since
+// the program contract has it refuse a bad reference (exit 2).
+enum class CaseParts { all, without_references };
+
+Model load_case(const std::string& path, const std::vector<std::string>& overrides = {},
+                CaseParts parts = CaseParts::all);
 
 // The same from text already in memory; `file_name` is used in messages (tests, stdin).
 Model load_case_text(const std::string& text, const std::string& file_name,
-                     const std::vector<std::string>& overrides = {});
+                     const std::vector<std::string>& overrides = {},
+                     CaseParts parts = CaseParts::all);
 
 // A human-readable summary for `rotbeam check`: points, members (line, length, twist, elements,
 // sections), constraints, loads, analysis, discretization, solver and references.

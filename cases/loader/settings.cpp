@@ -266,7 +266,8 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     const std::string k = "solver";
     r.expect_map(n, k,
                  {"residual_tolerance", "increment_tolerance", "max_iterations", "line_search",
-                  "mip", "driver", "force_scale", "length_scale", "assemble_all_terms"});
+                  "mip", "linear_solver", "driver", "force_scale", "length_scale",
+                  "assemble_all_terms"});
     SolverSettings& s = model.solver;
     if (n["residual_tolerance"])
         s.residual_tolerance = r.positive(n["residual_tolerance"], k + ".residual_tolerance");
@@ -276,6 +277,9 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
         s.max_iterations = r.positive_integer(n["max_iterations"], k + ".max_iterations");
     if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
     if (n["mip"]) s.mip = r.boolean(n["mip"], k + ".mip");
+    if (n["linear_solver"]) {
+        s.linear_solver = r.choice(n["linear_solver"], k + ".linear_solver", {"sparse", "dense"});
+    }
     if (n["driver"]) s.driver = r.choice(n["driver"], k + ".driver", {"newton", "kinsol"});
     if (n["force_scale"]) s.force_scale = r.non_negative(n["force_scale"], k + ".force_scale");
     if (n["length_scale"]) s.length_scale = r.non_negative(n["length_scale"], k + ".length_scale");

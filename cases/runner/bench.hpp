@@ -34,6 +34,9 @@ struct GridPoint {
     int elements = 1;
     int order = 1;
     int substeps = 1;
+    // Displacement formulation: the mixed-integration-point Newton without damping
+    // (solver.mip = true, solver.line_search = false) instead of the case's solver settings.
+    bool mip = false;
 };
 
 std::vector<BenchTarget> bench_targets();

@@ -185,6 +185,21 @@ BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
                "x.yaml:8: members.beam.elements: must be a positive integer, got '-2'");
 }
 
+// A case read without its published references (CaseParts::without_references): the same model,
+// no references.
+BOOST_AUTO_TEST_CASE(reading_without_references_gives_the_same_model_and_line_numbers) {
+    const std::string path = case_path("cantilever-moment");
+    const Model all = load_case(path);
+    const Model run = load_case(path, {}, CaseParts::without_references);
+    BOOST_TEST(!all.references.empty());
+    BOOST_TEST(run.references.empty());
+    BOOST_TEST(run.name == all.name);
+    BOOST_TEST(run.analysis.statics.load_factors == all.analysis.statics.load_factors,
+               boost::test_tools::per_element());
+    BOOST_TEST(run.point_loads.at(0).moment == all.point_loads.at(0).moment);
+    BOOST_TEST(run.discretization.order == all.discretization.order);
+}
+
 BOOST_AUTO_TEST_CASE(describe_model_lists_members_points_loads_and_analysis) {
     const std::string d = describe_model(load_case(case_path("bend-45")));
     for (const char* word : {"case bend-45", "root", "tip", "beam: root → tip, arc", "16 element",
