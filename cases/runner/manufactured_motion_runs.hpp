@@ -9,7 +9,8 @@
 //  - displacement: every node's u, R (any chart: the nodes are composed, not differenced) and
 //    velocity [u̇; ω]; the integrator then solves the consistent acceleration M v˙₀ = −r
 //    (run_generalized_alpha), which differs from the exact v˙ by the space error only;
-//  - mixed: the differential unknowns u, c (on the continuous branch of the rotation vector,
+//  - mixed (MixedDynamicsOf<P>: three parameters or the quaternion, whose free rod carries one
+//    norm row, mixed_quaternion_layout.hpp): the differential unknowns u, c (on the continuous branch of the rotation vector,
 //    so a chart past π sees no jump along the rod), P, H = M*[Rᵀu̇; Rᵀω] at the element
 //    mid-points and the node û, ĉ exactly; F, M and the rates (u̇, ċ = H_m⁻¹Ω, Ṗ, Ḣ) exactly as
 //    the starting guess of the drivers' consistent initialization, which keeps the differential
@@ -59,9 +60,10 @@ struct MotionRunResult {
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec);
 
 // The motion each combination can follow: the default (spin 1.5π → 2.45π, through 2π) for the
-// displacement formulation with every parameterization but Rodrigues; the mixed three-parameter
-// types cannot pass 2π about a varying axis (docs/reference-solutions.md §6), so theirs spins
-// 0.5π → 1.45π; Rodrigues (singular at π) 0 → 2.0 rad (largest angle 2.7 rad).
+// displacement formulation with every parameterization but Rodrigues, and for the mixed
+// quaternion (four unknowns, no chart boundary); the mixed three-parameter types cannot pass 2π
+// about a varying axis (docs/reference-solutions.md §6), so theirs spins 0.5π → 1.45π; Rodrigues
+// (singular at π) 0 → 2.0 rad (largest angle 2.7 rad).
 oracle::ManufacturedMotion motion_within_reach(const std::string& formulation,
                                                const std::string& rotation);
 

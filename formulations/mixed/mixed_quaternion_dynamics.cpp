@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
+#include "formulations/mixed/mixed_load_fields.hpp"
 #include "parameterizations/quaternion.hpp"
 
 namespace rotbeam::form {
@@ -66,6 +67,7 @@ SparseMatrix mixed_quaternion_dynamic_pattern(const MixedQuaternionLayout& layou
         }
     }
     const int n = dynamic_size(layout);
+    if (layout.free_norm) block(n - 1, layout.node_column(0) + 3, 1, 4);  // the norm row, q̂_0
     SparseMatrix J(n, n);
     J.setFromTriplets(t.begin(), t.end());  // duplicates are summed (all zero)
     J.makeCompressed();
@@ -77,7 +79,7 @@ requires(P::kSize == 4) MixedQuaternionDynamics<P>::MixedQuaternionDynamics(cons
                                                                             double time_scale,
                                                                             double load_time_floor)
     : model_(model),
-      layout_(build_mixed_quaternion_layout(without_distributed_loads(model))),
+      layout_(build_mixed_quaternion_layout(without_distributed_loads(model), true)),
       load_time_floor_(load_time_floor) {
     refuse_mixed_damping(model);
     size_ = dynamic_size(layout_);
@@ -123,6 +125,7 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::build_scales(double tim
         state_scale_.segment<3>(c + Block::P).setConstant(mass_scale * Vs);
         state_scale_.segment<3>(c + Block::H).setConstant(inertia_scale * Vs / Ls);
     }
+    if (layout_.free_norm) residual_scale_[size_ - 1] = 1.0;  // the norm row, dimensionless
     increment_scale_ = state_scale_;
     for (int e = 0; e < element_count(); ++e) {
         const MixedElement& el = layout_.base.elements[static_cast<std::size_t>(e)];
@@ -214,6 +217,12 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::evaluate(double t, cons
         add_node_terms(e, t, x, residual, J_x);
     }
     add_point_loads(t, x, residual, J_x);
+    if (layout_.free_norm) {
+        // A free tree: ½(|q̂_0|² − 1) = 0 fixes the norm the Cayley relations carry to every node.
+        const Params q0 = x.segment<K>(node_column(0) + 3);
+        residual[size_ - 1] = 0.5 * (q0.squaredNorm() - 1.0);
+        if (J_x != nullptr) add_block(*J_x, size_ - 1, node_column(0) + 3, q0.transpose());
+    }
 }
 
 // The statics' element (Eqs. 45–48, Eq. 48 in four components) plus the momentum terms
@@ -255,6 +264,9 @@ requires(P::kSize ==
     residual.segment<3>(a + 3) += r.fpsi_minus + q.fpsi;
     residual.segment<3>(b) += r.fu_plus + q.fu;
     residual.segment<3>(b + 3) += r.fpsi_plus + q.fpsi;
+    // Load fields (manufactured motions): dead, so no Jacobian term (as MixedDynamics).
+    counters_.distributed_load_terms += add_mixed_load_fields(
+        model_.load_fields, el, 1.0, mixed_load_field_rule(), a, b, residual, t);
     residual.segment<Block::kinematic_rows>(row) = r.kinematic;
     residual.segment<3>(row + Block::fP) = q.fP;  // Eq. 49
     residual.segment<3>(row + Block::fH) = q.fH;  // Eq. 50

@@ -13,7 +13,9 @@
 // P, H columns with f_P, f_H, Eqs. 49–50). Eq. 50 reads f_H = Ω − C^ba H_m(q) q̇: q̇ enters only
 // through H_m(q) q̇ (and the overbar terms of Eqs. 45–46, −R (·)~ H_m q̇), so its radial part
 // (H_m q = 0) enters nowhere. The norm is kept as in statics, by the algebraic Cayley relations of
-// the kinematic rows from the support at every instant; no norm equation, no multiplier.
+// the kinematic rows from the support at every instant; no norm equation, no multiplier. A free
+// tree (no support, e.g. the manufactured motion's flying rod) has nothing to carry the norm from:
+// it gets one last row ½(|q̂_0|² − 1) = 0 at node 0 (MixedQuaternionLayout::free_norm), algebraic.
 //
 // Differential and algebraic unknowns. Per element, u, P, H and the three tangential directions
 // of q are differential; F, M, the radial direction of q and every node unknown algebraic (given

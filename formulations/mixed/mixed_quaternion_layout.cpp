@@ -6,7 +6,7 @@
 
 namespace rotbeam::form {
 
-MixedQuaternionLayout build_mixed_quaternion_layout(const Model& model) {
+MixedQuaternionLayout build_mixed_quaternion_layout(const Model& model, bool allow_free) {
     MixedQuaternionLayout q;
     q.base = build_mixed_layout(model);
     const int nodes = static_cast<int>(q.base.nodes.size());
@@ -25,7 +25,9 @@ MixedQuaternionLayout build_mixed_quaternion_layout(const Model& model) {
     // support (without one every node has 7 unknowns and the count is one short of square).
     const int rows = MixedQuaternionLayout::kNodeRows * nodes +
                      MixedQuaternionLayout::kElementRows * q.base.element_count();
-    if (q.first_support < 0 || rows != q.size()) {
+    // A free tree is one row short: the norm row (header) closes it.
+    q.free_norm = allow_free && q.first_support < 0 && rows + 1 == q.size();
+    if (!q.free_norm && (q.first_support < 0 || rows != q.size())) {
         throw InputError(
             "the mixed formulation with the quaternion needs a structure without closed loops "
             "held by at least one support (" +

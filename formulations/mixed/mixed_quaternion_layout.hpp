@@ -46,6 +46,9 @@ struct MixedQuaternionLayout {
     std::vector<int> node_sizes;    // 7 free, 6 the first support, 7 every further support (ρ)
     int first_support = -1;
     int node_unknowns = 0;  // Σ node_sizes
+    // A free tree (no support, dynamics only): nothing fixes the common norm of the q̂, so one
+    // more row, ½(|q̂_0|² − 1) = 0 at node 0, is appended after all others (norm_row()).
+    bool free_norm = false;
 
     int size() const { return node_unknowns + kElementUnknowns * base.element_count(); }
     int node_row(int node) const { return kNodeRows * node; }
@@ -60,8 +63,10 @@ struct MixedQuaternionLayout {
 };
 
 // Builds the numbering; throws InputError when the structure is not a tree held by its supports
-// (closed loop, unsupported part) — then the four-component system is not square.
-MixedQuaternionLayout build_mixed_quaternion_layout(const Model& model);
+// (closed loop, unsupported part) — then the four-component system is not square. With
+// `allow_free` (the dynamics, where momentum fixes the rigid motion) a single tree without any
+// support is accepted with the norm row (free_norm); statics keep refusing it (rigid motions).
+MixedQuaternionLayout build_mixed_quaternion_layout(const Model& model, bool allow_free = false);
 
 // Residual scales by row (force, force × length; kinematic rows length, 1) and increment scales by
 // column (û length, q̂ and ρ 1, reactions and F force, M force × length).
