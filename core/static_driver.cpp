@@ -284,6 +284,10 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                          const std::function<void(const StepRecord&)>& on_step,
                          const StepSolver& solver) {
     StaticOutcome outcome;
+    // One workspace for every load step: the sparse LU's symbolic analysis (and the vectors) are
+    // made once per pattern, not once per sub-step.
+    NewtonWorkspace workspace(settings.dense_linear_solver ? SparseLUSolver::Kind::dense
+                                                           : SparseLUSolver::Kind::sparse_lu);
     double lambda = 0.0;
     problem.set_load_factor(lambda);
     for (size_t step = 0; step < load_factors.size(); ++step) {
@@ -304,7 +308,7 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
                 (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12)) ? target : lambda + h;
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
-            last = solver ? solver(problem, settings) : solve_newton(problem, settings);
+            last = solver ? solver(problem, settings) : solve_newton(problem, settings, workspace);
             if (last.converged) {
                 lambda = trial;
                 record.newton_iterations += last.iterations;
