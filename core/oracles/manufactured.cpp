@@ -1,4 +1,5 @@
 #include "core/oracles/manufactured.hpp"
+#include "core/oracles/manufactured_rod.hpp"
 
 #include <cmath>
 
@@ -99,28 +100,17 @@ Model manufactured_model(const ManufacturedRod& rod, int elements_per_member, in
     model.name = "manufactured";
     model.description = "Manufactured static solution: rotation past 2π about a varying axis";
     const double L = rod.length;
-    const char* names[5] = {"root", "q1", "mid", "q3", "tip"};
-    for (int i = 0; i < 5; ++i) model.points.push_back({names[i], Vec3(0.25 * i * L, 0, 0)});
     Section section;
     section.name = "manufactured";
     section.stiffness = rod.stiffness;
     section.compliance = rod.stiffness.inverse();
-    for (int i = 0; i < 4; ++i) {
-        Member member;
-        member.name = "part" + std::to_string(i + 1);
-        member.start_point = i;
-        member.end_point = i + 1;
-        member.sections = {{0.0, section}};
-        member.elements = elements_per_member;
-        model.members.push_back(member);
-        const double s0 = 0.25 * i * L;
+    add_four_member_rod(model, rod.length, section, elements_per_member, [rod](double s0) {
         LoadField field;
-        field.member = i;
         field.density = [rod, s0](double s, double lambda, Vec3& f, Vec3& m) {
             rod.loads(s0 + s, lambda, f, m);
         };
-        model.load_fields.push_back(field);
-    }
+        return field;
+    });
     Constraint root;
     root.point = 0;
     Constraint tip;

@@ -1,4 +1,5 @@
 #include "core/oracles/manufactured_motion.hpp"
+#include "core/oracles/manufactured_rod.hpp"
 
 #include <cmath>
 
@@ -189,29 +190,18 @@ Model manufactured_motion_model(const ManufacturedMotion& motion, int elements_p
     model.description =
         "Manufactured motion: rotation past 2π about an axis varying in space and time";
     const double L = motion.length;
-    const char* names[5] = {"root", "q1", "mid", "q3", "tip"};
-    for (int i = 0; i < 5; ++i) model.points.push_back({names[i], Vec3(0.25 * i * L, 0, 0)});
     Section section;
     section.name = "manufactured";
     section.stiffness = motion.stiffness;
     section.compliance = motion.stiffness.inverse();
     section.mass = motion.mass;
-    for (int i = 0; i < 4; ++i) {
-        Member member;
-        member.name = "part" + std::to_string(i + 1);
-        member.start_point = i;
-        member.end_point = i + 1;
-        member.sections = {{0.0, section}};
-        member.elements = elements_per_member;
-        model.members.push_back(member);
-        const double s0 = 0.25 * i * L;
+    add_four_member_rod(model, motion.length, section, elements_per_member, [motion](double s0) {
         LoadField field;
-        field.member = i;
         field.density_in_time = [motion, s0](double s, double t, Vec3& f, Vec3& m) {
             motion.loads(s0 + s, t, f, m);
         };
-        model.load_fields.push_back(field);
-    }
+        return field;
+    });
     // No constraint: the rod flies free (its ends carry no load, the fields vanish there).
     model.analysis.kind = AnalysisKind::dynamic;
     model.analysis.dynamics.time_step = dt;
