@@ -197,11 +197,16 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     const long every =
         s.output_interval > 0.0 ? std::max(1L, std::lround(s.output_interval / s.time_step)) : 1;
     TrapezoidalStep step(dae, s.time_step);
+    // One Newton workspace for all steps: the LU's symbolic analysis (ordering, elimination tree)
+    // is made once per pattern instead of once per step, where it was 9.6 % of the instructions
+    // of a mixed joined-beam run (docs/performance.md, joined-beam profile).
+    NewtonWorkspace workspace(s.newton.dense_linear_solver ? SparseLUSolver::Kind::dense
+                                                           : SparseLUSolver::Kind::sparse_lu);
     for (long n = 1; n <= steps; ++n) {
         const double t = s.start_time + static_cast<double>(n) * s.time_step;
         step.begin(t, x, xdot);
         if (n == 1) step.set_scales();
-        const NewtonOutcome out = solve_newton(step, s.newton);
+        const NewtonOutcome out = solve_newton(step, s.newton, workspace);
         outcome.newton_iterations += out.iterations;
         if (!out.converged) {
             std::ostringstream m;
