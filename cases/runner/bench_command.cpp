@@ -67,6 +67,7 @@ nlohmann::json bench_startup(int repeats) {
         2.0);
     return {{"case", "cantilever-moment"},
             {"whole_process_seconds", check.median_seconds},
+            {"whole_process_cpu_seconds", check.median_cpu_seconds},
             {"bare_process_seconds", bare.median_seconds},
             {"in_process_seconds", in.median_seconds},
             {"in_process_run_seconds", in_run.median_seconds},
