@@ -15,9 +15,8 @@ namespace rotbeam {
 
 // What to read. `without_references`: everything but the top-level `references` block, which is
 // neither parsed nor validated and leaves Model::references empty. On a catalog case that block is
-// 80 % of the parse (docs/performance.md, start-up). `rotbeam run` solves a model read this way
-// while a second thread validates the whole file (commands.cpp, run_while_validating), since the
-// program contract has it refuse a bad reference (exit 2, no output).
+// 80 % of the parse (docs/performance.md, start-up); `rotbeam run` still reads everything, since
+// the program contract has it refuse a bad reference (exit 2).
 enum class CaseParts { all, without_references };
 
 Model load_case(const std::string& path, const std::vector<std::string>& overrides = {},

@@ -1,11 +1,8 @@
 #include "commands.hpp"
 
-#include <malloc.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <future>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -70,44 +67,12 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
 }
 
 Model load_with_options(const std::string& command, const std::string& path,
-                        const ParsedArguments& a, CaseParts parts = CaseParts::all) {
-    Model model = load_case(path, overrides_from(a), parts);
+                        const ParsedArguments& a) {
+    Model model = load_case(path, overrides_from(a));
     if (const auto n = a.positive_int(command, "elements")) {
         for (Member& m : model.members) m.elements = *n;
     }
     return model;
-}
-
-// `work()` — which reads the case without its references and solves — runs while a second thread
-// reads and validates the whole file as `check` does, references included. The references are 80 %
-// of a catalog case's parse (docs/performance.md, start-up), so their validation leaves the
-// critical path of a run and overlaps the solve on the second core. The contract is unchanged:
-// the result is returned only after the whole file passed, and on any failure the whole file's
-// InputError wins (the message `check` gives, as if the file had been read first). std::async
-// carries the thread's exception into the future; the future is always waited for, so no thread
-// outlives this call. With `sequential` (a traced run writes to stderr while it solves) the whole
-// file is validated before `work` starts.
-template <class Work>
-auto run_while_validating(const std::string& path, const std::vector<std::string>& overrides,
-                          bool sequential, Work work) -> decltype(work()) {
-    if (sequential) {
-        (void)load_case(path, overrides);
-        return work();
-    }
-    // One malloc arena for both threads: an arena of its own would grow the validating thread's
-    // heap one mprotect call at a time (62 calls on the catalog roll-up) on fresh pages, measured
-    // +1.4 ms of CPU per run; sharing costs lock contention only while both threads parse.
-    mallopt(M_ARENA_MAX, 1);
-    std::future<void> whole =
-        std::async(std::launch::async, [path, overrides] { (void)load_case(path, overrides); });
-    try {
-        auto result = work();
-        whole.get();
-        return result;
-    } catch (...) {
-        if (whole.valid()) whole.get();  // the whole file's error first
-        throw;
-    }
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
@@ -206,11 +171,8 @@ int command_run(const Args& args) {
         return 0;
     }
     const std::string path = resolve_case_path(a.positional[0]);
-    const bool trace = a.has("trace-newton");
-    const nlohmann::json result = run_while_validating(path, overrides_from(a), trace, [&] {
-        const Model model = load_with_options("run", path, a, CaseParts::without_references);
-        return run_case(RunRequest{path, model, trace});
-    });
+    const Model model = load_with_options("run", path, a);
+    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;
