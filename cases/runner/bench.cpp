@@ -275,7 +275,7 @@ nlohmann::json bench_combination(const BenchTarget& t, const Combination& c,
     out["winner"] = candidate_json(w);
     out["in_process_seconds"] = in_process.median_seconds;
     out["whole_process_seconds"] = whole.median_seconds;
-    out["whole_process_cpu_seconds"] = whole.median_cpu_seconds;  // both threads of `run`
+    out["whole_process_cpu_seconds"] = whole.median_cpu_seconds;  // user + system of the child
     out["whole_process_repeats"] = whole.repeats;
     out["peak_rss_kb"] = whole.peak_rss_kb;
     out["child_exit_code"] = whole.exit_code;
