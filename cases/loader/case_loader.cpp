@@ -183,58 +183,9 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
 
 }  // namespace
 
-namespace {
-
-// The text with the top-level `references:` block blanked line by line (line numbers, and so
-// messages, unchanged): from a line `references:` at column 0 to the next line that starts at
-// column 0 with anything but a comment. Empty when the text has no such block.
-std::string without_references_block(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    bool found = false, inside = false;
-    size_t begin = 0;
-    while (begin < text.size()) {
-        size_t end = text.find('\n', begin);
-        end = end == std::string::npos ? text.size() : end + 1;
-        const std::string_view line(text.data() + begin, end - begin);
-        const bool top_level = !line.empty() && line[0] != ' ' && line[0] != '\t' &&
-                               line[0] != '\n' && line[0] != '\r' && line[0] != '#';
-        if (top_level) inside = line.rfind("references:", 0) == 0;
-        found = found || inside;
-        if (inside) {
-            out += '\n';
-        } else {
-            out += line;
-        }
-        begin = end;
-    }
-    return found ? out : std::string();
-}
-
-YAML::Node parse_parts(const std::string& text, const std::string& file_name,
-                       const std::vector<std::string>& overrides, CaseParts parts) {
-    const bool overrides_references =
-        std::any_of(overrides.begin(), overrides.end(),
-                    [](const std::string& o) { return o.rfind("references", 0) == 0; });
-    if (parts == CaseParts::without_references && !overrides_references) {
-        const std::string stripped = without_references_block(text);
-        if (!stripped.empty()) {
-            // A file the blanking cannot cut cleanly (a multi-line flow value at column 0) is
-            // read whole, so its messages are those of the file as written.
-            try {
-                return parse(stripped, file_name);
-            } catch (const InputError&) {
-            }
-        }
-    }
-    return parse(text, file_name);
-}
-
-}  // namespace
-
 Model load_case_text(const std::string& text, const std::string& file_name,
-                     const std::vector<std::string>& overrides, CaseParts parts) {
-    YAML::Node root = parse_parts(text, file_name, overrides, parts);
+                     const std::vector<std::string>& overrides) {
+    YAML::Node root = parse(text, file_name);
     std::set<std::string> overridden;
     for (const std::string& o : overrides) overridden.insert(apply_override(root, o, file_name));
     YamlReader reader(file_name, overridden);
@@ -247,17 +198,85 @@ Model load_case_text(const std::string& text, const std::string& file_name,
     }
 }
 
-Model load_case(const std::string& path, const std::vector<std::string>& overrides,
-                CaseParts parts) {
+std::filesystem::path published_references_path(const std::string& case_path) {
+    const std::filesystem::path p(case_path);
+    return p.parent_path() / "references" / (p.stem().string() + ".yaml");
+}
+
+namespace {
+
+std::string read_text_file(const std::string& path, const char* what) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(path + ": (file): is a directory, not a case file");
+        throw InputError(path + ": (file): is a directory, not a " + what);
     }
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": (file): cannot open the case file");
+    if (!in) throw InputError(path + ": (file): cannot open the " + std::string(what));
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    return load_case_text(buffer.str(), path, overrides, parts);
+    return buffer.str();
+}
+
+bool sets_references(const std::string& override_text) {
+    return override_text.rfind("references.", 0) == 0 || override_text.rfind("references=", 0) == 0;
+}
+
+// The published references file (a mapping with the one key `references`, the same block a case
+// may hold) read into `model`, whose analysis its entries are checked against; `--set
+// references...` overrides apply to it. A case with a block of its own and such a file is refused:
+// one place for the numbers.
+void read_published_references(const std::string& file, const std::vector<std::string>& overrides,
+                               const std::string& case_file, Model& model) {
+    YAML::Node root = parse(read_text_file(file, "references file"), file);
+    // Every overridden key counts, the case's too: an entry's load factor need not be one of
+    // `analysis.load_factors` once --set replaced them (settings.cpp, read_reference).
+    std::set<std::string> overridden;
+    for (const std::string& o : overrides) {
+        if (sets_references(o)) {
+            overridden.insert(apply_override(root, o, case_file));
+        } else {
+            overridden.insert(o.substr(0, o.find('=')));
+        }
+    }
+    YamlReader reader(file, overridden);
+    reader.index_lines(root);
+    reader.expect_map(root, "", {"references"});
+    if (!model.references.empty()) {
+        reader.fail(root["references"], "references",
+                    "the case " + case_file + " has a references block of its own; keep one");
+    }
+    try {
+        cases::read_references(reader, root, model);
+    } catch (const YAML::Exception& e) {
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+    }
+}
+
+}  // namespace
+
+Model load_case(const std::string& path, const std::vector<std::string>& overrides,
+                CaseParts parts) {
+    const std::string text = read_text_file(path, "case file");
+    const std::filesystem::path published = published_references_path(path);
+    std::vector<std::string> case_overrides;
+    bool sets_a_reference = false;
+    for (const std::string& o : overrides) {
+        if (sets_references(o)) {
+            sets_a_reference = true;
+        } else {
+            case_overrides.push_back(o);
+        }
+    }
+    // An override of a published reference reads that file even for `case_file`, so that it is
+    // validated where it applies instead of creating a partial block in the case.
+    std::error_code ec;
+    if ((parts == CaseParts::case_file && !sets_a_reference) ||
+        !std::filesystem::is_regular_file(published, ec)) {
+        return load_case_text(text, path, overrides);
+    }
+    Model model = load_case_text(text, path, case_overrides);
+    read_published_references(published.string(), overrides, path, model);
+    return model;
 }
 
 }  // namespace rotbeam

@@ -6,6 +6,7 @@
 // `FILE:LINE: KEY: problem` (`FILE:--set: KEY: problem` for an override), never a partial model.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,19 +14,23 @@
 
 namespace rotbeam {
 
-// What to read. `without_references`: everything but the top-level `references` block, which is
-// neither parsed nor validated and leaves Model::references empty. On a catalog case that block is
-// 80 % of the parse (docs/performance.md, start-up); `rotbeam run` still reads everything, since
-// the program contract has it refuse a bad reference (exit 2).
-enum class CaseParts { all, without_references };
+// What to read. A catalog case keeps its published references beside it, in
+// `references/NAME.yaml` (published_references_path): they are most of its text and of its parse
+// (docs/performance.md, start-up), and only check, verify, the suite and the report use them.
+// `all`: the case file and that file when it exists (`--set references...` overrides apply to it);
+// `case_file`: the case file alone — what `rotbeam run` reads. Either way a `references` block in
+// the case file itself (a user's case) is read and validated.
+enum class CaseParts { all, case_file };
 
 Model load_case(const std::string& path, const std::vector<std::string>& overrides = {},
                 CaseParts parts = CaseParts::all);
 
-// The same from text already in memory; `file_name` is used in messages (tests, stdin).
+// Where the published references of the case at `case_path` are kept (which may not exist).
+std::filesystem::path published_references_path(const std::string& case_path);
+
+// The case file alone from text already in memory; `file_name` is used in messages (tests, stdin).
 Model load_case_text(const std::string& text, const std::string& file_name,
-                     const std::vector<std::string>& overrides = {},
-                     CaseParts parts = CaseParts::all);
+                     const std::vector<std::string>& overrides = {});
 
 // A human-readable summary for `rotbeam check`: points, members (line, length, twist, elements,
 // sections), constraints, loads, analysis, discretization, solver and references.

@@ -67,8 +67,8 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
 }
 
 Model load_with_options(const std::string& command, const std::string& path,
-                        const ParsedArguments& a) {
-    Model model = load_case(path, overrides_from(a));
+                        const ParsedArguments& a, CaseParts parts = CaseParts::all) {
+    Model model = load_case(path, overrides_from(a), parts);
     if (const auto n = a.positive_int(command, "elements")) {
         for (Member& m : model.members) m.elements = *n;
     }
@@ -171,7 +171,9 @@ int command_run(const Args& args) {
         return 0;
     }
     const std::string path = resolve_case_path(a.positional[0]);
-    const Model model = load_with_options("run", path, a);
+    // A run reads the case file alone: the published references beside a catalog case are for
+    // check, verify and the suite (case_loader.hpp).
+    const Model model = load_with_options("run", path, a, CaseParts::case_file);
     const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);

@@ -185,19 +185,54 @@ BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
                "x.yaml:8: members.beam.elements: must be a positive integer, got '-2'");
 }
 
-// A case read without its published references (CaseParts::without_references): the same model,
-// no references.
-BOOST_AUTO_TEST_CASE(reading_without_references_gives_the_same_model_and_line_numbers) {
+// A catalog case keeps its published references beside it (cases/references/NAME.yaml): the case
+// file alone (CaseParts::case_file, what `rotbeam run` reads) is the same model without them, and
+// a message about a reference names the references file and its line.
+BOOST_AUTO_TEST_CASE(published_references_are_read_from_beside_the_case) {
     const std::string path = case_path("cantilever-moment");
     const Model all = load_case(path);
-    const Model run = load_case(path, {}, CaseParts::without_references);
-    BOOST_TEST(!all.references.empty());
+    const Model run = load_case(path, {}, CaseParts::case_file);
+    BOOST_TEST(all.references.size() == 15u);
     BOOST_TEST(run.references.empty());
     BOOST_TEST(run.name == all.name);
     BOOST_TEST(run.analysis.statics.load_factors == all.analysis.statics.load_factors,
                boost::test_tools::per_element());
     BOOST_TEST(run.point_loads.at(0).moment == all.point_loads.at(0).moment);
     BOOST_TEST(run.discretization.order == all.discretization.order);
+    const std::string published = published_references_path(path).string();
+    BOOST_TEST(published ==
+               std::string(ROTBEAM_SOURCE_DIR) + "/cases/references/cantilever-moment.yaml");
+    // A --set of a reference applies to the references file, also for the case file alone.
+    const std::string message = input_error(
+        [&] { load_case(path, {"references.exact-0p4.point=nowhere"}, CaseParts::case_file); });
+    BOOST_TEST(message.rfind(published + ":", 0) == 0, message);
+    BOOST_TEST(message.find("references.exact-0p4.point") != std::string::npos, message);
+}
+
+// One place for the numbers: a case with its own references block and a references file beside it
+// is refused, naming the file.
+BOOST_AUTO_TEST_CASE(a_references_block_in_the_case_and_beside_it_is_refused) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "rotbeam_test_published_references";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "references");
+    std::filesystem::copy_file(case_path("cantilever-moment"), dir / "c.yaml");
+    std::filesystem::copy_file(std::string(ROTBEAM_SOURCE_DIR) +
+                                   "/cases/references/cantilever-moment.yaml",
+                               dir / "references" / "c.yaml");
+    BOOST_TEST(load_case((dir / "c.yaml").string()).references.size() == 15u);
+    {
+        std::ofstream out(dir / "c.yaml", std::ios::app);
+        out << "references:\n  mine:\n    quantity: displacement\n    point: tip\n"
+               "    load_factor: 0.4\n    components: [0, 2]\n    value: [-2.9181, 6.5984]\n"
+               "    tolerance: 1.0e-3\n    justification: exact\n    source: test\n";
+    }
+    BOOST_TEST(load_case((dir / "c.yaml").string(), {}, CaseParts::case_file).references.size() ==
+               1u);
+    const std::string message = input_error([&] { load_case((dir / "c.yaml").string()); });
+    BOOST_TEST(message.rfind((dir / "references" / "c.yaml").string() + ":", 0) == 0, message);
+    BOOST_TEST(message.find("has a references block of its own") != std::string::npos, message);
+    std::filesystem::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(describe_model_lists_members_points_loads_and_analysis) {

@@ -136,11 +136,23 @@ assert -Fz < reaction_z < 0.0, (reaction_z, Fz)
 assert r["counters"]["inertial_terms"] > 0 and r["counters"]["damping_terms"] == 0
 PY
 
-# The gate can fail: a deliberately wrong published value makes verify exit 1.
-sed -E '0,/value: *\[/s/value: *\[[^]]*\]/value: [1000.0, 1000.0]/' "$src/cases/cantilever-moment.yaml" >"$work/wrong.yaml"
+# The gate can fail: a deliberately wrong published value (in the references file beside the case,
+# cases/references/) makes verify exit 1; run does not read that file, so a broken one stops verify
+# (exit 2, naming it) and not run.
+mkdir -p "$work/references"
+cp "$src/cases/cantilever-moment.yaml" "$work/wrong.yaml"
+sed -E '0,/value: *\[/s/value: *\[[^]]*\]/value: [1000.0, 1000.0]/' "$src/cases/references/cantilever-moment.yaml" >"$work/references/wrong.yaml"
 "$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
 rc=$?
 [ $rc -eq 1 ] || fail "verify with a wrong reference exited $rc, expected 1: $(tail -3 "$work/verify")"
+sed -E '0,/point: tip/s/point: tip/point: nowhere/' "$src/cases/references/cantilever-moment.yaml" >"$work/references/wrong.yaml"
+"$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>"$work/verify.err"
+rc=$?
+[ $rc -eq 2 ] || fail "verify with a broken references file exited $rc, expected 2"
+grep -q "^$work/references/wrong.yaml:[0-9]*: references\." "$work/verify.err" ||
+    fail "a broken references file is not named with its line: $(cat "$work/verify.err")"
+"$rotbeam" run "$work/wrong.yaml" --quiet --set analysis.load_factors=[0.4] >/dev/null 2>&1 ||
+    fail "run read the references file beside the case"
 
 if [ $failures -eq 0 ]; then echo "program contract: all checks passed"; exit 0; fi
 echo "program contract: $failures failures"
