@@ -69,7 +69,7 @@ struct Row {
     double fill = 0.0;           // nnz(L + U) / nnz(J): a load-independent witness of linear cost
     int analyses = 0;            // symbolic analyses over all repetitions (1: reused)
     int repeats = 0;
-    double peak_mb = 0.0;        // VmHWM after the size (reset before it)
+    double peak_mb = 0.0;  // VmHWM after the size (reset before it)
 };
 
 // Times `repeats` iterations (repeats scaled to ~2e5 unknowns in total, 5 … 200) at the problem's
@@ -128,8 +128,8 @@ inline double fitted_slope(const std::vector<Row>& rows, int min_unknowns) {
 
 inline void print_header(const char* name) {
     std::printf("\n%s\n%9s %9s %10s %11s %11s %9s %7s %7s %6s %4s %8s\n", name, "elements",
-                "unknowns", "nnz(J)", "CPU ms/it.", "wall ms/it.", "CPU us/u", "assem.",
-                "factor", "fill", "ana.", "VmHWM MB");
+                "unknowns", "nnz(J)", "CPU ms/it.", "wall ms/it.", "CPU us/u", "assem.", "factor",
+                "fill", "ana.", "VmHWM MB");
 }
 
 inline void print_row(const Row& w, bool reset) {
@@ -143,10 +143,11 @@ inline void print_row(const Row& w, bool reset) {
 
 // The slope (all sizes swept) and the slope where fixed costs no longer dominate.
 inline void print_slopes(const std::vector<Row>& rows) {
-    std::printf("log-log slope of CPU time per iteration vs unknowns: %.3f over %d … %d "
-                "elements, %.3f over ≥ 500 unknowns (linear: 1)\n",
-                fitted_slope(rows, 0), rows.front().elements, rows.back().elements,
-                fitted_slope(rows, 500));
+    std::printf(
+        "log-log slope of CPU time per iteration vs unknowns: %.3f over %d … %d "
+        "elements, %.3f over ≥ 500 unknowns (linear: 1)\n",
+        fitted_slope(rows, 0), rows.front().elements, rows.back().elements,
+        fitted_slope(rows, 500));
 }
 
 }  // namespace rotbeam::scaling
