@@ -200,7 +200,7 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     TrapezoidalStep step(dae, s.time_step);
     // One per run, as generalized-α keeps one: the LU's symbolic analysis (COLAMD ordering,
     // elimination tree), the Jacobian and the vectors are made once, not at every step (a fresh
-    // workspace per step made each step cost ~1.5× as much, docs/performance.md). Same kind as
+    // workspace per step cost 11 % more instructions per step, docs/performance.md). Same kind as
     // before (Eigen SparseLU, pivoting at every factorization): the results are unchanged bit for
     // bit.
     NewtonWorkspace workspace(SparseLUSolver::Kind::sparse_lu);
