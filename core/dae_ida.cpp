@@ -14,6 +14,7 @@
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/step_observer.hpp"
 #include "core/sundials_callbacks.hpp"
 
 namespace rotbeam {
@@ -224,6 +225,7 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
             output(tret, x, xdot, static_cast<int>(outcome.newton_iterations - iterations_before));
         }
         iterations_before = outcome.newton_iterations;
+        notify_step({tret, outcome.steps, outcome.newton_iterations, outcome.jacobian_evaluations});
     }
     std::ostringstream m;
     m << "IDA (BDF, max order " << s.max_order << "), " << outcome.steps << " steps, last order "

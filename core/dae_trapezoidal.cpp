@@ -7,6 +7,7 @@
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/step_observer.hpp"
 
 namespace rotbeam {
 
@@ -221,6 +222,9 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
         outcome.steps = n;
         outcome.last_time = t;
         if (output && (n % every == 0 || n == steps)) output(t, x, xdot, out.iterations);
+        if (step_observed()) {
+            notify_step({t, n, outcome.newton_iterations, dae.counters().jacobian_evaluations});
+        }
     }
     const AssemblyCounters c = dae.counters();
     outcome.residual_evaluations = c.residual_evaluations;

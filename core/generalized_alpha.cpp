@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/step_observer.hpp"
 
 namespace rotbeam {
 
@@ -89,6 +90,7 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
             if (on_output) on_output({t, out.iterations});
             while (next_output <= t + 1e-9 * h0) next_output += every;
         }
+        notify_step({t, outcome.steps, outcome.newton_iterations, -1});
     }
     std::ostringstream s;
     s << outcome.steps << " time steps converged (" << outcome.newton_iterations

@@ -24,6 +24,7 @@ struct SparseLUSolver::Impl {
     // The pattern the analysis belongs to.
     Eigen::Index rows = -1, nonzeros = -1;
     bool analyzed = false;
+    int analyses = 0;
 
     ~Impl() { free_klu(); }
     void free_klu() {
@@ -59,6 +60,7 @@ bool SparseLUSolver::factorize(const SparseMatrix& J) {
             s.dense_matrix.setZero(J.rows(), J.cols());
             s.dense_lu.emplace(s.dense_matrix);  // binds the LU to dense_matrix's memory
             s.analyzed = true;
+            ++s.analyses;
             s.rows = J.rows();
             s.nonzeros = J.nonZeros();
         }
@@ -73,7 +75,10 @@ bool SparseLUSolver::factorize(const SparseMatrix& J) {
         return s.dense_matrix.allFinite() && (s.dense_matrix.diagonal().array() != 0.0).all();
     }
     if (!s.klu) {
-        if (new_pattern) s.lu.analyzePattern(J);
+        if (new_pattern) {
+            s.lu.analyzePattern(J);
+            ++s.analyses;
+        }
         s.lu.factorize(J);
         s.analyzed = true;
         s.rows = J.rows();
@@ -89,6 +94,7 @@ bool SparseLUSolver::factorize(const SparseMatrix& J) {
         s.symbolic = klu_analyze(static_cast<int>(J.rows()), Ap, Ai, &s.common);
         if (s.symbolic == nullptr) return false;
         s.analyzed = true;
+        ++s.analyses;
         s.rows = J.rows();
         s.nonzeros = J.nonZeros();
         return s.klu_factor_pivoted(Ap, Ai, Ax);
@@ -99,6 +105,15 @@ bool SparseLUSolver::factorize(const SparseMatrix& J) {
         return s.klu_factor_pivoted(Ap, Ai, Ax);
     }
     return true;
+}
+
+int SparseLUSolver::symbolic_analyses() const { return impl_->analyses; }
+
+double SparseLUSolver::factor_nonzeros() const {
+    const Impl& s = *impl_;
+    if (s.dense) return static_cast<double>(s.rows) * static_cast<double>(s.rows);
+    if (!s.klu) return static_cast<double>(s.lu.nnzL() + s.lu.nnzU());
+    return s.numeric == nullptr ? 0.0 : static_cast<double>(s.numeric->lnz + s.numeric->unz);
 }
 
 void SparseLUSolver::solve(const VecX& b, VecX& x) {

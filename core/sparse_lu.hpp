@@ -35,6 +35,12 @@ class SparseLUSolver {
     // x = J⁻¹ b for the last factorized J; x must not alias b.
     void solve(const VecX& b, VecX& x);
 
+    // Symbolic analyses made so far (one per new pattern): the witness that repeated
+    // factorizations of one pattern reuse the analysis (tests/core, the scaling benchmarks).
+    int symbolic_analyses() const;
+    // Non-zeros of the last factorization's L + U (dense: n²), for the fill nnz(L + U) / nnz(J).
+    double factor_nonzeros() const;
+
   private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -136,6 +136,9 @@ NewtonWorkspace::NewtonWorkspace(bool refactor_in_place)
                                                     : SparseLUSolver::Kind::sparse_lu)) {}
 NewtonWorkspace::NewtonWorkspace(SparseLUSolver::Kind kind) : impl(std::make_unique<Impl>(kind)) {}
 NewtonWorkspace::~NewtonWorkspace() = default;
+int NewtonWorkspace::symbolic_analyses() const {
+    return impl->lu.symbolic_analyses() + impl->damping.lu_trial.symbolic_analyses();
+}
 
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings) {
     NewtonWorkspace workspace(settings.dense_linear_solver ? SparseLUSolver::Kind::dense

@@ -66,6 +66,9 @@ struct NewtonWorkspace {
     explicit NewtonWorkspace(bool refactor_in_place = false);
     explicit NewtonWorkspace(SparseLUSolver::Kind kind);
     ~NewtonWorkspace();
+    // Symbolic analyses made by this workspace's factorizations (Newton and damping test): one
+    // per solver and pattern however many iterations and solves share the workspace.
+    int symbolic_analyses() const;
     struct Impl;
     std::unique_ptr<Impl> impl;
 };

@@ -14,6 +14,7 @@
 #include "arguments.hpp"
 #include "bench.hpp"
 #include "bench_joined_beam.hpp"
+#include "bench_long_run.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
 #include "core/results.hpp"
@@ -259,6 +260,7 @@ int command_bench(const Args& args) {
                               .string());
         out["targets"].push_back(bench_joined_beam_dynamic(quick, repeats, references));
     }
+    if (selected("long-run")) out["targets"].push_back(bench_long_run(quick));
     write_bench_outputs(a, out);
     return 0;
 }

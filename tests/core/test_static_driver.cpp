@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/sparse_lu.hpp"
 #include "core/static_driver.hpp"
 
 using namespace rotbeam;
@@ -167,6 +168,57 @@ BOOST_AUTO_TEST_CASE(a_tiny_load_is_solved_not_accepted_at_the_unloaded_state) {
         BOOST_TEST(std::abs(p.x_[0] - lambda) <= 1e-12 * lambda);
         BOOST_TEST(out.steps.at(0).newton_iterations >= 1);
     }
+}
+
+// Issue 13 item 3: the symbolic factorization is made once per pattern. Refactoring the same
+// pattern with new values must not analyse again (and must still solve the new matrix); a new
+// pattern must. For each solver kind.
+BOOST_AUTO_TEST_CASE(the_linear_solver_analyses_a_pattern_once_and_solves_each_new_matrix) {
+    for (const auto kind : {SparseLUSolver::Kind::sparse_lu, SparseLUSolver::Kind::klu_refactor,
+                            SparseLUSolver::Kind::dense}) {
+        SparseLUSolver lu(kind);
+        SparseMatrix J(3, 3);
+        J.insert(0, 0) = 4.0;
+        J.insert(1, 0) = 1.0;
+        J.insert(1, 1) = 3.0;
+        J.insert(2, 1) = 1.0;
+        J.insert(2, 2) = 2.0;
+        J.makeCompressed();
+        const VecX b = VecX::Ones(3);
+        VecX x;
+        for (int k = 1; k <= 3; ++k) {
+            J.coeffRef(0, 0) = 4.0 * k;
+            BOOST_TEST(lu.factorize(J));
+            lu.solve(b, x);
+            BOOST_TEST((J * x - b).norm() <= 1e-14);
+        }
+        BOOST_TEST(lu.symbolic_analyses() == 1);
+        BOOST_TEST(lu.factor_nonzeros() >= static_cast<double>(J.nonZeros()));
+        J.insert(0, 2) = 1.0;  // a new pattern
+        J.makeCompressed();
+        BOOST_TEST(lu.factorize(J));
+        lu.solve(b, x);
+        BOOST_TEST((J * x - b).norm() <= 1e-14);
+        BOOST_TEST(lu.symbolic_analyses() == 2);
+    }
+}
+
+// The Newton driver keeps its analysis across iterations and across solves sharing a workspace
+// (the load steps of run_static, the time steps of a dynamic run): at most one analysis per
+// solver of the workspace (Newton, damping test), however many factorizations.
+BOOST_AUTO_TEST_CASE(newton_iterations_sharing_a_workspace_reuse_the_symbolic_analysis) {
+    ToyProblem p([](double x) { return x + x * x * x; }, [](double x) { return 1 + 3 * x * x; });
+    NewtonWorkspace workspace;
+    int iterations = 0;
+    for (const double lambda : {0.5, 1.0, 2.0, 4.0}) {
+        p.set_load_factor(lambda);
+        const NewtonOutcome o = solve_newton(p, tight(), workspace);
+        BOOST_TEST(o.converged);
+        iterations += o.iterations;
+    }
+    BOOST_TEST(iterations >= 8);
+    BOOST_TEST(workspace.symbolic_analyses() >= 1);
+    BOOST_TEST(workspace.symbolic_analyses() <= 2);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,84 +1,61 @@
-// Cost of one Newton iteration of the displacement statics (issue 5 point 8): residual +
-// Jacobian assembly, sparse LU factorization with the symbolic analysis reused, and the solve, on
-// the roll-up at a deformed state (λ = 0.5 reached first), for 16 … 8192 linear elements and
-// 1 … 256 elements of order 8 (issue 13 item 4). Prints the median time per iteration, the fitted
-// log-log slope of time against unknowns (linear cost: 1) and the peak resident memory after each
-// size.
+// Cost of one Newton iteration of the displacement statics (issue 5 point 8, issue 13 item 4):
+// residual + Jacobian assembly, sparse LU factorization with the symbolic analysis reused, and
+// the solve (tests/scaling/per_iteration.hpp), on the roll-up at a deformed state (λ = 0.5 reached
+// first), for 16 … 8192 linear elements and 1 … 256 elements of order 8. Prints the median CPU
+// time per iteration with its split, the LU fill, the analyses made, the fitted log-log slope of
+// CPU time against unknowns (linear cost: 1) and each size's own peak resident memory.
 // A benchmark, not a test: built, not registered with CTest.
-#include <sys/resource.h>
-
-#include <Eigen/SparseLU>
-#include <algorithm>
-#include <chrono>
-#include <cmath>
+//
+// Usage: bench_displacement [largest linear element count, default 8192]
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "tests/displacement/models.hpp"
+#include "tests/scaling/per_iteration.hpp"
 
 using namespace rotbeam;
 
 namespace {
 
-double peak_rss_mb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return static_cast<double>(u.ru_maxrss) / 1024.0;
-}
-
-// Median seconds of one iteration (evaluate with Jacobian, factorize, solve).
-double seconds_per_iteration(int elements, int order, int& unknowns) {
+scaling::Row seconds_per_iteration(int elements, int order) {
     form::DisplacementStatics<param::Quaternion> problem(test::rollup(elements, order));
-    const StaticOutcome out = run_static(problem, {0.5}, NewtonSettings{}, [](const StepRecord&) {});
-    if (out.status != SolveStatus::converged) std::printf("  (static state: %s)\n", out.message.c_str());
-    unknowns = problem.size();
-    VecX r, dx;
-    SparseMatrix J;
-    Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
-    problem.evaluate(r, &J);
-    lu.analyzePattern(J);
-    const int repeats = std::max(5, std::min(200, 200000 / unknowns));
-    std::vector<double> t;
-    for (int k = 0; k < repeats; ++k) {
-        const auto start = std::chrono::steady_clock::now();
-        problem.evaluate(r, &J);
-        lu.factorize(J);
-        dx = lu.solve(r);
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    const StaticOutcome out = run_static(problem, {0.5}, NewtonSettings{}, nullptr);
+    if (out.status != SolveStatus::converged) {
+        std::printf("  (static state: %s)\n", out.message.c_str());
     }
-    std::nth_element(t.begin(), t.begin() + static_cast<long>(t.size() / 2), t.end());
-    return t[t.size() / 2];
+    return scaling::time_iterations(problem, elements);
 }
 
 void sweep(int order, const std::vector<int>& elements) {
-    std::printf("\norder %d\n%10s %10s %16s %14s\n", order, "elements", "unknowns",
-                "s/iteration", "peak RSS [MB]");
-    std::vector<double> lx, ly;
+    char name[64];
+    std::snprintf(name, sizeof name, "displacement/quaternion, order %d", order);
+    scaling::print_header(name);
+    std::vector<scaling::Row> rows;
     for (int n : elements) {
-        int unknowns = 0;
-        const double s = seconds_per_iteration(n, order, unknowns);
-        std::printf("%10d %10d %16.3e %14.1f\n", n, unknowns, s, peak_rss_mb());
-        lx.push_back(std::log(unknowns));
-        ly.push_back(std::log(s));
+        const bool reset = scaling::reset_peak_memory();
+        rows.push_back(seconds_per_iteration(n, order));
+        rows.back().peak_mb = scaling::peak_memory_mb();
+        scaling::print_row(rows.back(), reset);
     }
-    // Least-squares slope over the sizes with at least 500 unknowns (below, fixed costs dominate).
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    int m = 0;
-    for (size_t i = 0; i < lx.size(); ++i) {
-        if (std::exp(lx[i]) < 500) continue;
-        sx += lx[i]; sy += ly[i]; sxx += lx[i] * lx[i]; sxy += lx[i] * ly[i]; ++m;
-    }
-    std::printf("log-log slope of time per iteration vs unknowns (≥ 500 unknowns): %.3f\n",
-                (m * sxy - sx * sy) / (m * sxx - sx * sx));
+    scaling::print_slopes(rows);
 }
 
 }  // namespace
 
-int main() {
-    sweep(1, {16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192});
-    sweep(8, {1, 2, 4, 8, 16, 32, 64, 128, 256});
+int main(int argc, char** argv) {
+    const int largest = argc > 1 ? std::atoi(argv[1]) : 8192;
+    if (largest < 16) {
+        std::fprintf(stderr, "bench_displacement: largest element count must be ≥ 16\n");
+        return 2;
+    }
+    std::vector<int> linear, order8;
+    for (int n = 16; n <= largest; n *= 2) linear.push_back(n);
+    for (int n = 1; n <= largest / 32; n *= 2) order8.push_back(n);  // same unknowns
+    sweep(1, linear);
+    sweep(8, order8);
     return 0;
 }

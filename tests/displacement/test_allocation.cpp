@@ -3,11 +3,13 @@
 #define BOOST_TEST_MODULE displacement_allocation
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <vector>
 
 #include "core/generalized_alpha.hpp"
+#include "core/step_observer.hpp"
 #include "deformed.hpp"
 #include "dynamic_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -134,4 +136,51 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
         BOOST_TEST(a == 0);
     }
     std::cout << "\n";
+}
+
+// The step observer (core/step_observer.hpp, `rotbeam bench --targets long-run`) is told about
+// every accepted step, after its output, with the cumulative counts the outcome reports; neither
+// notifying nor an installed observer that stores into reserved memory allocates.
+BOOST_AUTO_TEST_CASE(the_step_observer_sees_every_step_and_allocates_nothing) {
+    Model m = test::moving_model(3, 3, false);
+    m.point_loads[0].frame = LoadFrame::dead;
+    m.distributed_loads[0].frame = LoadFrame::dead;
+    form::DisplacementDynamics<param::Quaternion> d(m);
+    TimeIntegrationSettings ts;
+    ts.time_step = 1e-3;
+    ts.end_time = 12e-3;
+    ts.rho_infinity = 0.8;
+    struct Seen {
+        std::vector<StepProgress> progress;
+        std::vector<long> allocations;
+    } seen;
+    seen.progress.reserve(32);
+    seen.allocations.reserve(32);
+    std::vector<long> at_output;
+    at_output.reserve(32);
+    DynamicOutcome out;
+    {
+        const ScopedStepObserver observer(
+            [](void* context, const StepProgress& p) {
+                Seen& s = *static_cast<Seen*>(context);
+                s.progress.push_back(p);
+                s.allocations.push_back(g_allocations);
+            },
+            &seen);
+        out = run_generalized_alpha(d, ts, NewtonSettings{}, [&](const TimeStepRecord&) {
+            at_output.push_back(g_allocations);
+        });
+    }
+    BOOST_TEST(current_step_observer.function == nullptr);  // restored at the end of the scope
+    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged), out.message);
+    BOOST_TEST_REQUIRE(seen.progress.size() == 12u);
+    for (size_t k = 0; k < seen.progress.size(); ++k) {
+        BOOST_TEST(seen.progress[k].steps == static_cast<long>(k + 1));
+        BOOST_TEST(std::abs(seen.progress[k].time - 1e-3 * static_cast<double>(k + 1)) <= 1e-15);
+        if (k > 0)
+            BOOST_TEST(seen.progress[k].newton_iterations > seen.progress[k - 1].newton_iterations);
+        if (k > 0) BOOST_TEST(seen.allocations[k] - seen.allocations[k - 1] == 0);
+    }
+    BOOST_TEST(seen.progress.back().newton_iterations == out.newton_iterations);
+    BOOST_TEST(seen.progress.back().time == ts.end_time);
 }

@@ -10,6 +10,7 @@
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/step_observer.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
@@ -353,6 +354,44 @@ BOOST_AUTO_TEST_CASE(fixed_step_scheme_keeps_the_energy_of_a_large_free_vibratio
     BOOST_TEST(drift[0] / drift[1] > 2.5);
     BOOST_TEST(drift[1] / drift[2] > 2.5);
     BOOST_TEST(drift[2] < 1e-3);
+}
+
+// The fixed-step and IDA drivers tell the step observer (core/step_observer.hpp, `rotbeam bench
+// --targets long-run`) about every fixed step and every IDA output interval, with the counts
+// their outcome reports.
+BOOST_AUTO_TEST_CASE(the_dae_drivers_report_their_steps_to_the_step_observer) {
+    const Model model = free_vibration(4);
+    const double dt = 1e-3, end = 20e-3;
+    form::MixedDynamics<param::WienerMilenkovic> dyn(model, end, 1e-6 * dt);
+    for (const bool ida : {false, true}) {
+        VecX x = released_state(model, dyn);
+        VecX xdot = VecX::Zero(dyn.size());
+        DaeSettings s;
+        s.end_time = end;
+        s.time_step = dt;
+        s.output_interval = 5 * dt;
+        std::vector<StepProgress> seen;
+        DaeOutcome out;
+        {
+            const ScopedStepObserver observer(
+                [](void* context, const StepProgress& p) {
+                    static_cast<std::vector<StepProgress>*>(context)->push_back(p);
+                },
+                &seen);
+            out = ida ? integrate_ida(dyn, x, xdot, s, nullptr)
+                      : integrate_trapezoidal(dyn, x, xdot, s, nullptr);
+        }
+        BOOST_TEST_REQUIRE((out.status == SolveStatus::converged), out.message);
+        BOOST_TEST_REQUIRE(seen.size() == (ida ? 4U : 20U));
+        for (size_t k = 1; k < seen.size(); ++k) {
+            BOOST_TEST(seen[k].steps > seen[k - 1].steps);
+            BOOST_TEST(seen[k].time > seen[k - 1].time);
+            if (!ida) BOOST_TEST(seen[k].steps == static_cast<long>(k + 1));
+        }
+        BOOST_TEST(seen.back().steps == out.steps);
+        BOOST_TEST(seen.back().newton_iterations == out.newton_iterations);
+        BOOST_TEST(std::abs(seen.back().time - end) <= 1e-12);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
