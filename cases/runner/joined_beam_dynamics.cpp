@@ -178,9 +178,8 @@ std::string cache_file(const std::string& dir, const Combination& c, const Respo
     // The case is in the name: the dead and follower references of one setting must not
     // overwrite each other (the key inside would refuse the other's, but it would be recomputed).
     s << dir << "/reference_" << w.case_name << "_" << c.formulation << "_" << c.rotation << "_n"
-      << w.elements << "_p"
-      << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T" << w.end_time << "_dt"
-      << coarse_step << ".json";
+      << w.elements << "_p" << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T"
+      << w.end_time << "_dt" << coarse_step << ".json";
     return s.str();
 }
 
