@@ -175,9 +175,11 @@ nlohmann::json reference_key(const Combination& c, const ResponseWindow& w, doub
 std::string cache_file(const std::string& dir, const Combination& c, const ResponseWindow& w,
                        double coarse_step) {
     std::ostringstream s;
-    s << dir << "/reference_" << c.formulation << "_" << c.rotation << "_n" << w.elements << "_p"
-      << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T" << w.end_time << "_dt"
-      << coarse_step << ".json";
+    // The case is in the name: the dead and follower references of one setting must not
+    // overwrite each other (the key inside would refuse the other's, but it would be recomputed).
+    s << dir << "/reference_" << w.case_name << "_" << c.formulation << "_" << c.rotation << "_n"
+      << w.elements << "_p" << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T"
+      << w.end_time << "_dt" << coarse_step << ".json";
     return s.str();
 }
 

@@ -25,6 +25,7 @@ nlohmann::json study_speed_accuracy(const StudyOptions& o);  // study_speed.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);  // study_manufactured_time.cpp
 nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp
 nlohmann::json study_joined_beam_dynamics(const StudyOptions& o);  // study_joined_beam_dynamics.cpp
+nlohmann::json study_joined_beam_agreement(const StudyOptions& o);  // study_joined_beam_agreement.cpp
 // The time "model only what the scene requires" saves against solver.assemble_all_terms: a
 // section of the speed study (study_assembly.cpp).
 nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md);

@@ -19,6 +19,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"speed-accuracy", study_speed_accuracy},
         {"joined-beam-modal", study_joined_beam_modal},
         {"joined-beam-dynamics", study_joined_beam_dynamics},
+        {"joined-beam-agreement", study_joined_beam_agreement},
     };
     return table;
 }
@@ -51,9 +52,12 @@ namespace {
 bool timed_study(const std::string& name) { return name == "speed-accuracy"; }
 
 // Not run by the suite: the joined beam's 0–2 s sweep costs ~20 CPU-minutes (its references
-// alone ~10); `rotbeam study joined-beam-dynamics --out DIR` into the suite's folder puts its
-// section into the report (report.cpp reads every registered study's file it finds).
-bool standalone_study(const std::string& name) { return name == "joined-beam-dynamics"; }
+// alone ~10), the formulations' agreement at converged Δt and mesh ~40; `rotbeam study NAME --out
+// DIR` into the suite's folder puts its section into the report (report.cpp reads every
+// registered study's file it finds).
+bool standalone_study(const std::string& name) {
+    return name == "joined-beam-dynamics" || name == "joined-beam-agreement";
+}
 
 }  // namespace
 
