@@ -172,10 +172,11 @@ nlohmann::json reference_key(const Combination& c, const ResponseWindow& w, doub
             {"integrator", fixed_step_integrator(c.formulation)}};
 }
 
+// The case is part of the name: the dead and the follower load's references share one folder.
 std::string cache_file(const std::string& dir, const Combination& c, const ResponseWindow& w,
                        double coarse_step) {
     std::ostringstream s;
-    s << dir << "/reference_" << c.formulation << "_" << c.rotation << "_n" << w.elements << "_p"
+    s << dir << "/reference_" << w.case_name << "_" << c.formulation << "_" << c.rotation << "_n" << w.elements << "_p"
       << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T" << w.end_time << "_dt"
       << coarse_step << ".json";
     return s.str();

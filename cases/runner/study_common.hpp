@@ -81,7 +81,8 @@ struct Series {
         error.push_back(e);
     }
 };
-// Writes "elements dofs seconds error" rows (finite errors only); returns the path.
+// Writes "elements dofs seconds error" rows (finite errors only; a blank line where non-finite
+// ones were between them, so plots break the curve there); returns the path.
 std::string write_series(const StudyOptions& o, const std::string& relative_path,
                          const Series& series);
 // Joins words with single spaces (the gnuplot word lists).
