@@ -209,8 +209,8 @@ int command_study(const Args& args) {
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
         "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
         "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "
-        "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error vs CPU time across Δt and "
-        "IDA tolerances); `all`: every one of them. Written to --out (study-NAME.md, .json, "
+        "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error "
+        "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out (study-NAME.md, .json, "
         "figures).",
         {{"json", "FILE", "write the study JSON to FILE (rotations)"},
          {"samples", "N", "angles in the sweep (default 721, rotations)"},

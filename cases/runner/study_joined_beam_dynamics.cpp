@@ -356,7 +356,8 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
             Series& series = by_integrator[s.integrator];
             series.label = p.series;
             series.add(s.integrator == "ida" ? s.tolerance : s.time_step, p.dofs, p.cpu, p.error);
-            if (!std::isfinite(p.error)) l.figure.add_failure(panel_title(s, j.combination), p.spent);
+            if (!std::isfinite(p.error))
+                l.figure.add_failure(panel_title(s, j.combination), p.spent);
         }
         for (const auto& [integrator, series] : by_integrator) {
             const TimeSetting s{integrator, 0.0, 0.0};
@@ -434,8 +435,8 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
     if (dead_ref != loads[0].same_mesh.end() && follower_ref != loads[1].same_mesh.end()) {
         load_difference = history_error(follower_ref->second.history, dead_ref->second.history);
         md << "The follower response against the dead one (" << probe
-           << " references, same measure, relative to the dead response): "
-           << sci(load_difference) << ".\n\n";
+           << " references, same measure, relative to the dead response): " << sci(load_difference)
+           << ".\n\n";
     }
     nlohmann::json out = {{"study", "joined-beam-dynamics"},
                           {"quick", o.quick},
@@ -445,20 +446,20 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
                           {"follower_vs_dead", load_difference},
                           {"loads", nlohmann::json::object()}};
     for (LoadStudy& l : loads) {
-        plot_panels(o, l.figure,
-                    {{"xcol", "3"},
-                     {"ycol", "4"},
-                     {"xlabel", "thread CPU time of the run, median of repeats [s]"},
-                     {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
-                     {"plottitle", "Joined beam, " + l.load + " load, 0–" +
-                                       seconds_text(base.end_time) +
-                                       ": time error vs CPU time, one panel per formulation and "
-                                       "integrator, the Pareto front of all runs in every panel"},
-                     {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
-                     {"logx", "1"},
-                     {"logy", "1"},
-                     {"extra", out_path(o, l.front_file)},
-                     {"extratitle", "Pareto front (all runs)"}});
+        plot_panels(
+            o, l.figure,
+            {{"xcol", "3"},
+             {"ycol", "4"},
+             {"xlabel", "thread CPU time of the run, median of repeats [s]"},
+             {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
+             {"plottitle", "Joined beam, " + l.load + " load, 0–" + seconds_text(base.end_time) +
+                               ": time error vs CPU time, one panel per formulation and "
+                               "integrator, the Pareto front of all runs in every panel"},
+             {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
+             {"logx", "1"},
+             {"logy", "1"},
+             {"extra", out_path(o, l.front_file)},
+             {"extratitle", "Pareto front (all runs)"}});
         md << l.md.str();
         out["loads"][l.load] = l.json;
     }
