@@ -24,6 +24,9 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 struct StudyOptions {
     std::string out_dir = "out";
     bool quick = false;
+    // joined-beam-dynamics only: the follower load with the --quick sweep (fixed step to 0.5 ms,
+    // IDA to 1e-5) on the full window, when the full sweep of both loads costs too much.
+    bool reduced_follower = false;
 };
 
 struct Combination {

@@ -211,7 +211,7 @@ namespace {
 
 // The checks of the references: same discrete model across formulations, fixed step against IDA,
 // and the paper mesh's space error. Appends to md, returns the JSON.
-nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
+nlohmann::json reference_checks(const StudyOptions& o, bool quick, const ResponseWindow& w,
                                 const std::map<std::string, ReferenceResponse>& same_mesh,
                                 std::ostringstream& md) {
     nlohmann::json out;
@@ -226,14 +226,19 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
     // coarser reference step, which halves their cost (order 3: ~10 CPU-minutes otherwise).
     const double step = 2.0 * reference_coarse_step("displacement", o.quick);
     std::vector<ReferenceJob> jobs = {{disp, midpoint, step, {}}, {disp, p2, step, {}}};
-    if (!o.quick) jobs.push_back({disp, p3, step, {}});
+    if (!quick) jobs.push_back({disp, p3, step, {}});
+    // IDA at a tight tolerance on the mixed paper mesh, on its own thread beside the references.
+    const TimeSetting tight{"ida", 1e-3, quick ? 1e-7 : 1e-8};
+    nlohmann::json ida;
+    double ida_cpu = 0.0;
+    std::thread ida_thread([&] {
+        const double c0 = thread_cpu_seconds();
+        ida = run_spec(response_spec(mixed, tight, w));
+        ida_cpu = thread_cpu_seconds() - c0;
+    });
     compute_references(jobs, cache);
+    ida_thread.join();
     const ReferenceResponse& fine_space = jobs.back().result;
-    // IDA at a tight tolerance on the mixed paper mesh.
-    const TimeSetting tight{"ida", 1e-3, o.quick ? 1e-7 : 1e-8};
-    const double c0 = thread_cpu_seconds();
-    const nlohmann::json ida = run_spec(response_spec(mixed, tight, w));
-    const double ida_cpu = thread_cpu_seconds() - c0;
     const History ida_history = joint_history(ida);
 
     auto error_or_nan = [](const ReferenceResponse& a, const ReferenceResponse& b) {
@@ -276,7 +281,7 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
                                    : kNoValue;
     const double space_p1 = error_or_nan(disp_ref, fine_space);
     const double space_mixed = error_or_nan(mixed_ref, fine_space);
-    const double space_p2 = o.quick ? kNoValue : error_or_nan(jobs[1].result, fine_space);
+    const double space_p2 = quick ? kNoValue : error_or_nan(jobs[1].result, fine_space);
     md << "\nChecks (same error measure):\n\n"
        << "- Two formulations, one discrete model: the displacement formulation with linear "
           "elements, one-point stiffness and midpoint mass has the mixed element's frequencies "
@@ -288,9 +293,9 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
        << " CPU) against the mixed trapezoidal reference: " << sci(ida_vs_trap) << ".\n"
        << "- Space error of the paper mesh (" << w.elements
        << " elements per member) against the displacement formulation with order-"
-       << (o.quick ? 2 : 3) << " elements on the same mesh (" << fine_space.how
+       << (quick ? 2 : 3) << " elements on the same mesh (" << fine_space.how
        << "): displacement order 1 " << sci(space_p1) << ", mixed " << sci(space_mixed);
-    if (!o.quick) md << ", displacement order 2 " << sci(space_p2);
+    if (!quick) md << ", displacement order 2 " << sci(space_p2);
     md << ". No Δt or tolerance removes this part; it adds to the time errors below.\n\n";
     out["checks"] = {{"cross_formulation", cross},
                      {"ida_tight_vs_trapezoidal", ida_vs_trap},
@@ -308,11 +313,16 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
 
 namespace {
 
+// Threads measuring one load's sweep (two loads at once: 6 runs in parallel on a shared machine,
+// where each thread gets a share of the cores; the costs are per-thread CPU times).
+constexpr int kSweepThreads = 3;
+
 // One load's measurement: its references, sweep, checks, front and words (`md`, the JSON), and
 // what its figure needs.
 struct LoadStudy {
     std::string load;  // "dead" | "follower"
     ResponseWindow window;
+    bool quick_sweep = false;  // the --quick sweep (and checks) on this window
     std::ostringstream md;
     nlohmann::json json;
     PanelFigure figure;  // one panel per formulation and integrator, parameterizations inside
@@ -335,6 +345,7 @@ std::string panel_title(const TimeSetting& s, const Combination& c) {
 
 void measure_load(const StudyOptions& o, LoadStudy& l) {
     const ResponseWindow& w = l.window;
+    const bool sweep_quick = o.quick || l.quick_sweep;
     const std::string cache = out_path(o, "joined-beam-references");
     std::vector<ReferenceJob> jobs;
     for (const Combination& c : all_combinations(false)) {
@@ -343,6 +354,34 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     compute_references(jobs, cache);
     std::vector<DynamicPoint> points;
     std::vector<std::string> notes;
+    // Panels in the order of the table: the fixed-step schemes, then IDA.
+    for (const char* f : {"displacement", "mixed"})
+        l.figure.panel(panel_title({fixed_step_integrator(f), 0.0, 0.0}, {f, "", ""}));
+    l.figure.panel(panel_title({"ida", 0.0, 0.0}, {"mixed", "", ""}));
+    // Every (combination, setting) run, measured by a pool of threads (each run single-threaded,
+    // its cost its own thread's CPU time), kept in the order of the list.
+    struct Task {
+        const ReferenceJob* job;
+        TimeSetting setting;
+    };
+    std::vector<Task> tasks;
+    for (const ReferenceJob& j : jobs) {
+        if (j.result.status != "converged") continue;
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick))
+            tasks.push_back({&j, s});
+    }
+    std::vector<DynamicPoint> measured(tasks.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < tasks.size(); i = next++) {
+            measured[i] = dynamic_point(tasks[i].job->combination, tasks[i].setting, w,
+                                        tasks[i].job->result.history);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < kSweepThreads; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    size_t task = 0;
     for (const ReferenceJob& j : jobs) {
         if (j.result.status != "converged") {
             notes.push_back(j.combination.label() + ": " + j.result.status.substr(0, 160));
@@ -350,8 +389,8 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
         }
         l.same_mesh[j.combination.label()] = j.result;
         std::map<std::string, Series> by_integrator;
-        for (const TimeSetting& s : time_settings(j.combination.formulation, o.quick)) {
-            points.push_back(dynamic_point(j.combination, s, w, j.result.history));
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick)) {
+            points.push_back(measured[task++]);
             const DynamicPoint& p = points.back();
             Series& series = by_integrator[s.integrator];
             series.label = p.series;
@@ -376,7 +415,13 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     for (const std::string& n : notes) md << "- not run: " << n << "\n";
     if (!notes.empty()) md << "\n";
     l.json = {{"case", w.case_name}, {"not_run", notes}};
-    l.json["references"] = reference_checks(o, w, l.same_mesh, md);
+    if (l.quick_sweep && !o.quick) {
+        md << "**Reduced sweep** (`--reduced-follower`): the --quick settings (fixed step down to "
+              "0.5 ms, IDA down to 1e-5) on the full window, order-2 elements as the space "
+              "reference and IDA at 1e-7 as the integrators' check.\n\n";
+    }
+    l.json["reduced_sweep"] = l.quick_sweep && !o.quick;
+    l.json["references"] = reference_checks(o, sweep_quick, w, l.same_mesh, md);
     l.front_file = "data/joined_beam_dynamic_front_" + l.load + ".dat";
     l.json["front"] = dynamic_front(o, points, l.front_file, md);
     winners_in_words(points, md);
@@ -397,6 +442,7 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
     for (LoadStudy& l : loads) {
         l.window = base;
         l.window.case_name = "joined-beam-" + l.load;
+        l.quick_sweep = l.load == "follower" && o.reduced_follower;
     }
     // The two loads on two threads (each run is single-threaded and its cost is its thread's CPU
     // time, which the other thread does not change); figures after both, from this thread.
