@@ -71,7 +71,7 @@ set yrange [y0:y1]
 set xlabel xlabel noenhanced
 set ylabel ylabel
 set grid
-set key outside below left Left reverse noenhanced font ",8" maxrows 6
+set key outside below left Left reverse noenhanced font ",8" maxrows 6 height 1.5
 hy = (hline ne '') ? hline + 0.0 : NaN
 sx = (slopes ne '') ? word(slopes, 1) + 0.0 : 1.0
 sy = (slopes ne '') ? word(slopes, 2) + 0.0 : NaN

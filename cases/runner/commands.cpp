@@ -211,13 +211,15 @@ int command_study(const Args& args) {
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
         "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
         "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "
-        "convergence), `joined-beam-dynamics` (0–2 s response: error vs CPU time across Δt and "
-        "IDA tolerances); `all`: every one of them. Written to --out (study-NAME.md, .json, "
-        "figures).",
+        "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error "
+        "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
+        "(study-NAME.md, .json, figures).",
         {{"json", "FILE", "write the study JSON to FILE (rotations)"},
          {"samples", "N", "angles in the sweep (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},
-         {"quick", "", "the static studies' smaller variant (CI smoke test)"}}};
+         {"quick", "", "the static studies' smaller variant (CI smoke test)"},
+         {"reduced-follower", "",
+          "joined-beam-dynamics: the follower load with the --quick sweep on the full window"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -225,7 +227,7 @@ int command_study(const Args& args) {
     }
     if (a.positional[0] != "rotations") {
         run_named_study(a.positional[0], StudyOptions{a.value("out").value_or("out"),
-                                                      a.has("quick")});
+                                                      a.has("quick"), a.has("reduced-follower")});
         return 0;
     }
     const int samples = a.positive_int("study", "samples").value_or(721);

@@ -172,6 +172,7 @@ nlohmann::json reference_key(const Combination& c, const ResponseWindow& w, doub
             {"integrator", fixed_step_integrator(c.formulation)}};
 }
 
+// The case is part of the name: the dead and the follower load's references share one folder.
 std::string cache_file(const std::string& dir, const Combination& c, const ResponseWindow& w,
                        double coarse_step) {
     std::ostringstream s;

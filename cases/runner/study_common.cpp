@@ -125,8 +125,17 @@ std::string write_series(const StudyOptions& o, const std::string& relative_path
     std::ostringstream s;
     s.precision(12);
     s << "# " << series.label << ": elements dofs seconds error\n";
+    bool broken = false, written = false;
     for (size_t i = 0; i < series.error.size(); ++i) {
-        if (!std::isfinite(series.error[i])) continue;
+        // A run without a result breaks the curve (a blank line: gnuplot does not join across
+        // it), so a failed setting is never bridged by a line between its neighbours.
+        if (!std::isfinite(series.error[i])) {
+            broken = written;
+            continue;
+        }
+        if (broken) s << "\n";
+        broken = false;
+        written = true;
         s << series.elements[i] << " " << series.dofs[i] << " " << series.seconds[i] << " "
           << std::max(series.error[i], 1e-17) << "\n";  // log axes: exact zero drawn at 1e-17
     }

@@ -24,6 +24,9 @@ constexpr double kNoValue = std::numeric_limits<double>::quiet_NaN();
 struct StudyOptions {
     std::string out_dir = "out";
     bool quick = false;
+    // joined-beam-dynamics only: the follower load with the --quick sweep (fixed step to 0.5 ms,
+    // IDA to 1e-5) on the full window, when the full sweep of both loads costs too much.
+    bool reduced_follower = false;
 };
 
 struct Combination {
@@ -81,7 +84,8 @@ struct Series {
         error.push_back(e);
     }
 };
-// Writes "elements dofs seconds error" rows (finite errors only); returns the path.
+// Writes "elements dofs seconds error" rows (finite errors only; a blank line where non-finite
+// ones were between them, so plots break the curve there); returns the path.
 std::string write_series(const StudyOptions& o, const std::string& relative_path,
                          const Series& series);
 // Joins words with single spaces (the gnuplot word lists).

@@ -1,5 +1,6 @@
 // `rotbeam study joined-beam-dynamics` (issue 12 item 4, issue 9 item 7): speed versus accuracy of
-// the joined beam's 0–2 s response under the dead joint force (joined_beam_dynamics.hpp). Per
+// the joined beam's 0–2 s response under the joint force 1e5 sin(20t) N, dead and follower
+// (joined_beam_dynamics.hpp; each load measured on its own, with its own references). Per
 // combination on the paper's mesh, every integrator setting (Δt of the fixed-step schemes, IDA
 // tolerances) is run; its time error is the joint history's distance to the combination's own
 // same-mesh self-converged reference, its cost the median thread CPU time (and wall time) of the
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -18,6 +20,7 @@
 #include "joined_beam_dynamics.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
+#include "study_plot.hpp"
 #include "timing.hpp"
 
 namespace rotbeam::cli {
@@ -29,6 +32,7 @@ struct DynamicPoint {
     TimeSetting setting;
     std::string status;
     double cpu = kNoValue, wall = kNoValue, error = kNoValue;
+    double spent = 0.0;  // CPU time of the first run, also when it failed (the figure's x)
     int dofs = 0, newton = 0, repeats = 0;
     long steps = 0;
 };
@@ -62,6 +66,7 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
     p.newton = dynamic_newton_iterations(first);
     p.steps = dynamic_steps(first);
     p.repeats = static_cast<int>(cpu.size());
+    p.spent = cpu.front();
     if (p.status == "converged") {
         p.cpu = median(cpu);
         p.wall = median(wall);
@@ -134,7 +139,7 @@ namespace {
 
 // The Pareto front of (CPU time, time error) across every run, its table and data file.
 nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoint>& points,
-                             std::ostringstream& md) {
+                             const std::string& front_file, std::ostringstream& md) {
     std::vector<double> cost, error;
     for (const DynamicPoint& p : points) {
         cost.push_back(p.cpu);
@@ -162,7 +167,7 @@ nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoi
         out.push_back(point_json(*p));
     }
     md << "\n";
-    write_text(o, "data/joined_beam_dynamic_front.dat", data.str());
+    write_text(o, front_file, data.str());
     return out;
 }
 
@@ -206,7 +211,7 @@ namespace {
 
 // The checks of the references: same discrete model across formulations, fixed step against IDA,
 // and the paper mesh's space error. Appends to md, returns the JSON.
-nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
+nlohmann::json reference_checks(const StudyOptions& o, bool quick, const ResponseWindow& w,
                                 const std::map<std::string, ReferenceResponse>& same_mesh,
                                 std::ostringstream& md) {
     nlohmann::json out;
@@ -221,14 +226,19 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
     // coarser reference step, which halves their cost (order 3: ~10 CPU-minutes otherwise).
     const double step = 2.0 * reference_coarse_step("displacement", o.quick);
     std::vector<ReferenceJob> jobs = {{disp, midpoint, step, {}}, {disp, p2, step, {}}};
-    if (!o.quick) jobs.push_back({disp, p3, step, {}});
+    if (!quick) jobs.push_back({disp, p3, step, {}});
+    // IDA at a tight tolerance on the mixed paper mesh, on its own thread beside the references.
+    const TimeSetting tight{"ida", 1e-3, quick ? 1e-7 : 1e-8};
+    nlohmann::json ida;
+    double ida_cpu = 0.0;
+    std::thread ida_thread([&] {
+        const double c0 = thread_cpu_seconds();
+        ida = run_spec(response_spec(mixed, tight, w));
+        ida_cpu = thread_cpu_seconds() - c0;
+    });
     compute_references(jobs, cache);
+    ida_thread.join();
     const ReferenceResponse& fine_space = jobs.back().result;
-    // IDA at a tight tolerance on the mixed paper mesh.
-    const TimeSetting tight{"ida", 1e-3, o.quick ? 1e-7 : 1e-8};
-    const double c0 = thread_cpu_seconds();
-    const nlohmann::json ida = run_spec(response_spec(mixed, tight, w));
-    const double ida_cpu = thread_cpu_seconds() - c0;
     const History ida_history = joint_history(ida);
 
     auto error_or_nan = [](const ReferenceResponse& a, const ReferenceResponse& b) {
@@ -271,7 +281,7 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
                                    : kNoValue;
     const double space_p1 = error_or_nan(disp_ref, fine_space);
     const double space_mixed = error_or_nan(mixed_ref, fine_space);
-    const double space_p2 = o.quick ? kNoValue : error_or_nan(jobs[1].result, fine_space);
+    const double space_p2 = quick ? kNoValue : error_or_nan(jobs[1].result, fine_space);
     md << "\nChecks (same error measure):\n\n"
        << "- Two formulations, one discrete model: the displacement formulation with linear "
           "elements, one-point stiffness and midpoint mass has the mixed element's frequencies "
@@ -283,9 +293,9 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
        << " CPU) against the mixed trapezoidal reference: " << sci(ida_vs_trap) << ".\n"
        << "- Space error of the paper mesh (" << w.elements
        << " elements per member) against the displacement formulation with order-"
-       << (o.quick ? 2 : 3) << " elements on the same mesh (" << fine_space.how
+       << (quick ? 2 : 3) << " elements on the same mesh (" << fine_space.how
        << "): displacement order 1 " << sci(space_p1) << ", mixed " << sci(space_mixed);
-    if (!o.quick) md << ", displacement order 2 " << sci(space_p2);
+    if (!quick) md << ", displacement order 2 " << sci(space_p2);
     md << ". No Δt or tolerance removes this part; it adds to the time errors below.\n\n";
     out["checks"] = {{"cross_formulation", cross},
                      {"ida_tight_vs_trapezoidal", ida_vs_trap},
@@ -301,70 +311,204 @@ nlohmann::json reference_checks(const StudyOptions& o, const ResponseWindow& w,
 
 }  // namespace
 
-nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
-    const ResponseWindow w = o.quick ? quick_window() : full_window();
+namespace {
+
+// Threads measuring one load's sweep (two loads at once: 6 runs in parallel on a shared machine,
+// where each thread gets a share of the cores; the costs are per-thread CPU times).
+constexpr int kSweepThreads = 3;
+
+// One load's measurement: its references, sweep, checks, front and words (`md`, the JSON), and
+// what its figure needs.
+struct LoadStudy {
+    std::string load;  // "dead" | "follower"
+    ResponseWindow window;
+    bool quick_sweep = false;  // the --quick sweep (and checks) on this window
+    std::ostringstream md;
+    nlohmann::json json;
+    PanelFigure figure;  // one panel per formulation and integrator, parameterizations inside
+    std::string front_file;
+    std::map<std::string, ReferenceResponse> same_mesh;
+};
+
+const char* load_words(const std::string& load) {
+    return load == "follower" ? "follower joint force 1e5 sin(20t) N (turns with the joint)"
+                              : "dead joint force 1e5 sin(20t) N (fixed vertical direction)";
+}
+
+// The figure's panel of a run: its formulation and integrator (the parameterizations of one panel
+// give the same errors to 2–3 digits and would hide each other on one set of axes).
+std::string panel_title(const TimeSetting& s, const Combination& c) {
+    if (s.integrator == "ida") return c.formulation + ", IDA (BDF ≤ 2), tolerances";
+    if (s.integrator == "trapezoidal") return c.formulation + ", trapezoidal, Δt";
+    return c.formulation + ", generalized-α ρ∞ = 1, Δt";
+}
+
+void measure_load(const StudyOptions& o, LoadStudy& l) {
+    const ResponseWindow& w = l.window;
+    const bool sweep_quick = o.quick || l.quick_sweep;
     const std::string cache = out_path(o, "joined-beam-references");
     std::vector<ReferenceJob> jobs;
     for (const Combination& c : all_combinations(false)) {
         jobs.push_back({c, w, reference_coarse_step(c.formulation, o.quick), {}});
     }
     compute_references(jobs, cache);
-    std::map<std::string, ReferenceResponse> same_mesh;
     std::vector<DynamicPoint> points;
-    std::vector<std::string> files, titles, notes;
+    std::vector<std::string> notes;
+    // Panels in the order of the table: the fixed-step schemes, then IDA.
+    for (const char* f : {"displacement", "mixed"})
+        l.figure.panel(panel_title({fixed_step_integrator(f), 0.0, 0.0}, {f, "", ""}));
+    l.figure.panel(panel_title({"ida", 0.0, 0.0}, {"mixed", "", ""}));
+    // Every (combination, setting) run, measured by a pool of threads (each run single-threaded,
+    // its cost its own thread's CPU time), kept in the order of the list.
+    struct Task {
+        const ReferenceJob* job;
+        TimeSetting setting;
+    };
+    std::vector<Task> tasks;
+    for (const ReferenceJob& j : jobs) {
+        if (j.result.status != "converged") continue;
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick))
+            tasks.push_back({&j, s});
+    }
+    std::vector<DynamicPoint> measured(tasks.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < tasks.size(); i = next++) {
+            measured[i] = dynamic_point(tasks[i].job->combination, tasks[i].setting, w,
+                                        tasks[i].job->result.history);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < kSweepThreads; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    size_t task = 0;
     for (const ReferenceJob& j : jobs) {
         if (j.result.status != "converged") {
             notes.push_back(j.combination.label() + ": " + j.result.status.substr(0, 160));
             continue;
         }
-        same_mesh[j.combination.label()] = j.result;
+        l.same_mesh[j.combination.label()] = j.result;
         std::map<std::string, Series> by_integrator;
-        for (const TimeSetting& s : time_settings(j.combination.formulation, o.quick)) {
-            points.push_back(dynamic_point(j.combination, s, w, j.result.history));
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick)) {
+            points.push_back(measured[task++]);
             const DynamicPoint& p = points.back();
-            Series& series = by_integrator[p.series];
+            Series& series = by_integrator[s.integrator];
             series.label = p.series;
             series.add(s.integrator == "ida" ? s.tolerance : s.time_step, p.dofs, p.cpu, p.error);
+            if (!std::isfinite(p.error))
+                l.figure.add_failure(panel_title(s, j.combination), p.spent);
         }
-        for (const auto& [label, series] : by_integrator) {
-            files.push_back(write_series(
-                o, "data/joined_beam_dynamic_" + std::to_string(files.size()) + ".dat", series));
-            titles.push_back(label);
+        for (const auto& [integrator, series] : by_integrator) {
+            const TimeSetting s{integrator, 0.0, 0.0};
+            l.figure.add(panel_title(s, j.combination),
+                         write_series(o,
+                                      "data/joined_beam_dynamic_" + l.load + "_" +
+                                          std::to_string(l.figure.files.size()) + ".dat",
+                                      series),
+                         j.combination.rotation);
         }
     }
+    std::ostringstream& md = l.md;
+    md << "## " << (l.load == "follower" ? "Follower" : "Dead") << " load (" << w.case_name
+       << ")\n\nThe joined beam under the " << load_words(l.load) << ", cases/" << w.case_name
+       << ".yaml, 0–" << w.end_time << " s.\n\n";
+    for (const std::string& n : notes) md << "- not run: " << n << "\n";
+    if (!notes.empty()) md << "\n";
+    l.json = {{"case", w.case_name}, {"not_run", notes}};
+    if (l.quick_sweep && !o.quick) {
+        md << "**Reduced sweep** (`--reduced-follower`): the --quick settings (fixed step down to "
+              "0.5 ms, IDA down to 1e-5) on the full window, order-2 elements as the space "
+              "reference and IDA at 1e-7 as the integrators' check.\n\n";
+    }
+    l.json["reduced_sweep"] = l.quick_sweep && !o.quick;
+    l.json["references"] = reference_checks(o, sweep_quick, w, l.same_mesh, md);
+    l.front_file = "data/joined_beam_dynamic_front_" + l.load + ".dat";
+    l.json["front"] = dynamic_front(o, points, l.front_file, md);
+    winners_in_words(points, md);
+    md << "![joined-beam-dynamics-" << l.load << ".png](joined-beam-dynamics-" << l.load
+       << ".png)\n\n";
+    sweep_table(points, md);
+    l.json["points"] = nlohmann::json::array();
+    for (const DynamicPoint& p : points) l.json["points"].push_back(point_json(p));
+}
+
+}  // namespace
+
+nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
+    const ResponseWindow base = o.quick ? quick_window() : full_window();
+    std::vector<LoadStudy> loads(2);
+    loads[0].load = "dead";
+    loads[1].load = "follower";
+    for (LoadStudy& l : loads) {
+        l.window = base;
+        l.window.case_name = "joined-beam-" + l.load;
+        l.quick_sweep = l.load == "follower" && o.reduced_follower;
+    }
+    // The two loads on two threads (each run is single-threaded and its cost is its thread's CPU
+    // time, which the other thread does not change); figures after both, from this thread.
+    std::vector<std::exception_ptr> failed(loads.size());
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < loads.size(); ++i) {
+        threads.emplace_back([&, i] {
+            try {
+                measure_load(o, loads[i]);
+            } catch (...) {
+                failed[i] = std::current_exception();
+            }
+        });
+    }
+    for (std::thread& t : threads) t.join();
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+
     std::ostringstream md;
-    md << "## Study: joined beam, dynamic speed versus accuracy\n\nThe joined beam under the dead "
-          "joint force 1e5 sin(20t) N (cases/joined-beam-dead.yaml), 0–"
-       << w.end_time << " s, on the paper's mesh (" << w.elements
+    md << "## Study: joined beam, dynamic speed versus accuracy\n\nThe joined beam under the joint "
+          "force 1e5 sin(20t) N, dead (cases/joined-beam-dead.yaml) and follower "
+          "(cases/joined-beam-follower.yaml), each measured on its own, 0–"
+       << base.end_time << " s, on the paper's mesh (" << base.elements
        << " elements per member; displacement: linear elements, consistent mass). For every "
           "combination, the fixed-step scheme at several Δt and (mixed) IDA at several tolerances; "
           "cost = thread CPU time of the whole run_case (median of up to 3 repeats for runs under "
           "1 s; the machine was shared, so CPU rather than wall time decides), time error = the "
-          "joint history's distance to the combination's own same-mesh reference. The space error "
-          "of the mesh is measured separately (below) and is the same for every integrator "
-          "setting.\n\n";
-    for (const std::string& n : notes) md << "- not run: " << n << "\n";
-    if (!notes.empty()) md << "\n";
+          "joint history's distance to the combination's own same-mesh reference for that load. "
+          "The space error of the mesh is measured separately per load and is the same for every "
+          "integrator setting.\n\n";
+    // How much the load's direction matters: the two loads' references, same combination.
+    const std::string probe = Combination{"displacement", "quaternion", ""}.label();
+    const auto dead_ref = loads[0].same_mesh.find(probe);
+    const auto follower_ref = loads[1].same_mesh.find(probe);
+    double load_difference = kNoValue;
+    if (dead_ref != loads[0].same_mesh.end() && follower_ref != loads[1].same_mesh.end()) {
+        load_difference = history_error(follower_ref->second.history, dead_ref->second.history);
+        md << "The follower response against the dead one (" << probe
+           << " references, same measure, relative to the dead response): " << sci(load_difference)
+           << ".\n\n";
+    }
     nlohmann::json out = {{"study", "joined-beam-dynamics"},
                           {"quick", o.quick},
-                          {"end_time", w.end_time},
-                          {"output_interval", w.output_interval},
-                          {"elements_per_member", w.elements},
-                          {"not_run", notes}};
-    out["references"] = reference_checks(o, w, same_mesh, md);
-    out["front"] = dynamic_front(o, points, md);
-    winners_in_words(points, md);
-    plot("study_joined_beam_pareto.gp",
-         {{"files", join_words(files)},
-          {"titles", join_words(titles)},
-          {"front", out_path(o, "data/joined_beam_dynamic_front.dat")},
-          {"plottitle", "Joined beam 0–" + seconds_text(w.end_time) +
-                            ": time error vs CPU time (every combination, Δt and IDA tolerance)"},
-          {"outbase", out_path(o, "joined-beam-dynamics")}});
-    md << "![joined-beam-dynamics.png](joined-beam-dynamics.png)\n\n";
-    sweep_table(points, md);
-    out["points"] = nlohmann::json::array();
-    for (const DynamicPoint& p : points) out["points"].push_back(point_json(p));
+                          {"end_time", base.end_time},
+                          {"output_interval", base.output_interval},
+                          {"elements_per_member", base.elements},
+                          {"follower_vs_dead", load_difference},
+                          {"loads", nlohmann::json::object()}};
+    for (LoadStudy& l : loads) {
+        plot_panels(
+            o, l.figure,
+            {{"xcol", "3"},
+             {"ycol", "4"},
+             {"xlabel", "thread CPU time of the run, median of repeats [s]"},
+             {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
+             {"plottitle", "Joined beam, " + l.load + " load, 0–" + seconds_text(base.end_time) +
+                               ": time error vs CPU time, one panel per formulation and "
+                               "integrator, the Pareto front of all runs in every panel"},
+             {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
+             {"logx", "1"},
+             {"logy", "1"},
+             {"extra", out_path(o, l.front_file)},
+             {"extratitle", "Pareto front (all runs)"}});
+        md << l.md.str();
+        out["loads"][l.load] = l.json;
+    }
     write_text(o, "study-joined-beam-dynamics.md", md.str());
     write_text(o, "study-joined-beam-dynamics.json", out.dump(1) + "\n");
     return out;

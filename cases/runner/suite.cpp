@@ -248,7 +248,7 @@ int command_suite(const Args& args) {
     // The studies (issue 12) belong to the main job: on by default for the whole catalog, off
     // for a --cases selection unless --studies asks for them.
     const bool studies = !a.has("no-studies") && (a.has("studies") || !a.has("cases"));
-    if (studies) run_suite_studies(StudyOptions{out, a.has("quick")}, jobs);
+    if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);
     std::vector<std::string> files;
     for (const PlannedRun& r : runs) files.push_back(r.output);
     write_report(out, files);

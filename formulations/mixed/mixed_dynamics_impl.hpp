@@ -144,6 +144,13 @@ void MixedDynamics<P>::evaluate(double t, const VecX& x, const VecX& xdot, VecX&
         assemble_element(e, t, x, xdot, residual, J_x, J_xdot);
     }
     add_point_loads(t, x, residual, J_x);
+    // The follower point loads' stiffness blocks add_point_loads assembled (free nodes only).
+    if (J_x != nullptr) {
+        for (const PointLoad& load : model_.point_loads) {
+            if (load.frame == LoadFrame::follower && !layout_.supported(load.point))
+                ++counters_.follower_stiffness;
+        }
+    }
 }
 
 template <param::RotationParameterization P>

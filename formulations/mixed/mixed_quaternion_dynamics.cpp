@@ -217,6 +217,13 @@ requires(P::kSize == 4) void MixedQuaternionDynamics<P>::evaluate(double t, cons
         add_node_terms(e, t, x, residual, J_x);
     }
     add_point_loads(t, x, residual, J_x);
+    // The follower point loads' stiffness blocks add_point_loads assembled (free nodes only).
+    if (J_x != nullptr) {
+        for (const PointLoad& load : model_.point_loads) {
+            if (load.frame == LoadFrame::follower && !supported(load.point))
+                ++counters_.follower_stiffness;
+        }
+    }
     if (layout_.free_norm) {
         // A free tree: ½(|q̂_0|² − 1) = 0 fixes the norm the Cayley relations carry to every node.
         const Params q0 = x.segment<K>(node_column(0) + 3);

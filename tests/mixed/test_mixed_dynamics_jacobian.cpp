@@ -124,4 +124,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(evaluation_allocates_nothing_after_first_call, P, 
     BOOST_TEST(dyn.counters().inertial_terms == 3L * nb.elements);
 }
 
+// The counters say which terms a scene needs (issue 12 item 5): a follower point load's stiffness
+// block is counted at every Jacobian, a dead one's never (they used to count 0 for both).
+BOOST_AUTO_TEST_CASE_TEMPLATE(follower_point_load_stiffness_is_counted, P, Parameterizations) {
+    Model m = test::dynamic_test_model();
+    m.distributed_loads.erase(m.distributed_loads.begin());  // the follower distributed load
+    form::MixedDynamics<P> follower(m, 1.0);
+    m.point_loads.at(0).frame = LoadFrame::dead;
+    form::MixedDynamics<P> dead(m, 1.0);
+    for (form::MixedDynamics<P>* dyn : {&follower, &dead}) {
+        VecX x, xd, r;
+        moving_state(*dyn, x, xd);
+        SparseMatrix Jx, Jxd;
+        dyn->evaluate(0.1, x, xd, r, &Jx, &Jxd);
+        dyn->evaluate(0.2, x, xd, r, &Jx, &Jxd);
+        dyn->evaluate(0.3, x, xd, r, nullptr, nullptr);
+    }
+    BOOST_TEST(follower.counters().follower_stiffness == 2);
+    BOOST_TEST(dead.counters().follower_stiffness == 0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

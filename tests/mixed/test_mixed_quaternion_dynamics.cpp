@@ -176,6 +176,25 @@ BOOST_AUTO_TEST_CASE(evaluation_allocates_nothing_after_first_call) {
     BOOST_TEST(dyn.counters().inertial_terms == 3L * dyn.element_count());
 }
 
+// A follower point load's stiffness block is counted at every Jacobian, a dead one's never.
+BOOST_AUTO_TEST_CASE(follower_point_load_stiffness_is_counted) {
+    Model m = test::dynamic_test_model();
+    m.distributed_loads.erase(m.distributed_loads.begin());  // the follower distributed load
+    Dynamics follower(m, 1.0);
+    m.point_loads.at(0).frame = LoadFrame::dead;
+    Dynamics dead(m, 1.0);
+    for (Dynamics* dyn : {&follower, &dead}) {
+        VecX x, xd, r;
+        moving_state(*dyn, x, xd);
+        SparseMatrix Jx, Jxd;
+        dyn->evaluate(0.1, x, xd, r, &Jx, &Jxd);
+        dyn->evaluate(0.2, x, xd, r, &Jx, &Jxd);
+        dyn->evaluate(0.3, x, xd, r, nullptr, nullptr);
+    }
+    BOOST_TEST(follower.counters().follower_stiffness == 2);
+    BOOST_TEST(dead.counters().follower_stiffness == 0);
+}
+
 // A start far from consistency (reference configuration, rigid initial velocity, loads on at
 // t₀ = 0.4): IDACalcIC on the initial-condition chart (the largest component of each element q
 // algebraic) and the shared Newton on the same chart give the same consistent state; the rotations
