@@ -104,19 +104,34 @@ BOOST_AUTO_TEST_CASE(dynamic_steps_of_the_formulation_allocate_nothing_after_the
     BOOST_TEST(allocations_in_dynamic_steps<param::RotationVector>() == 0);
 }
 
+// The moving test structure with dead loads (no follower stiffness) and twelve generalized-α
+// steps: the runs of the two whole-step tests below.
+namespace {
+
+Model dead_loaded_moving_model() {
+    Model m = test::moving_model(3, 3, false);
+    m.point_loads[0].frame = LoadFrame::dead;
+    m.distributed_loads[0].frame = LoadFrame::dead;
+    return m;
+}
+
+TimeIntegrationSettings twelve_steps() {
+    TimeIntegrationSettings ts;
+    ts.time_step = 1e-3;
+    ts.end_time = 12e-3;
+    ts.rho_infinity = 0.8;
+    return ts;
+}
+
+}  // namespace
+
 // A whole time step through run_generalized_alpha: the formulation's part above plus the shared
 // solve_newton with its NewtonWorkspace kept for the run (vectors, Jacobian, KLU refactored in
 // place: core/sparse_lu.hpp) allocates nothing after the first step, whatever the number of
 // Newton iterations.
 BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
-    Model m = test::moving_model(3, 3, false);
-    m.point_loads[0].frame = LoadFrame::dead;
-    m.distributed_loads[0].frame = LoadFrame::dead;
-    form::DisplacementDynamics<param::Quaternion> d(m);
-    TimeIntegrationSettings ts;
-    ts.time_step = 1e-3;
-    ts.end_time = 12e-3;
-    ts.rho_infinity = 0.8;
+    form::DisplacementDynamics<param::Quaternion> d(dead_loaded_moving_model());
+    const TimeIntegrationSettings ts = twelve_steps();
     std::vector<long> at_step;
     std::vector<int> iterations;
     at_step.reserve(32);
@@ -142,14 +157,8 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
 // every accepted step, after its output, with the cumulative counts the outcome reports; neither
 // notifying nor an installed observer that stores into reserved memory allocates.
 BOOST_AUTO_TEST_CASE(the_step_observer_sees_every_step_and_allocates_nothing) {
-    Model m = test::moving_model(3, 3, false);
-    m.point_loads[0].frame = LoadFrame::dead;
-    m.distributed_loads[0].frame = LoadFrame::dead;
-    form::DisplacementDynamics<param::Quaternion> d(m);
-    TimeIntegrationSettings ts;
-    ts.time_step = 1e-3;
-    ts.end_time = 12e-3;
-    ts.rho_infinity = 0.8;
+    form::DisplacementDynamics<param::Quaternion> d(dead_loaded_moving_model());
+    const TimeIntegrationSettings ts = twelve_steps();
     struct Seen {
         std::vector<StepProgress> progress;
         std::vector<long> allocations;
