@@ -78,7 +78,8 @@ std::vector<Mode> modes_from_ritz(const VecXc& theta, const Eigen::MatrixXcd& ve
     return out;
 }
 
-DaeModalSolution pack(std::vector<Mode> modes, int count, const std::string& solver) {
+DaeModalSolution pack(const SparseMatrix& A, const SparseMatrix& B, std::vector<Mode> modes,
+                      int count, const std::string& solver) {
     if (static_cast<int>(modes.size()) < count) {
         std::ostringstream m;
         m << "modal analysis (" << solver << "): only " << modes.size()
@@ -91,11 +92,17 @@ DaeModalSolution pack(std::vector<Mode> modes, int count, const std::string& sol
         s.frequencies_hz.push_back(m.s.imag() / (2.0 * kPi));
         s.growth_rates.push_back(m.s.real());
         s.shapes.push_back(m.shape);
+        s.checks.push_back(check_general_pair(A, -B, m.s, m.shape, false));
     }
     return s;
 }
 
 }  // namespace
+
+bool DaeModalSolution::accepted() const {
+    return std::all_of(checks.begin(), checks.end(),
+                       [](const EigenpairCheck& c) { return c.accepted; });
+}
 
 DaeModalSolution solve_dae_modal(const SparseMatrix& A, const SparseMatrix& B, int count,
                                  double shift) {
@@ -115,8 +122,8 @@ DaeModalSolution solve_dae_modal(const SparseMatrix& A, const SparseMatrix& B, i
         throw SolverError("modal analysis: Arnoldi (Spectra GenEigsSolver) did not converge (" +
                           std::to_string(nconv) + " of " + std::to_string(nev) + " Ritz pairs)");
     }
-    DaeModalSolution s =
-        pack(modes_from_ritz(eigs.eigenvalues(), eigs.eigenvectors(), shift), count, "Arnoldi");
+    DaeModalSolution s = pack(A, B, modes_from_ritz(eigs.eigenvalues(), eigs.eigenvectors(), shift),
+                              count, "Arnoldi");
     s.arnoldi_vectors = ncv;
     s.converged = nconv;
     return s;
@@ -129,7 +136,7 @@ DaeModalSolution solve_dae_modal_dense(const SparseMatrix& A, const SparseMatrix
     const MatX C = lu.solve(MatX(B));
     const Eigen::EigenSolver<MatX> es(C, true);
     if (es.info() != Eigen::Success) throw SolverError("modal analysis: dense QR did not converge");
-    return pack(modes_from_ritz(es.eigenvalues(), es.eigenvectors(), shift), count, "dense");
+    return pack(A, B, modes_from_ritz(es.eigenvalues(), es.eigenvectors(), shift), count, "dense");
 }
 
 Model frozen_loads(const Model& model, double lambda, double t) {
