@@ -50,9 +50,8 @@ std::vector<int> match_modes(const std::vector<std::vector<double>>& reference,
                                static_cast<int>(c));
         }
     }
-    std::sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) {
-        return std::get<0>(x) > std::get<0>(y);
-    });
+    std::sort(pairs.begin(), pairs.end(),
+              [](const auto& x, const auto& y) { return std::get<0>(x) > std::get<0>(y); });
     std::vector<int> match(reference.size(), -1);
     std::vector<bool> used(candidates.size(), false);
     for (const auto& [mac, r, c] : pairs) {

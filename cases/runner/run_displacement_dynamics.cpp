@@ -3,8 +3,6 @@
 #include <iostream>
 
 #include "analyses.hpp"
-#include "modal_checks.hpp"
-#include "mode_matching.hpp"
 #include "core/errors.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
@@ -12,6 +10,8 @@
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "modal_checks.hpp"
+#include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 
 namespace rotbeam {
@@ -36,8 +36,8 @@ nlohmann::json mode_json(const Model& model, const form::Mesh& mesh, const VecX&
         const int node = mesh.point_node[i];
         const int dof = node < 0 ? -1 : mesh.nodes[static_cast<size_t>(node)].dof;
         const VecX zero = VecX::Zero(6);
-        const Eigen::Ref<const VecX> s = dof < 0 ? Eigen::Ref<const VecX>(zero)
-                                                 : Eigen::Ref<const VecX>(v.segment(dof, 6));
+        const Eigen::Ref<const VecX> s =
+            dof < 0 ? Eigen::Ref<const VecX>(zero) : Eigen::Ref<const VecX>(v.segment(dof, 6));
         points[model.points[i].name] = {{"displacement", vec3(s.head(3))},
                                         {"rotation", vec3(s.tail(3))}};
     }
@@ -59,8 +59,8 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
             for (size_t i = 0; i < model.points.size(); ++i) {
                 states[i] = problem.point_state(static_cast<int>(i));
             }
-            result["steps"].push_back(
-                step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, unwrapper));
+            result["steps"].push_back(step_json(model, s.load_factor, std::nullopt,
+                                                s.newton_iterations, states, unwrapper));
         });
         if (out.status != SolveStatus::converged) {
             result["status"] = to_string(out.status);

@@ -6,8 +6,6 @@
 #include <type_traits>
 
 #include "analyses.hpp"
-#include "modal_checks.hpp"
-#include "mode_matching.hpp"
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
@@ -16,6 +14,8 @@
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
+#include "modal_checks.hpp"
+#include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 
 namespace rotbeam {

@@ -63,8 +63,8 @@ constexpr int kComputedModes = kModes + 3;
 ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) {
     ModalSeries s;
     s.label = comb.formulation + "/" + comb.rotation + "/" + r.name;
-    std::vector<std::vector<double>> computed;                 // per mesh: frequencies
-    std::vector<std::vector<std::vector<double>>> shapes;      // per mesh, per mode: stations
+    std::vector<std::vector<double>> computed;             // per mesh: frequencies
+    std::vector<std::vector<std::vector<double>>> shapes;  // per mesh, per mode: stations
     for (size_t i = 0; i < r.elements.size(); ++i) {
         std::vector<std::string> o = {"analysis.modes=" + std::to_string(kComputedModes)};
         if (comb.formulation == "displacement") {

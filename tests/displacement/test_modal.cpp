@@ -86,10 +86,17 @@ BOOST_AUTO_TEST_SUITE(displacement_modal)
 BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
     const std::vector<double> oracle = timoshenko_hz(4);
     for (int p : {2, 4, 6, 8}) {
-        BOOST_TEST_MESSAGE("p = " << p << ": consistent " << worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, p, "consistent"), 8), oracle)
-                                  << ", lumped " << worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, p, "lumped"), 8), oracle));
+        BOOST_TEST_MESSAGE("p = " << p << ": consistent "
+                                  << worst_pair_error(modes_of<param::Quaternion>(
+                                                          steel_cantilever(8, p, "consistent"), 8),
+                                                      oracle)
+                                  << ", lumped "
+                                  << worst_pair_error(modes_of<param::Quaternion>(
+                                                          steel_cantilever(8, p, "lumped"), 8),
+                                                      oracle));
     }
-    const form::ModalSolution q = modes_of<param::Quaternion>(steel_cantilever(8, 6, "consistent"), 8);
+    const form::ModalSolution q =
+        modes_of<param::Quaternion>(steel_cantilever(8, 6, "consistent"), 8);
     const form::ModalSolution l = modes_of<param::Quaternion>(steel_cantilever(8, 6, "lumped"), 8);
     const form::ModalSolution v =
         modes_of<param::RotationVector>(steel_cantilever(8, 6, "consistent"), 8);
@@ -99,8 +106,10 @@ BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
     BOOST_TEST(worst_pair_error(q, oracle) <= 1e-7);
     BOOST_TEST(worst_pair_error(l, oracle) <= 1e-7);
     BOOST_TEST(worst_pair_error(v, oracle) <= 1e-7);
-    const double p2 = worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 8), oracle);
-    const double p4 = worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, 4, "consistent"), 8), oracle);
+    const double p2 = worst_pair_error(
+        modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 8), oracle);
+    const double p4 = worst_pair_error(
+        modes_of<param::Quaternion>(steel_cantilever(8, 4, "consistent"), 8), oracle);
     BOOST_TEST(p2 / p4 > 100.0);
 }
 
@@ -109,10 +118,10 @@ BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
 BOOST_AUTO_TEST_CASE(every_mass_rule_converges_at_order_two_with_linear_elements) {
     const std::vector<double> oracle = timoshenko_hz(2);
     for (const std::string rule : {"consistent", "midpoint", "lumped"}) {
-        const double coarse = worst_pair_error(
-            modes_of<param::Quaternion>(steel_cantilever(16, 1, rule), 4), oracle);
-        const double fine = worst_pair_error(
-            modes_of<param::Quaternion>(steel_cantilever(32, 1, rule), 4), oracle);
+        const double coarse =
+            worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(16, 1, rule), 4), oracle);
+        const double fine =
+            worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(32, 1, rule), 4), oracle);
         BOOST_TEST_MESSAGE(rule << ": error 16 el " << coarse << ", 32 el " << fine);
         BOOST_TEST(coarse / fine >= 3.5);
         BOOST_TEST(fine <= 1e-2);
@@ -145,9 +154,9 @@ BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
     // approach each other until they coalesce at flutter.
     const form::ModalSolution unloaded =
         modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 4);
-    BOOST_TEST_MESSAGE("Beck column, P L²/EI = 0.29: " << unloaded.frequencies_hz[0] << " → "
-                       << s.frequencies_hz[0] << " Hz, " << unloaded.frequencies_hz[2] << " → "
-                       << s.frequencies_hz[2] << " Hz");
+    BOOST_TEST_MESSAGE("Beck column, P L²/EI = 0.29: "
+                       << unloaded.frequencies_hz[0] << " → " << s.frequencies_hz[0] << " Hz, "
+                       << unloaded.frequencies_hz[2] << " → " << s.frequencies_hz[2] << " Hz");
     BOOST_TEST(s.frequencies_hz[0] > unloaded.frequencies_hz[0]);
     BOOST_TEST(s.frequencies_hz[2] < unloaded.frequencies_hz[2]);
 }
@@ -156,10 +165,10 @@ BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
 // in the model after loading (the loader refuses `midpoint` above order 1, which the first test
 // below bypasses on purpose).
 Model joined_beam(int elements, int order, const std::string& mass_rule) {
-    Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/joined-beam.yaml",
-                        {"discretization.formulation=displacement",
-                         "discretization.order=" + std::to_string(order),
-                         "discretization.mass_rule=consistent"});
+    Model m = load_case(
+        std::string(ROTBEAM_SOURCE_DIR) + "/cases/joined-beam.yaml",
+        {"discretization.formulation=displacement", "discretization.order=" + std::to_string(order),
+         "discretization.mass_rule=consistent"});
     for (Member& member : m.members) member.elements = elements;
     m.discretization.mass_rule = mass_rule;
     return m;
@@ -181,8 +190,8 @@ BOOST_AUTO_TEST_CASE(a_singular_mass_never_gives_an_accepted_wrong_frequency) {
         try {
             const form::ModalSolution s = modes_of<param::Quaternion>(model, 5);
             BOOST_TEST_MESSAGE("midpoint mass, p = " << p << ": first pair ω² = "
-                               << s.pairs[0].omega2.real() << ", "
-                               << describe(s.pairs[0].check));
+                                                     << s.pairs[0].omega2.real() << ", "
+                                                     << describe(s.pairs[0].check));
             for (size_t k = 0; k < s.pairs.size(); ++k) {
                 if (!s.pairs[k].check.accepted) continue;
                 // An accepted pair is an eigenvalue of this (singular-mass) pencil to 1e-8: it
