@@ -2,9 +2,13 @@
 // the modal assurance criterion (MAC), not by sort order: two meshes (or formulations) may order
 // close frequencies differently, and a coarse mesh may miss a mode.
 //
-// Stations: on every member, 9 points at chord fractions 0, 1/8, …, 1 of its end points; each
-// takes the displacement amplitude of the node nearest to it in the reference configuration
-// (a supported node: zero). Translations only (the rotations have other units). A mode's
+// Stations: on every member, 9 points at chord fractions 0, 1/8, …, 1 of its end points. On a
+// straight member (its nodes on the chord) each station interpolates the nodal displacement
+// amplitudes linearly between the two nodes around it; on a curved member it takes the nearest
+// node's. A supported node's amplitude is zero. A mesh too coarse to resolve a mode (one or two
+// elements per member) may pair it with a higher mode of similar station pattern or leave it
+// unmatched: the pairing is as good as the shapes the mesh can represent.
+// Translations only (the rotations have other units). A mode's
 // `stations` in the result JSON is that list, 3 numbers per station, members in order.
 //
 // MAC(a, b) = |aᴴb|² / (aᴴa · bᴴb) ∈ [0, 1]: 1 for proportional shapes, 0 for orthogonal ones.

@@ -28,10 +28,10 @@ BOOST_AUTO_TEST_CASE(modes_are_matched_by_shape_not_by_order) {
     BOOST_TEST(m[2] == -1);
 }
 
-// Stations sample the nearest node: a member from (0,0,0) to (8,0,0) with nodes at x = 0, 4, 8
-// whose displacement is x e_z gives 0, 0, 0, 4, 4, 4, 4, 8, 8 at x = 0, 1, …, 8 (a station
-// midway between two nodes takes the first listed).
-BOOST_AUTO_TEST_CASE(stations_take_the_nearest_node) {
+// Stations interpolate linearly between the nodes of a straight member: a member from (0,0,0) to
+// (8,0,0) with nodes at x = 0, 4, 8 (listed out of order) whose displacement is x² e_z gives
+// 0, 4, 8, 12, 16, 28, 40, 52, 64 at x = 0, 1, …, 8. A node off the member does not enter.
+BOOST_AUTO_TEST_CASE(stations_interpolate_along_a_straight_member) {
     Model model;
     model.points = {{"a", Vec3::Zero()}, {"b", Vec3(8, 0, 0)}};
     Member member;
@@ -39,12 +39,13 @@ BOOST_AUTO_TEST_CASE(stations_take_the_nearest_node) {
     member.end_point = 1;
     model.members = {member};
     std::vector<NodeDisplacement> nodes;
-    for (double x : {0.0, 4.0, 8.0}) nodes.push_back({Vec3(x, 0, 0), Vec3(0, 0, x)});
+    for (double x : {4.0, 0.0, 8.0}) nodes.push_back({Vec3(x, 0, 0), Vec3(0, 0, x * x)});
+    nodes.push_back({Vec3(1, 1, 0), Vec3(0, 0, 1e3)});
     const std::vector<double> s = station_displacements(model, nodes);
     BOOST_TEST_REQUIRE(s.size() == 3u * kModeStationsPerMember);
-    const double expected[kModeStationsPerMember] = {0, 0, 0, 4, 4, 4, 4, 8, 8};
+    const double expected[kModeStationsPerMember] = {0, 4, 8, 12, 16, 28, 40, 52, 64};
     for (int k = 0; k < kModeStationsPerMember; ++k) {
-        BOOST_TEST(s[3 * k + 2] == expected[k]);
+        BOOST_TEST(std::abs(s[3 * k + 2] - expected[k]) < 1e-12);
         BOOST_TEST(s[3 * k] == 0.0);
     }
 }
