@@ -240,4 +240,40 @@ BOOST_AUTO_TEST_CASE(joined_beam_frequencies_are_checked_and_converge_for_every_
     }
 }
 
+// Beck's column past its flutter load (compressive follower tip force 20.05 EI/L² ≈ 3.51 kN for
+// this cantilever; 5 kN here): the first two bending frequencies of each plane have coalesced into
+// a complex pair ω², reported once (one of each conjugate pair) with its growth rate, its checks
+// passed — a complex eigenvalue reported as such, not dropped and not turned into a real frequency.
+BOOST_AUTO_TEST_CASE(past_the_flutter_load_a_complex_pair_is_reported_with_its_growth_rate) {
+    Model model = steel_cantilever(8, 2, "consistent");
+    PointLoad f;
+    f.point = 1;
+    f.force = Vec3(-5000.0, 0.0, 0.0);
+    f.frame = LoadFrame::follower;
+    model.point_loads = {f};
+    form::DisplacementStatics<param::Quaternion> problem(model);
+    const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
+    BOOST_TEST_REQUIRE((eq.status == SolveStatus::converged));
+    VecX r;
+    SparseMatrix K;
+    problem.evaluate(r, &K);
+    const SparseMatrix M = form::assemble_mass_matrix(
+        model, form::build_mass_mesh(model),
+        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
+    const form::ModalSolution s = form::solve_modal(K, M, 4);
+    BOOST_TEST(!s.symmetric);
+    BOOST_TEST(s.accepted());
+    int complex_pairs = 0;
+    for (const form::ModalPair& p : s.pairs) {
+        BOOST_TEST_MESSAGE("ω² = " << p.omega2 << ", f = " << p.frequency_hz << " Hz, growth rate "
+                                   << p.growth_rate << " 1/s, " << describe(p.check));
+        if (std::abs(p.omega2.imag()) > 1e-6 * std::abs(p.omega2)) {
+            ++complex_pairs;
+            BOOST_TEST(p.growth_rate > 0.0);
+            BOOST_TEST(p.frequency_hz > 0.0);
+        }
+    }
+    BOOST_TEST(complex_pairs >= 2);  // one coalesced pair in each bending plane
+}
+
 BOOST_AUTO_TEST_SUITE_END()
