@@ -78,6 +78,7 @@ Model load_with_options(const std::string& command, const std::string& path,
 // A modal run's modes: frequency (or why it is not reported), growth rate and the checks.
 void print_modes(const nlohmann::json& r, std::ostream& os) {
     if (!r.contains("modes")) return;
+    const std::streamsize precision = os.precision();
     int k = 0;
     for (const auto& m : r["modes"]) {
         ++k;
@@ -89,8 +90,8 @@ void print_modes(const nlohmann::json& r, std::ostream& os) {
                << m["s"][1].get<double>() << "i)";
         }
         const auto& c = m["check"];
-        os << std::setprecision(2) << std::scientific
-           << "  growth rate " << m.value("growth_rate", 0.0) << " 1/s, backward error "
+        os << std::setprecision(2) << std::scientific << "  growth rate "
+           << m.value("growth_rate", 0.0) << " 1/s, backward error "
            << c["backward_error"].get<double>();
         if (c.contains("error_bound")) os << ", error bound " << c["error_bound"].get<double>();
         if (c.contains("mass_orthogonality"))
@@ -100,6 +101,7 @@ void print_modes(const nlohmann::json& r, std::ostream& os) {
         if (c.contains("failed")) os << "  REJECTED (" << c["failed"].get<std::string>() << ")";
         os << std::defaultfloat << "\n";
     }
+    os.precision(precision);
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
