@@ -115,7 +115,14 @@ std::vector<std::string> discretization_overrides(const Settings& s) {
     return overrides;
 }
 
-GateRuns::Entry& GateRuns::entry(const Settings& s) {
+GateRuns::GateRuns(std::string case_path)
+    : path_(std::move(case_path)), base_(load_case(path_, {}, CaseParts::case_file)) {}
+
+GateRuns::Entry& GateRuns::entry(const Settings& wanted) {
+    Settings s;
+    for (const auto& [key, value] : wanted) {
+        if (model_setting(base_, key) != value) s[key] = value;
+    }
     Entry& e = entries_[s];
     if (e.loaded) return e;
     e.loaded = true;

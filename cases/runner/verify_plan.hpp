@@ -34,11 +34,12 @@ std::string settings_label(const Settings& s);
 // The --set overrides of the discretization keys (elements is set on the members, not here).
 std::vector<std::string> discretization_overrides(const Settings& s);
 
-// One case's runs, each discretization run once. A discretization the program refuses
-// (InputError) comes back as {"status": "unavailable", "available": false, "message": ...}.
+// One case's runs, each discretization run once (settings that the case already has do not make
+// another run). A discretization the program refuses (InputError) comes back as
+// {"status": "unavailable", "available": false, "message": ...}.
 class GateRuns {
   public:
-    explicit GateRuns(std::string case_path) : path_(std::move(case_path)) {}
+    explicit GateRuns(std::string case_path);
     // The model of that discretization; nullptr when the program refuses it.
     const Model* model(const Settings& s);
     const nlohmann::json& result(const Settings& s);
@@ -52,6 +53,7 @@ class GateRuns {
     };
     Entry& entry(const Settings& s);
     std::string path_;
+    Model base_;  // the case as written: settings equal to its own are dropped from a run's key
     std::map<Settings, Entry> entries_;
 };
 
