@@ -90,8 +90,9 @@ std::vector<double> computed_values(const Model& model, const nlohmann::json& re
 }
 
 std::string format_vector(const std::vector<double>& v) {
+    // Ten digits: the tightest tolerances (1e-9 on values of order 10) must be visible.
     std::ostringstream s;
-    s << std::setprecision(6);
+    s << std::setprecision(10);
     if (v.size() == 1) {
         s << v[0];
         return s.str();
