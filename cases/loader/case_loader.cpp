@@ -165,9 +165,10 @@ void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& m
 }
 
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
-    r.expect_map(root, "",
-                 {"name", "description", "units", "points", "sections", "members", "constraints",
-                  "loads", "gravity", "analysis", "discretization", "solver", "references"});
+    r.expect_map(
+        root, "",
+        {"name", "description", "units", "points", "sections", "members", "constraints", "loads",
+         "gravity", "analysis", "discretization", "solver", "references", "expected_stops"});
     Model model;
     model.name =
         root["name"] ? r.string(root["name"], "name") : std::filesystem::path(file).stem().string();
@@ -238,7 +239,12 @@ std::string read_text_file(const std::string& path, const char* what) {
 }
 
 bool sets_references(const std::string& override_text) {
-    return override_text.rfind("references.", 0) == 0 || override_text.rfind("references=", 0) == 0;
+    for (const char* block : {"references", "expected_stops"}) {
+        const std::string b(block);
+        if (override_text.rfind(b + ".", 0) == 0 || override_text.rfind(b + "=", 0) == 0)
+            return true;
+    }
+    return false;
 }
 
 // The published references file (a mapping with the one key `references`, the same block a case
@@ -260,9 +266,10 @@ void read_published_references(const std::string& file, const std::vector<std::s
     }
     YamlReader reader(file, overridden);
     reader.index_lines(root);
-    reader.expect_map(root, "", {"references"});
-    if (!model.references.empty()) {
-        reader.fail(root["references"], "references",
+    reader.expect_map(root, "", {"references", "expected_stops"});
+    if (!model.references.empty() || !model.expected_stops.empty()) {
+        const char* block = root["references"] ? "references" : "expected_stops";
+        reader.fail(root[block], block,
                     "the case " + case_file + " has a references block of its own; keep one");
     }
     try {
