@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/so3.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -277,9 +278,7 @@ PointState DisplacementStatics<P>::point_state(int point_index) const {
 
 template <param::RotationParameterization P>
 double DisplacementStatics<P>::max_rotation_angle() const {
-    double m = 0.0;
-    for (const Params& p : p_) m = std::max(m, P::angle(p));
-    return m;
+    return largest_continued_angle(model_, rotation_stations());
 }
 
 template <param::RotationParameterization P>

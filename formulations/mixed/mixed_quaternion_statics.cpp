@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "formulations/mixed/mixed_load_fields.hpp"
 #include "parameterizations/quaternion.hpp"
@@ -206,11 +207,32 @@ const {
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) double MixedQuaternionStatics<P>::max_rotation_angle() const {
-    double angle = 0.0;
+    return largest_continued_angle(model_, rotation_stations());
+}
+
+// Start node, then per element its q_i and its end node (elements are numbered member by member
+// in arc-length order, mixed_layout.cpp). Every rotation is C(q)/|q|².
+template <param::RotationParameterization P>
+requires(P::kSize == 4)
+    std::vector<StaticProblem::RotationStation> MixedQuaternionStatics<P>::rotation_stations()
+const {
+    std::vector<RotationStation> out;
+    Vec3 u_hat;
+    Params q_hat;
     for (int e = 0; e < layout_.base.element_count(); ++e) {
-        angle = std::max(angle, P::angle(x_.segment<K>(layout_.element_column(e) + 3)));
+        const MixedElement& el = layout_.base.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) {
+            node_motion(el.start_node, u_hat, q_hat);
+            out.push_back({el.member, true, P::matrix(q_hat)});
+        }
+        const MixedHomogeneousState<K> st = element_state(e);
+        const Vec6 strain = el.S * (Vec6() << st.F, st.M).finished();
+        const Vec3 kappa = strain.tail<3>();
+        out.push_back({el.member, false, P::matrix(st.q), el.length * (el.Cab * kappa)});
+        node_motion(el.end_node, u_hat, q_hat);
+        out.push_back({el.member, true, P::matrix(q_hat)});
     }
-    return angle;
+    return out;
 }
 
 template <param::RotationParameterization P>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 
@@ -167,11 +168,29 @@ PointState MixedStatics<P>::point_state(int point_index) const {
 
 template <param::RotationParameterization P>
 double MixedStatics<P>::max_rotation_angle() const {
-    double angle = 0.0;
+    return largest_continued_angle(model_, rotation_stations());
+}
+
+// Start node, then per element its rotation c_i and its end node (elements are numbered member by
+// member in arc-length order, mixed_layout.cpp).
+template <param::RotationParameterization P>
+std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations() const {
+    std::vector<RotationStation> out;
+    Vec3 u_hat, c_hat;
     for (int e = 0; e < layout_.element_count(); ++e) {
-        angle = std::max(angle, P::angle(x_.segment<3>(layout_.element_offset(e) + 3)));
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) {
+            node_motion(el.start_node, u_hat, c_hat);
+            out.push_back({el.member, true, P::matrix(c_hat)});
+        }
+        const MixedElementState st = element_state(e);
+        const Vec6 strain = el.S * (Vec6() << st.F, st.M).finished();
+        const Vec3 kappa = strain.tail<3>();
+        out.push_back({el.member, false, P::matrix(st.c), el.length * (el.Cab * kappa)});
+        node_motion(el.end_node, u_hat, c_hat);
+        out.push_back({el.member, true, P::matrix(c_hat)});
     }
-    return angle;
+    return out;
 }
 
 template <param::RotationParameterization P>
