@@ -88,8 +88,8 @@ public:
     virtual void set_load_factor(double lambda) = 0;
     virtual PointState point_state(int point_index) const = 0;
     virtual AssemblyCounters counters() const = 0;
-    // Largest rotation angle [rad] in the state, continued along the beam from the root
-    // (core/beam_rotation.hpp; for messages).
+    // Largest rotation angle [rad] held in the state's parameters (for messages and tests; the
+    // messages also give the largest angle continued along the beam, core/beam_rotation.hpp).
     virtual double max_rotation_angle() const { return 0.0; }
     // Section resultants along the members at the formulation's natural stations (mixed: element
     // mid-points, where F and M are unknowns); empty when the formulation does not provide them.

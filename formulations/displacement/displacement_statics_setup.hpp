@@ -278,14 +278,19 @@ PointState DisplacementStatics<P>::point_state(int point_index) const {
 
 template <param::RotationParameterization P>
 double DisplacementStatics<P>::max_rotation_angle() const {
-    return largest_continued_angle(model_, rotation_stations());
+    double m = 0.0;
+    for (const Params& p : p_) m = std::max(m, P::angle(p));
+    return m;
 }
 
 template <param::RotationParameterization P>
 std::string DisplacementStatics<P>::describe_state() const {
     std::ostringstream s;
     const double phi = max_rotation_angle();
-    s << "largest nodal rotation " << phi << " rad (" << P::kName << ")";
+    // The angle continued along the beam (a closed roll-up: 2π), not a node's parameter angle (π
+    // after a rescale).
+    s << "largest nodal rotation " << largest_continued_angle(model_, rotation_stations())
+      << " rad (" << P::kName << ")";
     // Issue 5 point 3: with `direct` interpolation the nodal parameters are interpolated as they
     // are, so rescaling one node (WM: complementary parameters; rotation vector: −2π) would put
     // it in another chart than its neighbours. It is not done; say so where it would have been.

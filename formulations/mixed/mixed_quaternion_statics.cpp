@@ -207,7 +207,11 @@ const {
 
 template <param::RotationParameterization P>
 requires(P::kSize == 4) double MixedQuaternionStatics<P>::max_rotation_angle() const {
-    return largest_continued_angle(model_, rotation_stations());
+    double angle = 0.0;
+    for (int e = 0; e < layout_.base.element_count(); ++e) {
+        angle = std::max(angle, P::angle(x_.segment<K>(layout_.element_column(e) + 3)));
+    }
+    return angle;
 }
 
 // Start node, then per element its q_i and its end node (elements are numbered member by member
@@ -257,8 +261,9 @@ requires(P::kSize == 4) std::string MixedQuaternionStatics<P>::describe_state()
 const {
     const QuaternionNormDrift d = norm_drift();
     std::ostringstream s;
-    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest element rotation "
-      << max_rotation_angle() << " rad, max ||q| - 1|: nodes " << d.nodes
+    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest rotation "
+      << largest_continued_angle(model_, rotation_stations())
+      << " rad (continued along the beam), max ||q| - 1|: nodes " << d.nodes
       << ", elements (midpoint averages, O(dL^2)) " << d.elements;
     return s.str();
 }

@@ -168,7 +168,11 @@ PointState MixedStatics<P>::point_state(int point_index) const {
 
 template <param::RotationParameterization P>
 double MixedStatics<P>::max_rotation_angle() const {
-    return largest_continued_angle(model_, rotation_stations());
+    double angle = 0.0;
+    for (int e = 0; e < layout_.element_count(); ++e) {
+        angle = std::max(angle, P::angle(x_.segment<3>(layout_.element_offset(e) + 3)));
+    }
+    return angle;
 }
 
 // Start node, then per element its rotation c_i and its end node (elements are numbered member by
@@ -196,7 +200,9 @@ std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations()
 template <param::RotationParameterization P>
 std::string MixedStatics<P>::describe_state() const {
     std::ostringstream s;
-    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest element rotation "
+    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest rotation "
+      << largest_continued_angle(model_, rotation_stations())
+      << " rad (continued along the beam), largest element parameter angle "
       << max_rotation_angle() << " rad";
     return s.str();
 }
