@@ -3,9 +3,9 @@
 // A mixed element relates its end nodes' rotations through its curvature κ (seed 002 Eq. 48): in
 // SO(3), R_b = R_a exp(ΔL C^ab κ) up to the element's discretization error, which is O(t³) for an
 // element turning by t = |ΔL κ| (the quaternion's Cayley step turns by 4 atan(t/4), short of t by
-// t³/48, docs/mixed-formulation.md). The
-// three-parameter charts (Rodrigues, WM, rotation vector) impose Eq. 48 on their parameters with
-// the tangent inverse H⁻¹ evaluated at the element's parameter mid-point. Past π the charts are
+// t³/48, docs/mixed-formulation.md). The three-parameter charts (Rodrigues, WM, rotation vector)
+// impose Eq. 48 on their parameters with the tangent inverse H⁻¹ evaluated at the element's
+// parameter mid-point. Past π the charts are
 // strongly distorted (the rotation vector's H⁻¹ scales the part of κ across ψ by (φ/2)cot(φ/2),
 // which changes sign at π and diverges at 2π), so with the axis varying along the beam the
 // constant of that O(t³) grows tenfold (measured on the precessing helix: defect ≈ 0.22 t³ for the
@@ -23,8 +23,11 @@
 // kMaxRelativeDefect = (π/2)²/48 ≈ 5.1 %: an element's kinematics may be as unfaithful to its
 // curvature as those of a quaternion element turning by π/2 about a fixed axis (the most a linear
 // element can be asked to resolve), no more. The bound is a property of the element, not of a
-// case: a quaternion element passes up to a turn of π/2 on any path, a three-parameter element
-// fails where its chart error, not its turn, dominates. The measured consequence on the
+// case: a quaternion element turning by less than π/2 passes (measured defect ≤ t³/48 on every
+// path tried), a three-parameter element fails where its chart error, not its turn, dominates.
+// Conservative case: WM with the continuous map is only C¹ at its switch angles (π, 3π, …), so
+// an element straddling one loses an order and may be stopped on a coarse mesh although the
+// answer is as accurate as the quaternion's (roll-up, 16 elements, λ = 3.5: docs/mixed-formulation.md). The measured consequence on the
 // precessing helix (continuum reference, tip error / L at κL = 2π, 3π, 4π): 16 elements, rotation
 // vector 0.071 (3.7 %, passes), 0.35 and 0.49 (stopped at 3π, 9.1 %); quaternion 0.037, 0.070,
 // 0.13 (at most 1.7 %, passes); 32 elements, rotation vector 0.018, 0.022, 0.046 (3.7 %, passes).
