@@ -27,10 +27,11 @@
 // path tried), a three-parameter element fails where its chart error, not its turn, dominates.
 // Conservative case: WM with the continuous map is only C¹ at its switch angles (π, 3π, …), so
 // an element straddling one loses an order and may be stopped on a coarse mesh although the
-// answer is as accurate as the quaternion's (roll-up, 16 elements, λ = 3.5: docs/mixed-formulation.md). The measured consequence on the
-// precessing helix (continuum reference, tip error / L at κL = 2π, 3π, 4π): 16 elements, rotation
-// vector 0.071 (3.7 %, passes), 0.35 and 0.49 (stopped at 3π, 9.1 %); quaternion 0.037, 0.070,
-// 0.13 (at most 1.7 %, passes); 32 elements, rotation vector 0.018, 0.022, 0.046 (3.7 %, passes).
+// answer is as accurate as the quaternion's (roll-up, 16 elements, λ = 3.5:
+// docs/mixed-formulation.md). The measured consequence on the precessing helix (continuum
+// reference, tip error / L at κL = 2π, 3π, 4π): 16 elements, rotation vector 0.071 (3.7 %, passes),
+// 0.35 and 0.49 (stopped at 3π, 9.1 %); quaternion 0.037, 0.070, 0.13 (at most 1.7 %, passes); 32
+// elements, rotation vector 0.018, 0.022, 0.046 (3.7 %, passes).
 #pragma once
 
 #include <optional>
