@@ -88,7 +88,8 @@ public:
     virtual void set_load_factor(double lambda) = 0;
     virtual PointState point_state(int point_index) const = 0;
     virtual AssemblyCounters counters() const = 0;
-    // Largest rotation angle [rad] held in the state (for messages).
+    // Largest rotation angle [rad] held in the state's parameters (for messages and tests; the
+    // messages also give the largest angle continued along the beam, core/beam_rotation.hpp).
     virtual double max_rotation_angle() const { return 0.0; }
     // Section resultants along the members at the formulation's natural stations (mixed: element
     // mid-points, where F and M are unknowns); empty when the formulation does not provide them.
@@ -100,6 +101,21 @@ public:
         Vec3 position = Vec3::Zero();
     };
     virtual std::vector<CenterlinePoint> centerline() const { return {}; }
+    // Rotations relative to the reference, R^c R^rᵀ, along each member from its start point to
+    // its end point in arc-length order: every node, and in the mixed formulation each element's
+    // rotation between its two nodes (`node` false). The reported rotation angle is continued
+    // along them from the root (core/beam_rotation.hpp), and the kinematic check
+    // (core/kinematic_check.hpp) compares neighbours; empty when the formulation does not provide them.
+    struct RotationStation {
+        int member = -1;
+        bool node = true;
+        Mat3 rotation = Mat3::Identity();
+        // Element stations: the rotation vector of the turn from the element's start node to its
+        // end node that the element's own curvature makes, ΔL C^ab κ (R_b = R_a exp of it, to the
+        // element's discretization error); zero where the formulation has no element curvature.
+        Vec3 turn = Vec3::Zero();
+    };
+    virtual std::vector<RotationStation> rotation_stations() const { return {}; }
 };
 
 }  // namespace rotbeam

@@ -11,16 +11,11 @@
 
 namespace rotbeam {
 
-Vec3 RotationUnwrapper::update(size_t i, const Mat3& R) {
-    previous_.at(i) = so3::unwrap_rotation_vector(so3::log_map(R), previous_[i]);
-    return previous_[i];
-}
-
 namespace {
 nlohmann::json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 }  // namespace
 
-nlohmann::json point_json(const PointState& state, const Vec3& unwrapped_rotation_vector) {
+nlohmann::json point_json(const PointState& state, const Vec3& continued_rotation_vector) {
     nlohmann::json R = nlohmann::json::array();
     for (int r = 0; r < 3; ++r) {
         R.push_back({state.rotation(r, 0), state.rotation(r, 1), state.rotation(r, 2)});
@@ -28,19 +23,20 @@ nlohmann::json point_json(const PointState& state, const Vec3& unwrapped_rotatio
     return {{"displacement", vec_json(state.displacement)},
             {"rotation_matrix", R},
             {"rotation_vector", vec_json(so3::log_map(state.rotation))},
-            {"rotation_angle", unwrapped_rotation_vector.norm()}};
+            {"rotation_angle", continued_rotation_vector.norm()}};
 }
 
 nlohmann::json step_json(const Model& model, std::optional<double> load_factor,
                          std::optional<double> time, int newton_iterations,
-                         const std::vector<PointState>& states, RotationUnwrapper& unwrapper) {
+                         const std::vector<PointState>& states,
+                         const std::vector<Vec3>& continued) {
     nlohmann::json step;
     if (load_factor) step["load_factor"] = *load_factor;
     if (time) step["time"] = *time;
     step["newton_iterations"] = newton_iterations;
     nlohmann::json points = nlohmann::json::object();
     for (size_t i = 0; i < model.points.size() && i < states.size(); ++i) {
-        points[model.points[i].name] = point_json(states[i], unwrapper.update(i, states[i].rotation));
+        points[model.points[i].name] = point_json(states[i], continued.at(i));
     }
     step["points"] = points;
     return step;

@@ -4,7 +4,8 @@
 // A run result is one JSON object: case, rotation, formulation, elements, order, dofs, status,
 // message, wall_seconds, version, options, counters, and `steps` (one per reported load step or
 // output time) with, for every named point, displacement, rotation_matrix (R^c R^rᵀ),
-// rotation_vector (principal value) and rotation_angle (unwrapped along the path).
+// rotation_vector (principal value) and rotation_angle (the rotation vector continued along the
+// beam from the root, core/beam_rotation.hpp).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -17,25 +18,16 @@
 
 namespace rotbeam {
 
-// Tracks each named point's rotation along a load or time path so that the reported angle is
-// continuous (a full roll-up reads 2π, not 0).
-class RotationUnwrapper {
-public:
-    explicit RotationUnwrapper(size_t points) : previous_(points, Vec3::Zero()) {}
-    // Returns the unwrapped rotation vector of point i for rotation R and remembers it.
-    Vec3 update(size_t i, const Mat3& R);
-
-private:
-    std::vector<Vec3> previous_;
-};
-
-// {"displacement", "rotation_matrix", "rotation_vector", "rotation_angle"} of one point.
-nlohmann::json point_json(const PointState& state, const Vec3& unwrapped_rotation_vector);
+// {"displacement", "rotation_matrix", "rotation_vector", "rotation_angle"} of one point;
+// rotation_angle is the norm of `continued_rotation_vector`.
+nlohmann::json point_json(const PointState& state, const Vec3& continued_rotation_vector);
 
 // One step entry: {"load_factor" | "time", "newton_iterations", "points": {name: point_json}}.
+// `continued` holds each point's rotation vector continued along the beam
+// (rotation_vectors_along_beam), indexed like `states`.
 nlohmann::json step_json(const Model& model, std::optional<double> load_factor,
                          std::optional<double> time, int newton_iterations,
-                         const std::vector<PointState>& states, RotationUnwrapper& unwrapper);
+                         const std::vector<PointState>& states, const std::vector<Vec3>& continued);
 
 nlohmann::json counters_json(const AssemblyCounters& c);
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/beam_rotation.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
@@ -22,10 +23,11 @@ nlohmann::json continuum_result_json(const Model& model, const std::string& case
                              {"message", outcome.message},
                              {"version", kGitDescribe},
                              {"steps", nlohmann::json::array()}};
-    RotationUnwrapper unwrapper(model.points.size());
     for (const ContinuumStep& step : outcome.steps) {
+        const std::vector<Vec3> continued =
+            rotation_vectors_along_beam(model, step.rotations, step.points);
         nlohmann::json s = step_json(model, step.load_factor, std::nullopt, step.iterations,
-                                     step.points, unwrapper);
+                                     step.points, continued);
         s["shooting_residual"] = step.residual;
         s["root_force"] = {step.root_force.x(), step.root_force.y(), step.root_force.z()};
         s["root_moment"] = {step.root_moment.x(), step.root_moment.y(), step.root_moment.z()};

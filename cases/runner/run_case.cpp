@@ -2,8 +2,12 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
+#include "core/kinematic_check.hpp"
 #include "core/kinsol_driver.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -108,33 +112,66 @@ NewtonOutcome kinsol_step_solver(NonlinearSystem& system, const NewtonSettings& 
     return out;
 }
 
+// Thrown out of run_static's step callback when a reported step fails the kinematic check
+// (core/kinematic_check.hpp): the run stops there, as it does when Newton fails.
+struct KinematicsUnresolved {
+    std::string message;
+};
+
+// The kinematic check of a reported step: throws KinematicsUnresolved naming the step, the load
+// factor, the element and the angles.
+void check_kinematics(const Model& model, const StaticProblem& problem, std::size_t step,
+                      double load_factor) {
+    const std::optional<KinematicDefect> worst =
+        worst_kinematic_defect(problem.rotation_stations());
+    if (!worst || within_kinematic_bound(*worst)) return;
+    std::ostringstream s;
+    s.precision(6);
+    s << "the discrete kinematics do not describe the beam at load step " << step + 1
+      << " (load factor " << load_factor << "): " << describe_kinematic_defect(model, *worst)
+      << "; the equations are solved, the answer is not trustworthy (refine the mesh or use a "
+         "parameterization whose elements resolve the rotation)";
+    throw KinematicsUnresolved{s.str()};
+}
+
 void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
     result["dofs"] = problem->size();
-    RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
     StepSolver solver;
     if (model.solver.driver == "kinsol") {
         if (!problem->additive()) {
-            throw InputError("solver.driver: kinsol needs an additive update (the mixed "
-                             "formulation); this combination composes rotations");
+            throw InputError(
+                "solver.driver: kinsol needs an additive update (the mixed "
+                "formulation); this combination composes rotations");
         }
         solver = kinsol_step_solver;
     }
-    const StaticOutcome outcome =
-        run_static(*problem, model.analysis.statics.load_factors, settings,
-                   [&](const StepRecord& step) {
-                       for (size_t i = 0; i < model.points.size(); ++i) {
-                           states[i] = problem->point_state(static_cast<int>(i));
-                       }
-                       result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
-                                                           step.newton_iterations, states,
-                                                           unwrapper));
-                       add_centerline(*problem, result["steps"].back());
-                   },
-                   solver);
+    std::optional<StaticOutcome> solved;
+    try {
+        solved = run_static(
+            *problem, model.analysis.statics.load_factors, settings,
+            [&](const StepRecord& step) {
+                check_kinematics(model, *problem, result["steps"].size(), step.load_factor);
+                for (size_t i = 0; i < model.points.size(); ++i) {
+                    states[i] = problem->point_state(static_cast<int>(i));
+                }
+                const std::vector<Vec3> continued =
+                    rotation_vectors_along_beam(model, problem->rotation_stations(), states);
+                result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
+                                                    step.newton_iterations, states, continued));
+                add_centerline(*problem, result["steps"].back());
+            },
+            solver);
+    } catch (const KinematicsUnresolved& e) {
+        result["status"] = kKinematicsUnresolved;
+        result["message"] = e.message;
+        result["counters"] = counters_json(problem->counters());
+        return;
+    }
+    const StaticOutcome& outcome = *solved;
     result["status"] = to_string(outcome.status);
     result["message"] = outcome.message;
     result["counters"] = counters_json(problem->counters());

@@ -16,7 +16,8 @@ struct RunRequest {
 };
 
 // Runs the analysis. Never throws for numerical failure: the status says it (`converged`,
-// `diverged`, `singular`, `error`). Throws InputError only for input the formulation refuses
+// `diverged`, `singular`, `error`, or `kinematics-unresolved` when the mixed kinematic check
+// stops a solved run, core/kinematic_check.hpp). Throws InputError only for input the formulation refuses
 // (e.g. a rigid section in the displacement formulation).
 nlohmann::json run_case(const RunRequest& request);
 

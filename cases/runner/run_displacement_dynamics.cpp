@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "analyses.hpp"
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
@@ -53,14 +54,15 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
         if (trace) settings.trace = &std::cerr;
         std::vector<double> loads = model.analysis.statics.load_factors;
         if (loads.empty()) loads = {1.0};
-        RotationUnwrapper unwrapper(model.points.size());
         std::vector<PointState> states(model.points.size());
         const StaticOutcome out = run_static(problem, loads, settings, [&](const StepRecord& s) {
             for (size_t i = 0; i < model.points.size(); ++i) {
                 states[i] = problem.point_state(static_cast<int>(i));
             }
+            const std::vector<Vec3> continued =
+                rotation_vectors_along_beam(model, problem.rotation_stations(), states);
             result["steps"].push_back(step_json(model, s.load_factor, std::nullopt,
-                                                s.newton_iterations, states, unwrapper));
+                                                s.newton_iterations, states, continued));
         });
         if (out.status != SolveStatus::converged) {
             result["status"] = to_string(out.status);
@@ -138,7 +140,6 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         problem.adopt_static_state();
     }
     problem.set_velocity(d.initial_velocity, Vec3::Zero());
-    RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
     TimeIntegrationSettings ts;
     ts.time_step = d.time_step;
@@ -150,8 +151,10 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
             for (size_t i = 0; i < model.points.size(); ++i) {
                 states[i] = problem.point_state(static_cast<int>(i));
             }
+            const std::vector<Vec3> continued =
+                rotation_vectors_along_beam(model, problem.statics().rotation_stations(), states);
             nlohmann::json step =
-                step_json(model, std::nullopt, s.time, s.newton_iterations, states, unwrapper);
+                step_json(model, std::nullopt, s.time, s.newton_iterations, states, continued);
             step["reactions"] = reactions_json(model, problem);
             const form::BeamEnergy e = problem.energy();
             step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};

@@ -2,12 +2,15 @@
 // parameterization switch for them, as make_problem.cpp does for statics.
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
 #include "analyses.hpp"
+#include "core/beam_rotation.hpp"
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/kinematic_check.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_dynamics_of.hpp"
@@ -38,18 +41,34 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     if (trace) settings.trace = &std::cerr;
     std::vector<double> loads = model.analysis.statics.load_factors;
     if (loads.empty()) loads = {1.0};
-    RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
+    std::optional<std::string> unresolved;
     const StaticOutcome out = run_static(statics, loads, settings, [&](const StepRecord& s) {
-        if (!record) return;
+        const std::optional<KinematicDefect> worst =
+            worst_kinematic_defect(statics.rotation_stations());
+        if (!unresolved && worst && !within_kinematic_bound(*worst)) {
+            std::ostringstream m;
+            m.precision(6);
+            m << "static state: the discrete kinematics do not describe the beam at load factor "
+              << s.load_factor << ": " << describe_kinematic_defect(model, *worst);
+            unresolved = m.str();
+        }
+        if (!record || unresolved) return;
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = statics.point_state(static_cast<int>(i));
         }
+        const std::vector<Vec3> continued =
+            rotation_vectors_along_beam(model, statics.rotation_stations(), states);
         result["steps"].push_back(
-            step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, unwrapper));
+            step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, continued));
     });
     state = statics.state_vector();
     lambda = out.last_converged_load_factor;
+    if (unresolved) {
+        result["status"] = kKinematicsUnresolved;
+        result["message"] = *unresolved;
+        return false;
+    }
     if (out.status == SolveStatus::converged) return true;
     result["status"] = to_string(out.status);
     result["message"] = "static state: " + out.message;
@@ -181,15 +200,29 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     s.absolute_tolerance = d.absolute_tolerance;
     s.newton.max_iterations = model.solver.max_iterations;
     if (trace) s.newton.trace = &std::cerr;
-    RotationUnwrapper unwrapper(model.points.size());
     std::vector<PointState> states(model.points.size());
     result["steps"] = nlohmann::json::array();
     form::QuaternionNormDrift drift;  // the quaternion's, over the output times
+    // The first output time that fails the kinematic check (core/kinematic_check.hpp): the run
+    // is reported up to the output before it, with the check's status.
+    std::optional<std::string> unresolved;
     const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int iterations) {
+        if (unresolved) return;
+        const std::vector<StaticProblem::RotationStation> stations = dyn.rotation_stations(xs, t);
+        const std::optional<KinematicDefect> worst = worst_kinematic_defect(stations);
+        if (worst && !within_kinematic_bound(*worst)) {
+            std::ostringstream m;
+            m << "the discrete kinematics do not describe the beam at t = " << t << " (output "
+              << result["steps"].size() + 1 << "): " << describe_kinematic_defect(model, *worst)
+              << "; the equations are solved, the answer is not trustworthy";
+            unresolved = m.str();
+            return;
+        }
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = dyn.point_state(xs, t, static_cast<int>(i));
         }
-        nlohmann::json step = step_json(model, std::nullopt, t, iterations, states, unwrapper);
+        const std::vector<Vec3> continued = rotation_vectors_along_beam(model, stations, states);
+        nlohmann::json step = step_json(model, std::nullopt, t, iterations, states, continued);
         // Supported points also carry their reactions (the node unknowns, inertial components):
         // the root force and moment histories (seed 002 Fig. 11).
         for (size_t i = 0; i < model.points.size(); ++i) {
@@ -220,6 +253,11 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     result["counters"] = counters_json(dyn.counters());
     result["status"] = to_string(out.status);
     result["message"] = out.message;
+    if (unresolved) {
+        result["status"] = kKinematicsUnresolved;
+        result["message"] = *unresolved;
+        return;
+    }
     if constexpr (P::kSize == 4) {
         result["quaternion_norm_drift"] = {{"nodes", drift.nodes}, {"elements", drift.elements}};
         std::ostringstream m;

@@ -201,8 +201,14 @@ ContinuumStep record_step(const Setup& setup, RodIntegrator& rod, const RodLoads
     std::vector<double> samples;
     const int count = std::max(2, options.centreline_samples);
     for (int i = 0; i < count; ++i) samples.push_back(g.length() * i / (count - 1));
+    std::vector<double> rotation_samples;
+    const int rotation_count = std::max(2, options.rotation_samples);
+    for (int i = 0; i < rotation_count; ++i) {
+        rotation_samples.push_back(g.length() * i / (rotation_count - 1));
+    }
     std::vector<double> stations = samples;
     stations.insert(stations.end(), setup.point_s.begin(), setup.point_s.end());
+    stations.insert(stations.end(), rotation_samples.begin(), rotation_samples.end());
     std::sort(stations.begin(), stations.end());
     stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
     std::vector<RodState> states;
@@ -223,6 +229,9 @@ ContinuumStep record_step(const Setup& setup, RodIntegrator& rod, const RodLoads
     for (double s : samples) {
         step.centreline_s.push_back(s);
         step.centreline.push_back(state_at(s).x);
+    }
+    for (double s : rotation_samples) {
+        step.rotations.push_back({0, true, state_at(s).R * g.frame(s).transpose()});
     }
     return step;
 }

@@ -25,6 +25,9 @@ struct ContinuumOptions {
     int max_step_cuts = 30;             // consecutive bisections of one load increment
     double max_turn = 0.5;  // [rad] largest rotation change of a section per accepted increment
     int centreline_samples = 41;  // equally spaced in s, ends included
+    // Sections, equally spaced in s, ends included, along which the reported rotation angle is
+    // continued (core/beam_rotation.hpp): 4π over 400 intervals is 0.03 rad apart.
+    int rotation_samples = 401;
 };
 
 struct ContinuumStep {
@@ -37,6 +40,8 @@ struct ContinuumStep {
     Vec3 root_moment = Vec3::Zero();   // internal moment m(0)
     std::vector<double> centreline_s;  // reference arc length of the samples
     std::vector<Vec3> centreline;      // deformed centreline x(s)
+    // R(s) R^r(s)ᵀ at `rotation_samples` sections from root to tip (member 0).
+    std::vector<StaticProblem::RotationStation> rotations;
 };
 
 struct ContinuumOutcome {

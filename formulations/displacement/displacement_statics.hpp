@@ -110,6 +110,18 @@ public:
         return out;
     }
 
+    // Every node of every element in arc-length order (the shared end node once).
+    std::vector<RotationStation> rotation_stations() const override {
+        std::vector<RotationStation> out;
+        for (const MeshElement& e : mesh_.elements) {
+            for (size_t j = out.empty() || out.back().member != e.member ? 0 : 1;
+                 j < e.nodes.size(); ++j) {
+                out.push_back({e.member, true, P::matrix(p_[e.nodes[j]])});
+            }
+        }
+        return out;
+    }
+
     const Mesh& mesh() const { return mesh_; }
     // Nodal state (relative to the reference configuration), for tests and output.
     const Vec3& node_displacement(int node) const { return u_[node]; }

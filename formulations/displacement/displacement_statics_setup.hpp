@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/so3.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -286,7 +287,10 @@ template <param::RotationParameterization P>
 std::string DisplacementStatics<P>::describe_state() const {
     std::ostringstream s;
     const double phi = max_rotation_angle();
-    s << "largest nodal rotation " << phi << " rad (" << P::kName << ")";
+    // The angle continued along the beam (a closed roll-up: 2π), not a node's parameter angle (π
+    // after a rescale).
+    s << "largest nodal rotation " << largest_continued_angle(model_, rotation_stations())
+      << " rad (" << P::kName << ")";
     // Issue 5 point 3: with `direct` interpolation the nodal parameters are interpolated as they
     // are, so rescaling one node (WM: complementary parameters; rotation vector: −2π) would put
     // it in another chart than its neighbours. It is not done; say so where it would have been.

@@ -78,6 +78,8 @@ class MixedDynamics : public DaeSystem {
     void set_translational_momenta(VecX& x, const Vec3& v) const;
     // Named point displacement and rotation (relative to the reference) in state x at time t.
     PointState point_state(const VecX& x, double t, int point_index) const;
+    // As MixedStatics<P>::rotation_stations, in state x at time t.
+    std::vector<StaticProblem::RotationStation> rotation_stations(const VecX& x, double t) const;
     double max_rotation_angle(const VecX& x) const;
 
   private:

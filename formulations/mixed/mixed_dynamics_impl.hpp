@@ -288,6 +288,28 @@ PointState MixedDynamics<P>::point_state(const VecX& x, double t, int point_inde
 }
 
 template <param::RotationParameterization P>
+std::vector<StaticProblem::RotationStation> MixedDynamics<P>::rotation_stations(const VecX& x,
+                                                                                double t) const {
+    std::vector<StaticProblem::RotationStation> out;
+    Vec3 u_hat, c_hat;
+    for (int e = 0; e < layout_.element_count(); ++e) {
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) {
+            node_motion(x, t, el.start_node, u_hat, c_hat);
+            out.push_back({el.member, true, P::matrix(c_hat)});
+        }
+        const int o = numbering_.element_offset(e);
+        const Vec6 strain = el.S * x.segment<6>(o + numbering_.F());
+        const Vec3 kappa = strain.tail<3>();
+        out.push_back({el.member, false, P::matrix(x.segment<3>(o + numbering_.c())),
+                       el.length * (el.Cab * kappa)});
+        node_motion(x, t, el.end_node, u_hat, c_hat);
+        out.push_back({el.member, true, P::matrix(c_hat)});
+    }
+    return out;
+}
+
+template <param::RotationParameterization P>
 double MixedDynamics<P>::max_rotation_angle(const VecX& x) const {
     double angle = 0.0;
     for (int e = 0; e < numbering_.elements; ++e) {

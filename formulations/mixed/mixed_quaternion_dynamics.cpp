@@ -397,6 +397,31 @@ const {
 }
 
 template <param::RotationParameterization P>
+requires(P::kSize == 4)
+    std::vector<StaticProblem::RotationStation> MixedQuaternionDynamics<P>::rotation_stations(
+        const VecX& x, double t)
+const {
+    std::vector<StaticProblem::RotationStation> out;
+    Vec3 u_hat;
+    Params q_hat;
+    for (int e = 0; e < element_count(); ++e) {
+        const MixedElement& el = layout_.base.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) {
+            node_motion(x, t, el.start_node, u_hat, q_hat);
+            out.push_back({el.member, true, P::matrix(q_hat)});
+        }
+        const int o = element_column(e);
+        const Vec6 strain = el.S * x.segment<6>(o + Block::F);
+        const Vec3 kappa = strain.tail<3>();
+        out.push_back({el.member, false, P::matrix(x.segment<K>(o + Block::q)),
+                       el.length * (el.Cab * kappa)});
+        node_motion(x, t, el.end_node, u_hat, q_hat);
+        out.push_back({el.member, true, P::matrix(q_hat)});
+    }
+    return out;
+}
+
+template <param::RotationParameterization P>
 requires(P::kSize == 4) double MixedQuaternionDynamics<P>::max_rotation_angle(const VecX& x) const {
     double angle = 0.0;
     for (int e = 0; e < element_count(); ++e) {

@@ -92,6 +92,8 @@ requires(P::kSize == 4) class MixedQuaternionDynamics : public DaeSystem {
     // Every element's momenta of a rigid translation with inertial velocity v: [P; H] = I [Aᵀv; 0].
     void set_translational_momenta(VecX& x, const Vec3& v) const;
     PointState point_state(const VecX& x, double t, int point_index) const;
+    // As MixedQuaternionStatics<P>::rotation_stations, in state x at time t.
+    std::vector<StaticProblem::RotationStation> rotation_stations(const VecX& x, double t) const;
     double max_rotation_angle(const VecX& x) const;
     // max | |q| − 1 | at the nodes (conserved by the Cayley relations) and in the elements
     // (cos(δ/4) by construction), in state x at time t.

@@ -52,6 +52,7 @@ requires(P::kSize == 4) class MixedQuaternionStatics : public StaticProblem {
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
     std::vector<SectionResultants> section_resultants() const override;
+    std::vector<RotationStation> rotation_stations() const override;
 
     const MixedQuaternionLayout& layout() const { return layout_; }
     MixedHomogeneousState<P::kSize> element_state(int e) const;

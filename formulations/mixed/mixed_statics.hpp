@@ -50,6 +50,7 @@ class MixedStatics : public StaticProblem {
     AssemblyCounters counters() const override { return counters_; }
     double max_rotation_angle() const override;
     std::vector<SectionResultants> section_resultants() const override;
+    std::vector<RotationStation> rotation_stations() const override;
 
     const MixedLayout& layout() const { return layout_; }
     MixedElementState element_state(int e) const;

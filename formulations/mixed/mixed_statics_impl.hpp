@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 
@@ -174,10 +175,34 @@ double MixedStatics<P>::max_rotation_angle() const {
     return angle;
 }
 
+// Start node, then per element its rotation c_i and its end node (elements are numbered member by
+// member in arc-length order, mixed_layout.cpp).
+template <param::RotationParameterization P>
+std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations() const {
+    std::vector<RotationStation> out;
+    Vec3 u_hat, c_hat;
+    for (int e = 0; e < layout_.element_count(); ++e) {
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) {
+            node_motion(el.start_node, u_hat, c_hat);
+            out.push_back({el.member, true, P::matrix(c_hat)});
+        }
+        const MixedElementState st = element_state(e);
+        const Vec6 strain = el.S * (Vec6() << st.F, st.M).finished();
+        const Vec3 kappa = strain.tail<3>();
+        out.push_back({el.member, false, P::matrix(st.c), el.length * (el.Cab * kappa)});
+        node_motion(el.end_node, u_hat, c_hat);
+        out.push_back({el.member, true, P::matrix(c_hat)});
+    }
+    return out;
+}
+
 template <param::RotationParameterization P>
 std::string MixedStatics<P>::describe_state() const {
     std::ostringstream s;
-    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest element rotation "
+    s << "mixed/" << P::kName << ", load factor " << lambda_ << ", largest rotation "
+      << largest_continued_angle(model_, rotation_stations())
+      << " rad (continued along the beam), largest element parameter angle "
       << max_rotation_angle() << " rad";
     return s.str();
 }
