@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "study_math.hpp"
 #include "timing.hpp"
+#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 
@@ -73,7 +74,7 @@ Candidate try_candidate(const BenchTarget& t, const Combination& c, const GridPo
             k.message = r.value("message", "");
             k.dofs = r.value("dofs", 0);
             k.iterations = total_newton_iterations(r);
-            if (k.status == "converged" && converged_steps_exist(r)) {
+            if (has_solution(k.status) && converged_steps_exist(r)) {
                 k.error = target_error(r["steps"].back(), length, reference);
             }
         },

@@ -21,6 +21,7 @@
 #include "core/version.hpp"
 #include "make_problem.hpp"
 #include "timing.hpp"
+#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 
@@ -140,7 +141,7 @@ nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats) {
             ? continuum_reference(t.case_name, {kExactBendTip, "analysis.load_factors=[600]"})
             : nlohmann::json();
     if (!reference.is_null() &&
-        (reference.value("status", "") != "converged" || reference["steps"].empty())) {
+        (!has_solution(reference.value("status", "")) || reference["steps"].empty())) {
         std::cout << t.name << ": no continuum reference (" << reference.value("message", "")
                   << "); skipped\n\n";
         return nlohmann::json();

@@ -23,6 +23,7 @@
 
 #include "core/oracles/manufactured_motion.hpp"
 #include "core/types.hpp"
+#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 
@@ -54,7 +55,7 @@ struct MotionRunResult {
     // The point states at the output times (for differences between two runs).
     std::vector<Vec3> u;
     std::vector<Mat3> R;
-    bool ok() const { return status == "converged"; }
+    bool ok() const { return has_solution(status); }
 };
 
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec);

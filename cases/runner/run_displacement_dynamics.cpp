@@ -34,8 +34,8 @@ nlohmann::json mode_json(const Model& model, const form::Mesh& mesh, const VecX&
         const int node = mesh.point_node[i];
         const int dof = node < 0 ? -1 : mesh.nodes[static_cast<size_t>(node)].dof;
         const VecX zero = VecX::Zero(6);
-        const Eigen::Ref<const VecX> s = dof < 0 ? Eigen::Ref<const VecX>(zero)
-                                                 : Eigen::Ref<const VecX>(v.segment(dof, 6));
+        const Eigen::Ref<const VecX> s =
+            dof < 0 ? Eigen::Ref<const VecX>(zero) : Eigen::Ref<const VecX>(v.segment(dof, 6));
         points[model.points[i].name] = {{"displacement", vec3(s.head(3))},
                                         {"rotation", vec3(s.tail(3))}};
     }
@@ -57,14 +57,10 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
             for (size_t i = 0; i < model.points.size(); ++i) {
                 states[i] = problem.point_state(static_cast<int>(i));
             }
-            result["steps"].push_back(
-                step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, unwrapper));
+            result["steps"].push_back(step_json(model, s.load_factor, std::nullopt,
+                                                s.newton_iterations, states, unwrapper));
         });
-        if (out.status != SolveStatus::converged) {
-            result["status"] = to_string(out.status);
-            result["message"] = "static state for the modal analysis: " + out.message;
-            return;
-        }
+        if (!static_state_usable(out, result)) return;
     }
     VecX r;
     SparseMatrix K;
@@ -76,15 +72,17 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     result["frequencies_hz"] = s.frequencies_hz;
     result["modes"] = nlohmann::json::array();
     for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
-        result["modes"].push_back(mode_json(model, problem.mesh(), s.shapes[i], s.frequencies_hz[i]));
+        result["modes"].push_back(
+            mode_json(model, problem.mesh(), s.shapes[i], s.frequencies_hz[i]));
     }
     result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
                        {"stiffness_asymmetry", s.asymmetry},
                        {"mass_rule", model.discretization.mass_rule}};
     result["counters"] = counters_json(problem.counters());
-    result["status"] = "converged";
-    result["message"] = "modes of the " +
-                        std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
+    set_analysis_status(result, SolveStatus::converged,
+                        "modes of the " +
+                            std::string(result["steps"].empty() ? "undeformed" : "static") +
+                            " state");
 }
 
 // Reactions of the constrained named points: the force and moment the support exerts on the beam
@@ -120,11 +118,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     if (d.initial_state == "static") {
         problem.statics().set_time(0.0);
         const StaticOutcome out = run_static(problem.statics(), {1.0}, settings, {});
-        if (out.status != SolveStatus::converged) {
-            result["status"] = to_string(out.status);
-            result["message"] = "static initial state: " + out.message;
-            return;
-        }
+        if (!static_state_usable(out, result)) return;
         problem.adopt_static_state();
     }
     problem.set_velocity(d.initial_velocity, Vec3::Zero());
@@ -147,8 +141,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
             step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};
             result["steps"].push_back(std::move(step));
         });
-    result["status"] = to_string(out.status);
-    result["message"] = out.message;
+    set_analysis_status(result, out.status, out.message);
     result["integrator"] = {{"scheme", "Lie-group generalized-alpha"},
                             {"rho_infinity", d.rho_infinity},
                             {"time_step", d.time_step},

@@ -48,10 +48,7 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     });
     state = statics.state_vector();
     lambda = out.last_converged_load_factor;
-    if (out.status == SolveStatus::converged) return true;
-    result["status"] = to_string(out.status);
-    result["message"] = "static state: " + out.message;
-    return false;
+    return static_state_usable(out, result);
 }
 
 // Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
@@ -113,9 +110,10 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                                          "average of the section mass, midpoint = its mid-length "
                                          "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
-    result["status"] = "converged";
-    result["message"] =
-        "modes of the " + std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
+    set_analysis_status(result, SolveStatus::converged,
+                        "modes of the " +
+                            std::string(result["steps"].empty() ? "undeformed" : "static") +
+                            " state");
 }
 
 void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNormDrift& worst) {
@@ -200,14 +198,13 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
     }
     result["counters"] = counters_json(dyn.counters());
-    result["status"] = to_string(out.status);
-    result["message"] = out.message;
+    set_analysis_status(result, out.status, out.message);
     if constexpr (P::kSize == 4) {
         result["quaternion_norm_drift"] = {{"nodes", drift.nodes}, {"elements", drift.elements}};
         std::ostringstream m;
         m << "; max ||q| - 1| over the output times: nodes " << drift.nodes
           << ", elements (midpoint averages, O(dL^2)) " << drift.elements;
-        result["message"] = out.message + m.str();
+        result["message"] = result["message"].get<std::string>() + m.str();
     }
 }
 

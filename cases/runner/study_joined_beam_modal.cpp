@@ -17,6 +17,7 @@
 #include "study_common.hpp"
 #include "study_extrapolation.hpp"
 #include "study_math.hpp"
+#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 
@@ -69,7 +70,7 @@ ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) 
             return s;
         }
         std::vector<double> f;
-        if (result.value("status", "") == "converged" && result.contains("frequencies_hz") &&
+        if (has_solution(result.value("status", "")) && result.contains("frequencies_hz") &&
             result["frequencies_hz"].size() >= kModes) {
             f = result["frequencies_hz"].get<std::vector<double>>();
             f.resize(kModes);

@@ -1,4 +1,5 @@
 #include "study_math.hpp"
+#include "core/static_driver.hpp"
 
 #include <cmath>
 #include <limits>
@@ -81,7 +82,7 @@ Reach classify_reach(const std::vector<ConvergedStep>& steps, const std::string&
         reach.load_factor = s.load_factor;
         ++reach.steps_reached;
     }
-    if (status == "converged") {
+    if (has_solution(status)) {
         reach.stopped = reach.steps_reached >= target_steps ? "completed" : "error";
     } else {
         reach.stopped = status;
