@@ -95,8 +95,7 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
         notify_step({t, outcome.steps, outcome.newton_iterations, -1});
     }
     std::ostringstream s;
-    s << outcome.steps << " time steps converged (" << outcome.newton_iterations
-      << " Newton iterations)";
+    s << outcome.steps << " time steps (" << outcome.newton_iterations << " Newton iterations)";
     if (stalls.count > 0) {
         outcome.status = SolveStatus::stalled_at_round_off;
         s << "; " << stalls.describe("time steps", newton.residual_tolerance);

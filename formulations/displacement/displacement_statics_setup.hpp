@@ -183,9 +183,10 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::update_residual_scale() {
     // Floor: the residual's round-off is ~c ε_mach EA (c ≲ 1e3: sums over quadrature points
-    // weighted by |N′| ~ p²/h). With F ≥ 1e-4 EA that floor stays ≤ 2e-9 scaled, which the
-    // driver's round-off acceptance (≤ 1e4 × tolerance with a negligible increment) admits;
-    // below it, a small load on a stiff member (13 lbf on EA = 1e7) could never converge.
+    // weighted by |N′| ~ p²/h). With F ≥ 1e-4 EA that floor stays ≤ 2e-9 scaled, where the
+    // driver's stall test recognizes it (stalled-at-round-off, within 100× the floor it expects,
+    // docs/solver-convergence.md); below it, a small load on a stiff member (13 lbf on EA = 1e7)
+    // would stall far above any tolerance a user would ask for.
     constexpr double kRoundoffFloor = 1e-4;
     force_scale_ = fixed_force_scale_
                        ? unit_force_scale_

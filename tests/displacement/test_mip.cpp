@@ -45,8 +45,8 @@ BOOST_AUTO_TEST_CASE(mip_solves_the_full_rollup_in_one_step_with_the_standard_so
     const Model m = test::rollup(2, 10);
     const Solved standard = solve<param::Quaternion>(m, false, false, 2.0);
     const Solved mip = solve<param::Quaternion>(m, true, false, 2.0);
-    BOOST_TEST_REQUIRE(standard.outcome.status == SolveStatus::converged);
-    BOOST_TEST_REQUIRE(mip.outcome.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(standard.outcome.status));
+    BOOST_TEST_REQUIRE(has_solution(mip.outcome.status));
     const double gap = (standard.tip - mip.tip).norm() / test::kRollupL;
     std::printf(
         "roll-up 2 x p10, lambda 2, one step: standard %d, MIP %d iterations; tip gap %.2e L\n",
@@ -65,10 +65,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(mip_solves_the_bend_in_one_step_with_the_standard_
                               AllParams) {
     const Model m = test::bend45(1, 10);
     const Solved standard = solve<P>(m, false, false, 600.0);
-    BOOST_TEST_REQUIRE(standard.outcome.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(standard.outcome.status));
     for (bool line_search : {false, true}) {
         const Solved mip = solve<P>(m, true, line_search, 600.0);
-        BOOST_TEST_REQUIRE(mip.outcome.status == SolveStatus::converged);
+        BOOST_TEST_REQUIRE(has_solution(mip.outcome.status));
         const double gap = (standard.tip - mip.tip).norm() / standard.tip.norm();
         std::printf("bend 1 x p10 (%s, damping %s): standard %d, MIP %d iterations; gap %.2e\n",
                     std::string(P::kName).c_str(), line_search ? "on" : "off", standard.iterations,
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(predicted_stresses_are_the_linearization_of_the_true_ones) 
     NewtonSettings s;
     s.line_search = false;
     for (Statics* p : {&standard, &mip}) {
-        BOOST_TEST_REQUIRE(run_static(*p, {300.0}, s, {}).status == SolveStatus::converged);
+        BOOST_TEST_REQUIRE(has_solution(run_static(*p, {300.0}, s, {}).status));
         p->save_state(NonlinearSystem::kStepSlot);
     }
     VecX v(standard.size());

@@ -83,10 +83,17 @@ BOOST_AUTO_TEST_SUITE(displacement_modal)
 BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
     const std::vector<double> oracle = timoshenko_hz(4);
     for (int p : {2, 4, 6, 8}) {
-        BOOST_TEST_MESSAGE("p = " << p << ": consistent " << worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, p, "consistent"), 8), oracle)
-                                  << ", lumped " << worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, p, "lumped"), 8), oracle));
+        BOOST_TEST_MESSAGE("p = " << p << ": consistent "
+                                  << worst_pair_error(modes_of<param::Quaternion>(
+                                                          steel_cantilever(8, p, "consistent"), 8),
+                                                      oracle)
+                                  << ", lumped "
+                                  << worst_pair_error(modes_of<param::Quaternion>(
+                                                          steel_cantilever(8, p, "lumped"), 8),
+                                                      oracle));
     }
-    const form::ModalSolution q = modes_of<param::Quaternion>(steel_cantilever(8, 6, "consistent"), 8);
+    const form::ModalSolution q =
+        modes_of<param::Quaternion>(steel_cantilever(8, 6, "consistent"), 8);
     const form::ModalSolution l = modes_of<param::Quaternion>(steel_cantilever(8, 6, "lumped"), 8);
     const form::ModalSolution v =
         modes_of<param::RotationVector>(steel_cantilever(8, 6, "consistent"), 8);
@@ -96,8 +103,10 @@ BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
     BOOST_TEST(worst_pair_error(q, oracle) <= 1e-7);
     BOOST_TEST(worst_pair_error(l, oracle) <= 1e-7);
     BOOST_TEST(worst_pair_error(v, oracle) <= 1e-7);
-    const double p2 = worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 8), oracle);
-    const double p4 = worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(8, 4, "consistent"), 8), oracle);
+    const double p2 = worst_pair_error(
+        modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 8), oracle);
+    const double p4 = worst_pair_error(
+        modes_of<param::Quaternion>(steel_cantilever(8, 4, "consistent"), 8), oracle);
     BOOST_TEST(p2 / p4 > 100.0);
 }
 
@@ -106,10 +115,10 @@ BOOST_AUTO_TEST_CASE(cantilever_frequencies_match_timoshenko) {
 BOOST_AUTO_TEST_CASE(every_mass_rule_converges_at_order_two_with_linear_elements) {
     const std::vector<double> oracle = timoshenko_hz(2);
     for (const std::string rule : {"consistent", "midpoint", "lumped"}) {
-        const double coarse = worst_pair_error(
-            modes_of<param::Quaternion>(steel_cantilever(16, 1, rule), 4), oracle);
-        const double fine = worst_pair_error(
-            modes_of<param::Quaternion>(steel_cantilever(32, 1, rule), 4), oracle);
+        const double coarse =
+            worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(16, 1, rule), 4), oracle);
+        const double fine =
+            worst_pair_error(modes_of<param::Quaternion>(steel_cantilever(32, 1, rule), 4), oracle);
         BOOST_TEST_MESSAGE(rule << ": error 16 el " << coarse << ", 32 el " << fine);
         BOOST_TEST(coarse / fine >= 3.5);
         BOOST_TEST(fine <= 1e-2);
@@ -127,7 +136,7 @@ BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
     model.point_loads = {f};
     form::DisplacementStatics<param::Quaternion> problem(model);
     const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE((eq.status == SolveStatus::converged));
+    BOOST_TEST_REQUIRE(has_solution(eq.status));
     VecX r;
     SparseMatrix K;
     problem.evaluate(r, &K);
@@ -142,9 +151,9 @@ BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
     // approach each other until they coalesce at flutter.
     const form::ModalSolution unloaded =
         modes_of<param::Quaternion>(steel_cantilever(8, 2, "consistent"), 4);
-    BOOST_TEST_MESSAGE("Beck column, P L²/EI = 0.29: " << unloaded.frequencies_hz[0] << " → "
-                       << s.frequencies_hz[0] << " Hz, " << unloaded.frequencies_hz[2] << " → "
-                       << s.frequencies_hz[2] << " Hz");
+    BOOST_TEST_MESSAGE("Beck column, P L²/EI = 0.29: "
+                       << unloaded.frequencies_hz[0] << " → " << s.frequencies_hz[0] << " Hz, "
+                       << unloaded.frequencies_hz[2] << " → " << s.frequencies_hz[2] << " Hz");
     BOOST_TEST(s.frequencies_hz[0] > unloaded.frequencies_hz[0]);
     BOOST_TEST(s.frequencies_hz[2] < unloaded.frequencies_hz[2]);
 }

@@ -24,7 +24,7 @@ NewtonSettings plain_newton() {
 Vec3 solve_tip(Statics& problem, const std::vector<double>& lambdas, int tip) {
     const StaticOutcome out = run_static(problem, lambdas, plain_newton(), nullptr);
     BOOST_TEST_INFO(out.message);
-    BOOST_TEST_REQUIRE(out.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(out.status));
     return problem.point_state(tip).displacement;
 }
 
@@ -95,7 +95,10 @@ BOOST_AUTO_TEST_CASE(prescribed_rigid_motion_at_both_ends_moves_every_node_rigid
         c.kind = Constraint::Kind::prescribed;
         c.rotation = theta;
         c.displacement = (R - Mat3::Identity()) * (m.points[k].position - origin);
-        if (k == 0) m.constraints[0] = c; else m.constraints.push_back(c);
+        if (k == 0)
+            m.constraints[0] = c;
+        else
+            m.constraints.push_back(c);
     }
     // The prescribed ends at λ = 1 plus the rigid motion at the free nodes is an equilibrium:
     // the residual vanishes and Newton accepts the state without moving it. (A load path λ d,
