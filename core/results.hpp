@@ -22,12 +22,12 @@ namespace rotbeam {
 // Tracks each named point's rotation along a load or time path so that the reported angle is
 // continuous (a full roll-up reads 2π, not 0).
 class RotationUnwrapper {
-public:
+  public:
     explicit RotationUnwrapper(size_t points) : previous_(points, Vec3::Zero()) {}
     // Returns the unwrapped rotation vector of point i for rotation R and remembers it.
     Vec3 update(size_t i, const Mat3& R);
 
-private:
+  private:
     std::vector<Vec3> previous_;
 };
 

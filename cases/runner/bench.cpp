@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "study_math.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -18,10 +18,10 @@
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
 #include "core/results.hpp"
+#include "core/static_driver.hpp"
 #include "core/version.hpp"
 #include "make_problem.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 
@@ -107,9 +107,8 @@ void print_row(const nlohmann::json& r, std::ostream& os) {
        << sci(w["error"].get<double>()) << std::setw(5) << w["elements"].get<int>() << std::setw(4)
        << w["order"].get<int>() << std::setw(4)
        << (std::to_string(w["substeps"].get<int>()) + (w.value("mip", false) ? "m" : ""))
-       << std::setw(7)
-       << w["dofs"].get<int>() << std::setw(6) << w["newton_iterations"].get<int>() << std::setw(8)
-       << r["peak_rss_kb"].get<long>() << "\n";
+       << std::setw(7) << w["dofs"].get<int>() << std::setw(6) << w["newton_iterations"].get<int>()
+       << std::setw(8) << r["peak_rss_kb"].get<long>() << "\n";
 }
 
 // The best whole-process time among the combinations that reached a target.

@@ -8,11 +8,11 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

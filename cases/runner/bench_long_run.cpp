@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
+#include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "study_common.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

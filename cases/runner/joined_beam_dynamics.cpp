@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "core/results.hpp"
-#include "core/version.hpp"
 #include "core/static_driver.hpp"
+#include "core/version.hpp"
 
 namespace rotbeam::cli {
 

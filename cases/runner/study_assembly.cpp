@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/static_driver.hpp"
 #include "run_case.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

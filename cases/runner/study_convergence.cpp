@@ -9,11 +9,11 @@
 #include <sstream>
 
 #include "bench.hpp"
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

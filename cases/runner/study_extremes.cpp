@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "core/oracles/timoshenko.hpp"
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_plot.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -4,11 +4,11 @@
 // function that assembles the four parts.
 #include <cmath>
 
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_extremes.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -17,12 +17,12 @@
 #include <sstream>
 #include <thread>
 
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -12,12 +12,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_extrapolation.hpp"
 #include "study_math.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -1,8 +1,9 @@
 #include "study_math.hpp"
-#include "core/static_driver.hpp"
 
 #include <cmath>
 #include <limits>
+
+#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

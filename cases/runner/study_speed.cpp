@@ -11,11 +11,11 @@
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
 #include "timing.hpp"
-#include "core/static_driver.hpp"
 
 namespace rotbeam::cli {
 

@@ -12,8 +12,8 @@
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
-#include "run_case.hpp"
 #include "core/static_driver.hpp"
+#include "run_case.hpp"
 
 namespace rotbeam::cli {
 
@@ -83,8 +83,9 @@ std::vector<double> computed_values(const Model& model, const nlohmann::json& re
     }
     const nlohmann::json* step = find_step(result, ref);
     if (!step || !(*step)["points"].contains(ref.point)) {
-        why = has_solution(result["status"].get<std::string>()) ? "no result at that load factor/time and point"
-                                              : status_note;
+        why = has_solution(result["status"].get<std::string>())
+                  ? "no result at that load factor/time and point"
+                  : status_note;
         return out;
     }
     const nlohmann::json& p = (*step)["points"][ref.point];

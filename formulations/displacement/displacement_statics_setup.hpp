@@ -65,13 +65,15 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     }
     additive_ = update == "additive";
     if (model.solver.mip && additive_) {
-        throw InputError("solver.mip: the mixed-integration-point Newton needs the "
-                         "multiplicative update (its stress prediction maps δψ, not δp)");
+        throw InputError(
+            "solver.mip: the mixed-integration-point Newton needs the "
+            "multiplicative update (its stress prediction maps δψ, not δp)");
     }
     if (additive_ && P::kSize != 3) {
-        throw InputError("discretization.update: additive needs a three-parameter rotation "
-                         "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
-                         std::string(P::kName) + "'");
+        throw InputError(
+            "discretization.update: additive needs a three-parameter rotation "
+            "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
+            std::string(P::kName) + "'");
     }
     const size_t nn = static_cast<size_t>(mesh_.order) + 1;
     pe_.resize(nn);
@@ -122,7 +124,8 @@ void DisplacementStatics<P>::build_pattern() {
             for (int b = 0; b < nn; ++b) {
                 const int ra = mesh_.nodes[nodes[a]].dof, cb = mesh_.nodes[nodes[b]].dof;
                 if (ra < 0 || cb < 0) continue;
-                for (int c = 0; c < 6; ++c) block_index_[k][(a * nn + b) * 6 + c] = index_of(ra, cb + c);
+                for (int c = 0; c < 6; ++c)
+                    block_index_[k][(a * nn + b) * 6 + c] = index_of(ra, cb + c);
             }
         }
     }
@@ -138,8 +141,8 @@ void DisplacementStatics<P>::build_pattern() {
 // loads (prescribed motion only) the bending stiffness over L² times the prescribed magnitude.
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::compute_scales(const Model& model) {
-    const double L = model.solver.length_scale > 0.0 ? model.solver.length_scale
-                                                     : mesh_.max_member_length;
+    const double L =
+        model.solver.length_scale > 0.0 ? model.solver.length_scale : mesh_.max_member_length;
     double F = 0.0;
     for (const PointLoad& l : model.point_loads) {
         F = std::max({F, l.force.norm(), l.moment.norm() / L});
@@ -152,7 +155,8 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
         for (const QuadraturePoint& q : e.qp) {
             F = std::max(F, q.mass * model.gravity.norm() * L);
             stiffness = std::max(stiffness, q.C_star.block<3, 3>(3, 3).diagonal().maxCoeff());
-            axial_stiffness_ = std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
+            axial_stiffness_ =
+                std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
         }
     }
     if (!(F > 0.0)) {
