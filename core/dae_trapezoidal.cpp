@@ -167,12 +167,12 @@ NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, V
                                             const NewtonSettings& settings, double rate_time) {
     if (already_consistent(dae, t, x, xdot, settings.residual_tolerance)) {
         NewtonOutcome consistent;
-        consistent.converged = true;
+        consistent.converged = true;  // accepted as given: no solve, so no criterion
         return consistent;
     }
     InitialConditions ic(dae, t, x, xdot, rate_time);
     const NewtonOutcome out = solve_newton(ic, settings);
-    if (out.converged) {
+    if (out.accepted()) {
         ic.split(x, xdot);
         dae.complete_initial_rates(x, xdot);
     }
@@ -186,13 +186,15 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     outcome.last_time = s.start_time;
     const NewtonOutcome ic =
         consistent_initial_conditions(dae, s.start_time, x, xdot, s.newton, s.time_step);
-    if (!ic.converged) {
+    if (!ic.accepted()) {
         outcome.status = ic.singular ? SolveStatus::singular : SolveStatus::diverged;
         outcome.message =
             "initial conditions at t = " + std::to_string(s.start_time) + ": " + ic.failure;
         return outcome;
     }
     outcome.newton_iterations += ic.iterations;
+    StallSummary stalls;
+    stalls.add(ic);
     if (output) output(s.start_time, x, xdot, ic.iterations);
     const long steps = std::lround((s.end_time - s.start_time) / s.time_step);
     const long every =
@@ -209,7 +211,7 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
         if (n == 1) step.set_scales();
         const NewtonOutcome out = solve_newton(step, s.newton, workspace);
         outcome.newton_iterations += out.iterations;
-        if (!out.converged) {
+        if (!out.accepted()) {
             std::ostringstream m;
             m << "fixed-step Newton failed at t = " << t << " (step " << n << ", Δt " << s.time_step
               << "): " << out.failure;
@@ -217,6 +219,7 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
             outcome.message = m.str();
             return outcome;
         }
+        stalls.add(out);
         x = step.state();
         xdot = step.rate();
         outcome.steps = n;
@@ -230,6 +233,10 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     outcome.residual_evaluations = c.residual_evaluations;
     outcome.jacobian_evaluations = c.jacobian_evaluations;
     outcome.message = "fixed-step trapezoidal, " + std::to_string(steps) + " steps";
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        outcome.message += "; " + stalls.describe("solves", s.newton.residual_tolerance);
+    }
     return outcome;
 }
 

@@ -62,6 +62,7 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
     // One per run: buffers, the LU analysis and (KLU, refactored in place) the factors' memory are
     // reused by every step, so a step allocates nothing in the Newton driver.
     NewtonWorkspace workspace(true);
+    StallSummary stalls;
     for (long n = 1; n <= steps; ++n) {
         const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
         const double h = t_next - t;
@@ -74,13 +75,14 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
             out.singular = true;
             out.failure = e.what();
         }
-        if (!out.converged) {
+        if (!out.accepted()) {
             outcome.status = out.singular ? SolveStatus::singular : SolveStatus::diverged;
             outcome.message = step_failure(out.singular ? "singular" : "diverged",
                                            static_cast<int>(n), t_next, out, problem);
             outcome.last_time = t;
             return outcome;
         }
+        stalls.add(out);
         problem.end_step();
         t = t_next;
         ++outcome.steps;
@@ -93,8 +95,11 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
         notify_step({t, outcome.steps, outcome.newton_iterations, -1});
     }
     std::ostringstream s;
-    s << outcome.steps << " time steps converged (" << outcome.newton_iterations
-      << " Newton iterations)";
+    s << outcome.steps << " time steps (" << outcome.newton_iterations << " Newton iterations)";
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        s << "; " << stalls.describe("time steps", newton.residual_tolerance);
+    }
     outcome.message = s.str();
     return outcome;
 }

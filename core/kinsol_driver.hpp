@@ -8,21 +8,30 @@
 // exception ever crosses into SUNDIALS.
 #pragma once
 
+#include <limits>
 #include <string>
 
+#include "core/convergence.hpp"
 #include "core/nonlinear_system.hpp"
 
 namespace rotbeam {
 
+// Acceptance follows core/convergence.hpp at KINSOL's last iterate (the Newton correction there is
+// computed and applied); KINSOL's own tests only decide when it stops iterating.
 struct KinsolSettings {
-    double residual_tolerance = 1e-12;  // on max_i |r_i| / residual_scale_i (KINSOL's fnormtol)
-    double step_tolerance = 1e-14;      // on the scaled step (KINSOL's scsteptol)
+    double residual_tolerance = 1e-12;   // on max_i |r_i| / residual_scale_i (KINSOL's fnormtol)
+    double increment_tolerance = 1e-12;  // on the scaled Newton correction at the last iterate
+    double step_tolerance = 1e-14;       // on the scaled step (KINSOL's scsteptol)
     int max_iterations = 200;
     bool line_search = true;  // KIN_LINESEARCH, else KIN_NONE (plain Newton)
 };
 
 struct KinsolOutcome {
-    bool converged = false;
+    bool converged = false;  // the tolerances were met
+    Convergence criterion = Convergence::none;
+    double error_bound = std::numeric_limits<double>::infinity();  // scaled, as NewtonOutcome's
+    double round_off_floor = 0.0;
+    bool accepted() const { return converged || criterion == Convergence::stalled_at_round_off; }
     int flag = 0;         // KINSol's return flag
     long iterations = 0;  // nonlinear iterations
     long residual_evaluations = 0;

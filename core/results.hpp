@@ -1,11 +1,13 @@
 // The result schema shared by `run`, `reference`, the suite and the benchmarks (DESIGN.md §Program
 // and results contract), and atomic writing of result files.
 //
-// A run result is one JSON object: case, rotation, formulation, elements, order, dofs, status,
+// A run result is one JSON object: case, rotation, formulation, elements, order, dofs, status
+// (converged | stalled-at-round-off | diverged | singular | error, docs/solver-convergence.md),
 // message, wall_seconds, version, options, counters, and `steps` (one per reported load step or
 // output time) with, for every named point, displacement, rotation_matrix (R^c R^rᵀ),
 // rotation_vector (principal value) and rotation_angle (the rotation vector continued along the
-// beam from the root, core/beam_rotation.hpp).
+// beam from the root, core/beam_rotation.hpp); a static step also has `convergence` (criterion,
+// scaled_residual, error_bound, round_off_floor).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,6 @@
 #include "core/static_driver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -14,6 +15,8 @@ const char* to_string(SolveStatus s) {
     switch (s) {
         case SolveStatus::converged:
             return "converged";
+        case SolveStatus::stalled_at_round_off:
+            return "stalled-at-round-off";
         case SolveStatus::diverged:
             return "diverged";
         case SolveStatus::singular:
@@ -25,6 +28,15 @@ const char* to_string(SolveStatus s) {
 }
 
 std::ostream& operator<<(std::ostream& os, SolveStatus s) { return os << to_string(s); }
+
+bool has_solution(SolveStatus s) {
+    return s == SolveStatus::converged || s == SolveStatus::stalled_at_round_off;
+}
+
+bool has_solution(const std::string& status) {
+    return status == to_string(SolveStatus::converged) ||
+           status == to_string(SolveStatus::stalled_at_round_off);
+}
 
 NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics) {
     NewtonSettings s;
@@ -39,17 +51,6 @@ NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSe
 }
 
 namespace {
-
-// max_i |v_i| / scale_i; +∞ when any entry is not finite.
-double scaled_max_norm(const VecX& v, const VecX& scale) {
-    double m = 0.0;
-    for (Eigen::Index i = 0; i < v.size(); ++i) {
-        const double a = std::abs(v[i]) / scale[i];
-        if (!std::isfinite(a)) return std::numeric_limits<double>::infinity();
-        m = std::max(m, a);
-    }
-    return m;
-}
 
 // Root-mean-square of v_i / scale_i (the increment norm of the monotonicity test).
 double scaled_rms(const VecX& v, const VecX& scale) {
@@ -125,6 +126,7 @@ double damped_step(NonlinearSystem& system, SparseLUSolver& lu, const VecX& dx, 
 struct NewtonWorkspace::Impl {
     explicit Impl(SparseLUSolver::Kind kind) : damping(kind), lu(kind) {}
     VecX r, dx;
+    VecX floor_work;  // round_off_floor's row sums
     SparseMatrix J;
     DampingWork damping;
     SparseLUSolver lu;
@@ -154,6 +156,7 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
     if (w.size != n) {
         w.r.resize(n);
         w.dx.resize(n);
+        w.floor_work.resize(n);
         w.damping.r_trial.resize(n);
         w.damping.dx_bar.resize(n);
         w.damping.step.resize(n);
@@ -168,8 +171,25 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
     double previous_alpha = 1.0;
     const VecX& rscale = system.residual_scale();
     const VecX& xscale = system.increment_scale();
-    double last_increment = std::numeric_limits<double>::infinity();
-    double previous_residual = std::numeric_limits<double>::infinity();
+    const ConvergenceTolerances tolerances{settings.residual_tolerance,
+                                           settings.increment_tolerance};
+    IterateMeasures m;
+
+    // The iteration limit counts the corrections taken; a final one that is accepted is not
+    // refused by it.
+    auto no_convergence = [&]() {
+        std::ostringstream s;
+        s << "no convergence in " << settings.max_iterations
+          << " Newton iterations (scaled residual " << m.residual << ", expected round-off floor "
+          << m.round_off_floor << ")";
+        out.failure = s.str();
+        return out;
+    };
+    auto refused = [&](const SingularityError& e) {
+        out.failure = e.what();
+        out.singular = true;
+        return out;
+    };
 
     for (int it = 0;; ++it) {
         try {
@@ -182,41 +202,22 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
                 system.evaluate(r, &J);
             }
         } catch (const SingularityError& e) {
-            out.failure = e.what();
-            out.singular = true;
-            return out;
+            return refused(e);
         }
-        const double rnorm = scaled_max_norm(r, rscale);
-        out.scaled_residual = rnorm;
+        m.residual = scaled_max_norm(r, rscale);
+        out.scaled_residual = m.residual;
         out.iterations = it;
         if (settings.trace) {
-            *settings.trace << "  newton " << it << ": scaled residual " << rnorm
-                            << ", last scaled increment " << last_increment << "\n";
+            *settings.trace << "  newton " << it << ": scaled residual " << m.residual << "\n";
         }
-        if (!std::isfinite(rnorm)) {
+        if (!std::isfinite(m.residual)) {
             out.failure = "non-finite residual";
             return out;
         }
-        // (a) residual and increment both small; (b) residual far below its tolerance;
-        // (c) round-off floor: the increment is negligible and the residual stopped decreasing.
-        // Before the first Newton step only an exactly balanced state counts: a load below the
-        // residual's force scale × tolerance (1e-10 N on a steel beam) would otherwise leave the
-        // state unloaded and call it converged. One step then solves the (linear) problem.
-        const bool small_increment = last_increment <= settings.increment_tolerance;
-        const bool may_stop = it > 0 || rnorm == 0.0;
-        if (may_stop && ((rnorm <= settings.residual_tolerance && small_increment) ||
-                         rnorm <= 1e-3 * settings.residual_tolerance ||
-                         (small_increment && rnorm >= 0.5 * previous_residual &&
-                          rnorm <= 1e4 * settings.residual_tolerance) ||
-                         rnorm == 0.0)) {
+        if (m.residual == 0.0) {
+            out.criterion = Convergence::exact;
             out.converged = true;
-            return out;
-        }
-        if (it >= settings.max_iterations) {
-            std::ostringstream s;
-            s << "no convergence in " << settings.max_iterations
-              << " Newton iterations (scaled residual " << rnorm << ")";
-            out.failure = s.str();
+            out.error_bound = 0.0;
             return out;
         }
         if (!lu.factorize(J)) {
@@ -229,15 +230,31 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
             out.failure = "non-finite Newton increment";
             return out;
         }
-        // (d) the remaining Newton correction is negligible while the residual sits at its
-        // round-off floor: no damping test can be passed there, and none is needed.
-        if (it > 0 && scaled_max_norm(dx, xscale) <= settings.increment_tolerance &&
-            rnorm <= 1e4 * settings.residual_tolerance) {
-            out.converged = true;
+        m.correction = scaled_max_norm(dx, xscale);
+        m.round_off_floor = round_off_floor(J, rscale, xscale, w.floor_work);
+        out.round_off_floor = m.round_off_floor;
+        if (settings.trace) {
+            *settings.trace << "    scaled correction " << m.correction
+                            << ", expected round-off floor " << m.round_off_floor << "\n";
+        }
+        const Convergence criterion = accepted(m, tolerances);
+        if (criterion != Convergence::none) {
+            try {
+                system.retract(dx);  // the final correction (docs/solver-convergence.md)
+            } catch (const SingularityError& e) {
+                return refused(e);
+            }
+            out.criterion = criterion;
+            out.converged = criterion != Convergence::stalled_at_round_off;
+            out.error_bound = m.correction;
+            out.iterations = it + 1;
+            if (settings.trace) *settings.trace << "  accepted: " << to_string(criterion) << "\n";
             return out;
         }
+        if (it >= settings.max_iterations) return no_convergence();
         double alpha = 1.0;
-        if (settings.line_search) {
+        if (settings.line_search && m.correction > settings.increment_tolerance &&
+            !at_round_off(m)) {
             bool saw_singular = false;
             alpha = damped_step(system, lu, dx, xscale, std::min(1.0, 4.0 * previous_alpha),
                                 damping, saw_singular);
@@ -251,18 +268,38 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
                 return out;
             }
         } else {
+            // A correction below the tolerance, or one taken at the residual's round-off floor
+            // (where no monotonicity test can be passed), is taken in full.
             try {
                 system.retract(dx);
             } catch (const SingularityError& e) {
-                out.failure = e.what();
-                out.singular = true;
-                return out;
+                return refused(e);
             }
         }
         previous_alpha = alpha;
-        previous_residual = rnorm;
-        last_increment = alpha * scaled_max_norm(dx, xscale);
+        m.previous_residual = m.residual;
+        m.last_step_full = alpha == 1.0;
     }
+}
+
+void StallSummary::add(const NewtonOutcome& o) {
+    if (o.criterion != Convergence::stalled_at_round_off) return;
+    ++count;
+    if (o.scaled_residual >= worst_residual) {
+        worst_residual = o.scaled_residual;
+        floor = o.round_off_floor;
+    }
+    worst_error_bound = std::max(worst_error_bound, o.error_bound);
+}
+
+std::string StallSummary::describe(const char* what, double tolerance) const {
+    std::ostringstream s;
+    s.precision(3);
+    s << count << " " << what << " stalled at round-off: scaled residual up to " << worst_residual
+      << " (tolerance " << tolerance << "), expected floor " << floor
+      << " (eps × scaled Jacobian row sum); algebraic error <= " << worst_error_bound
+      << " (scaled)";
+    return s.str();
 }
 
 namespace {
@@ -292,6 +329,7 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
     NewtonWorkspace workspace(settings.dense_linear_solver ? SparseLUSolver::Kind::dense
                                                            : SparseLUSolver::Kind::sparse_lu);
     double lambda = 0.0;
+    StallSummary stalls;
     problem.set_load_factor(lambda);
     for (size_t step = 0; step < load_factors.size(); ++step) {
         const double target = load_factors[step];
@@ -312,10 +350,14 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
             last = solver ? solver(problem, settings) : solve_newton(problem, settings, workspace);
-            if (last.converged) {
+            if (last.accepted()) {
                 lambda = trial;
                 record.newton_iterations += last.iterations;
                 ++record.substeps;
+                record.criterion = last.criterion;
+                record.scaled_residual = last.scaled_residual;
+                record.error_bound = last.error_bound;
+                record.round_off_floor = last.round_off_floor;
                 problem.save_state(NonlinearSystem::kStepSlot);
                 // After two clean sub-steps, try a longer one again (never beyond the
                 // initial sub-step).
@@ -347,10 +389,16 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
             successes_since_cut = 0;
         }
         outcome.steps.push_back(record);
+        stalls.add(last);  // the reported state is the last sub-step's
         if (on_step) on_step(record);
     }
     outcome.last_converged_load_factor = lambda;
-    outcome.message = "all load steps converged";
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        outcome.message = stalls.describe("load steps", settings.residual_tolerance);
+    } else {
+        outcome.message = "all load steps converged";
+    }
     // The final state's description (e.g. the quaternion's norm drift), as a failure reports it.
     const std::string state = problem.describe_state();
     if (!state.empty()) outcome.message += "; " + state;

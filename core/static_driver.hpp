@@ -1,32 +1,42 @@
 // The shared static driver: load stepping with automatic step cutting around a damped Newton
 // method whose update is a retraction x ⊕ δ (rotations are composed, not added). Damping uses
-// Deuflhard's natural monotonicity test (affine invariant; see damped_step in the .cpp). Used by both
-// formulations (through StaticProblem only).
+// Deuflhard's natural monotonicity test (affine invariant; see damped_step in the .cpp). Used by
+// both formulations (through StaticProblem only).
 //
-// Convergence (both must hold): max_i |r_i| / residual_scale_i ≤ residual_tolerance and
-// max_i |δ_i| / increment_scale_i ≤ increment_tolerance — or the scaled residual alone falls
-// below residual_tolerance × 1e-3. A step whose Newton fails (max iterations, a non-finite residual,
-// a singular factorization or a parameterization refusing the state) is halved, starting again
-// from the last converged state; two converged sub-steps in a row double it again (never beyond
-// the initial sub-step). `max_step_cuts` bounds the consecutive halvings: the step fails when
-// the sub-step would fall below (initial sub-step) / 2^max_step_cuts.
+// Convergence: the criteria of core/convergence.hpp (the scaled residual within
+// residual_tolerance and a scaled Newton correction within increment_tolerance, or a residual
+// stalled at its round-off floor; docs/solver-convergence.md). A step whose Newton fails (max
+// iterations, a non-finite residual, a singular factorization or a parameterization refusing the
+// state) is halved, starting again from the last converged state; two converged sub-steps in a row
+// double it again (never beyond the initial sub-step). `max_step_cuts` bounds the consecutive
+// halvings: the step fails when the sub-step would fall below (initial sub-step) / 2^max_step_cuts.
 #pragma once
 
 #include <functional>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/convergence.hpp"
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/sparse_lu.hpp"
 
 namespace rotbeam {
 
-enum class SolveStatus { converged, diverged, singular, error };
+// converged: every reported step met the tolerances. stalled_at_round_off: every reported step
+// was accepted, at least one with a residual at its round-off floor above residual_tolerance
+// (the message gives the floor reached and the floor expected). Both leave a solution whose
+// algebraic error is bounded (docs/solver-convergence.md); the others stop the run.
+enum class SolveStatus { converged, stalled_at_round_off, diverged, singular, error };
 const char* to_string(SolveStatus s);
 std::ostream& operator<<(std::ostream& os, SolveStatus s);
+// True for the statuses whose reported steps are solutions (converged, stalled-at-round-off);
+// the string form reads a result file's `status`.
+bool has_solution(SolveStatus s);
+bool has_solution(const std::string& status);
 
 struct NewtonSettings {
     double residual_tolerance = 1e-12;
@@ -48,11 +58,20 @@ using StepSolver = std::function<NewtonOutcome(NonlinearSystem&, const NewtonSet
 NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics);
 
 struct NewtonOutcome {
-    bool converged = false;
+    bool converged = false;  // the tolerances were met (exact, residual-and-correction)
+    // What accepted the state; none when the solve failed (or, with `converged`, when no solve
+    // was needed: a consistent initial state kept as given).
+    Convergence criterion = Convergence::none;
     int iterations = 0;
-    double scaled_residual = 0.0;
-    std::string failure;  // why it failed
+    double scaled_residual = 0.0;  // at the accepted state (before its final correction)
+    // Bound on the scaled max norm of the accepted state's algebraic error (the Newton increment
+    // that decided, docs/solver-convergence.md); +∞ when not accepted.
+    double error_bound = std::numeric_limits<double>::infinity();
+    double round_off_floor = 0.0;  // expected residual floor at the last factorized state
+    std::string failure;           // why it failed
     bool singular = false;
+    // Converged, or stalled at round-off: the state is a solution to the stated bound.
+    bool accepted() const { return converged || criterion == Convergence::stalled_at_round_off; }
 };
 
 // One Newton solve at the current load: the in-house damped Newton along the retraction.
@@ -75,16 +94,34 @@ struct NewtonWorkspace {
 NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settings,
                            NewtonWorkspace& workspace);
 
+// The stalled solves of a run (criterion stalled_at_round_off), for its status and message.
+struct StallSummary {
+    int count = 0;
+    double worst_residual = 0.0;  // largest scaled residual of a stalled solve
+    double floor = 0.0;           // the expected round-off floor of that solve
+    double worst_error_bound = 0.0;
+    void add(const NewtonOutcome& o);
+    // "N WHAT stalled at round-off: scaled residual up to X (tolerance T), expected floor Y
+    // (ε‖D_r⁻¹|J|D_x‖∞); algebraic error ≤ Z (scaled)".
+    std::string describe(const char* what, double tolerance) const;
+};
+
 struct StepRecord {
     double load_factor = 0.0;
     int newton_iterations = 0;  // summed over sub-steps and cut attempts that converged
     int substeps = 0;
+    // The last sub-step's solve (the reported state): criterion, scaled residual, error bound
+    // and expected round-off floor of NewtonOutcome.
+    Convergence criterion = Convergence::none;
+    double scaled_residual = 0.0;
+    double error_bound = 0.0;
+    double round_off_floor = 0.0;
 };
 
 struct StaticOutcome {
     SolveStatus status = SolveStatus::converged;
     std::string message;
-    std::vector<StepRecord> steps;  // reported (converged) steps
+    std::vector<StepRecord> steps;            // reported (converged) steps
     double last_converged_load_factor = 0.0;  // the state the problem is left in
 };
 

@@ -3,8 +3,8 @@
 // make_problem.cpp does for statics), so nothing below dispatches on the parameterization.
 //
 // Each function fills the result JSON of DESIGN.md's contract (run_case has written the header):
-//   `dofs`, `status` (converged | diverged | singular | error; modal also
-//   eigenpair-check-failed), `message`, `counters`;
+//   `dofs`, `status` (converged | stalled-at-round-off | diverged | singular | error; modal also
+//   eigenpair-check-failed; mixed also kinematics-unresolved), `message`, `counters`;
 //   dynamic: `steps`, one per output time, built with step_json(model, nullopt, t, iterations, …)
 //            (run writes the CSV time history from them);
 //   modal:   `modes` (model.analysis.modal.modes of them, lowest first; per mode: `s` [Re, Im]
@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/model.hpp"
+#include "core/static_driver.hpp"
 
 namespace rotbeam {
 
@@ -32,6 +33,14 @@ void run_displacement_modal(const Model& model, bool trace, nlohmann::json& resu
 // cases/runner/run_mixed_dynamics.cpp (issue 9)
 void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result);
 void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result);
+
+// The static state a dynamic or modal analysis starts from (cases/runner/run_case.cpp): a failure
+// sets the run's status and message ("static state: …") and returns false; a state stalled at
+// round-off is kept (`static_state` in the result) and set_analysis_status carries it over.
+bool static_state_usable(const StaticOutcome& out, nlohmann::json& result);
+// The analysis's status and message, except that a converged analysis about a static state that
+// stalled at round-off reports stalled-at-round-off, with the static state's message appended.
+void set_analysis_status(nlohmann::json& result, SolveStatus status, const std::string& message);
 
 // What a formulation without the analysis reports (not a solver failure: `verify` counts the
 // references it would check as unavailable).

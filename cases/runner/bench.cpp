@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "study_math.hpp"
 #include "timing.hpp"
 
@@ -73,7 +74,7 @@ Candidate try_candidate(const BenchTarget& t, const Combination& c, const GridPo
             k.message = r.value("message", "");
             k.dofs = r.value("dofs", 0);
             k.iterations = total_newton_iterations(r);
-            if (k.status == "converged" && converged_steps_exist(r)) {
+            if (has_solution(k.status) && converged_steps_exist(r)) {
                 k.error = target_error(r["steps"].back(), length, reference);
             }
         },

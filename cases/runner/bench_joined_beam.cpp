@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
@@ -56,7 +57,7 @@ void try_attempt(Attempt& a, double accuracy,
     a.message = r.value("message", "");
     a.dofs = r.value("dofs", 0);
     a.iterations = dynamic_newton_iterations(r);
-    if (a.status == "converged") a.error = error_of(r);
+    if (has_solution(a.status)) a.error = error_of(r);
     a.reached = std::isfinite(a.error) && a.error <= accuracy;
 }
 
@@ -96,7 +97,7 @@ nlohmann::json combination_row(const Combination& c, std::vector<Attempt>& tried
                 best = a.error;
                 best_what = a.description + ", " + sci(a.seconds) + " s";
             }
-            if (a.status != "converged" && failure.empty())
+            if (!has_solution(a.status) && failure.empty())
                 failure = a.description + ": " + a.status + " " + a.message.substr(0, 100);
         }
         row["status"] = "unreachable";
@@ -199,7 +200,7 @@ void print_summary(const nlohmann::json& rows, double target_seconds) {
 namespace {
 
 std::vector<double> frequencies(const nlohmann::json& r) {
-    if (r.value("status", "") != "converged" || !r.contains("frequencies_hz") ||
+    if (!has_solution(r.value("status", "")) || !r.contains("frequencies_hz") ||
         r["frequencies_hz"].size() < kModes) {
         return {};
     }
@@ -328,7 +329,7 @@ nlohmann::json bench_joined_beam_dynamic(bool quick, int repeats,
         std::string unavailable;
         if (ref.status.rfind("unavailable: ", 0) == 0) {
             unavailable = ref.status.substr(13);
-        } else if (ref.status != "converged") {
+        } else if (!has_solution(ref.status)) {
             Attempt failed;
             failed.description = "reference";
             failed.status = ref.status;

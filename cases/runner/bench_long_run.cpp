@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "study_common.hpp"
@@ -327,7 +328,7 @@ void print_row(const nlohmann::json& r) {
               << fixed(d("growth_bytes_per_step"), 0) << std::setw(8)
               << fixed(d("heap_growth_bytes_per_output"), 0) << std::setw(7)
               << fixed(r["cpu_seconds"].get<double>(), 1) << "\n";
-    if (r["status"] != "converged") {
+    if (!has_solution(r["status"].get<std::string>())) {
         std::cout << "    " << r["status"].get<std::string>() << ": "
                   << r["message"].get<std::string>() << "\n";
     }

@@ -112,9 +112,18 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
        << "\n";
     os << std::setprecision(10);
     for (const auto& step : r["steps"]) {
-        if (step.contains("load_factor")) os << "  load factor " << step["load_factor"].get<double>();
+        if (step.contains("load_factor"))
+            os << "  load factor " << step["load_factor"].get<double>();
         if (step.contains("time")) os << "  t = " << step["time"].get<double>();
-        os << "  (" << step["newton_iterations"] << " Newton iterations)\n";
+        os << "  (" << step["newton_iterations"] << " Newton iterations";
+        if (step.contains("convergence")) {
+            const auto& c = step["convergence"];
+            os << std::setprecision(3) << "; " << c["criterion"].get<std::string>()
+               << ", scaled residual " << c["scaled_residual"].get<double>()
+               << ", algebraic error <= " << c["error_bound"].get<double>()
+               << std::setprecision(10);
+        }
+        os << ")\n";
         for (const auto& [name, p] : step["points"].items()) {
             const auto& u = p["displacement"];
             os << "    " << std::left << std::setw(8) << name << std::right << " u = ["
@@ -138,18 +147,18 @@ void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
     };
     if (const auto file = a.value("json")) write(*file);
     if (const auto dir = a.value("out")) {
-        write(fs::path(*dir) / (r["case"].get<std::string>() + "_" +
-                                r["rotation"].get<std::string>() + "_" +
-                                r["formulation"].get<std::string>() + ".json"));
+        write(fs::path(*dir) /
+              (r["case"].get<std::string>() + "_" + r["rotation"].get<std::string>() + "_" +
+               r["formulation"].get<std::string>() + ".json"));
     }
 }
 
 }  // namespace
 
 int command_list(const Args& args) {
-    const CommandSpec spec{"list", "", 0, 0,
-                           "List the catalog cases, the parameterizations and the formulations.",
-                           {}};
+    const CommandSpec spec{
+        "list", "", 0, 0, "List the catalog cases, the parameterizations and the formulations.",
+        {}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -165,7 +174,10 @@ int command_list(const Args& args) {
 }
 
 int command_check(const Args& args) {
-    const CommandSpec spec{"check", "CASE.yaml", 1, 1,
+    const CommandSpec spec{"check",
+                           "CASE.yaml",
+                           1,
+                           1,
                            "Validate a case file (with any --set overrides) and describe the "
                            "model: points, members, elements, sections, loads, analysis.",
                            {kSetOption}};
@@ -182,7 +194,10 @@ int command_check(const Args& args) {
 
 int command_run(const Args& args) {
     const CommandSpec spec{
-        "run", "CASE.yaml", 1, 1,
+        "run",
+        "CASE.yaml",
+        1,
+        1,
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
         "result (DESIGN.md contract). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
@@ -212,11 +227,16 @@ int command_run(const Args& args) {
 
 int command_reference(const Args& args) {
     const CommandSpec spec{
-        "reference", "CASE.yaml", 1, 1,
+        "reference",
+        "CASE.yaml",
+        1,
+        1,
         "Continuum reference solution of a static single-member case with tip loads (shooting on "
         "the Cosserat rod equations with GSL), in the same JSON contract as `run`.",
-        {kSetOption, {"json", "FILE", "write the result JSON to FILE"},
-         {"out", "DIR", "write DIR/<case>_continuum.json"}, {"quiet", "", "print nothing"}}};
+        {kSetOption,
+         {"json", "FILE", "write the result JSON to FILE"},
+         {"out", "DIR", "write DIR/<case>_continuum.json"},
+         {"quiet", "", "print nothing"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -236,8 +256,12 @@ int command_reference(const Args& args) {
 
 int command_study(const Args& args) {
     const CommandSpec spec{
-        "study", "NAME", 1, 1,
-        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for every "
+        "study",
+        "NAME",
+        1,
+        1,
+        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for "
+        "every "
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
         "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
         "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/results.hpp"
+#include "core/static_driver.hpp"
 #include "core/version.hpp"
 
 namespace rotbeam::cli {
@@ -72,7 +73,7 @@ RunSpec response_spec(const Combination& c, const TimeSetting& s, const Response
 
 History joint_history(const nlohmann::json& result) {
     History h;
-    if (result.value("status", "") != "converged" || !converged_steps_exist(result)) return h;
+    if (!has_solution(result.value("status", "")) || !converged_steps_exist(result)) return h;
     for (const auto& step : result["steps"]) {
         const Vec3 u = point_displacement(step, "joint");
         h.time.push_back(step["time"].get<double>());

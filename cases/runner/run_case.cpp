@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "analyses.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
@@ -12,7 +13,6 @@
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
-#include "analyses.hpp"
 #include "make_problem.hpp"
 
 namespace rotbeam {
@@ -23,10 +23,14 @@ namespace {
 
 const char* quadrature_name(Quadrature q) {
     switch (q) {
-        case Quadrature::automatic: return "automatic";
-        case Quadrature::reduced: return "reduced";
-        case Quadrature::full: return "full";
-        case Quadrature::gll: return "gll";
+        case Quadrature::automatic:
+            return "automatic";
+        case Quadrature::reduced:
+            return "reduced";
+        case Quadrature::full:
+            return "full";
+        case Quadrature::gll:
+            return "gll";
     }
     return "automatic";
 }
@@ -96,15 +100,30 @@ nlohmann::json sections_json(const Model& model, double load_factor,
     return {{"load_factor", load_factor}, {"stations", stations}};
 }
 
+// How the reported state of a load step was accepted (core/convergence.hpp): the criterion, the
+// scaled residual, the bound on the scaled algebraic error, and the expected round-off floor when
+// the last solve computed it (it does when the final correction was computed).
+nlohmann::json convergence_json(const StepRecord& step) {
+    nlohmann::json c = {{"criterion", to_string(step.criterion)},
+                        {"scaled_residual", step.scaled_residual},
+                        {"error_bound", step.error_bound}};
+    if (step.round_off_floor > 0.0) c["round_off_floor"] = step.round_off_floor;
+    return c;
+}
+
 // KINSOL (line search, scaling, KLU) in place of the in-house Newton, for additive systems.
 NewtonOutcome kinsol_step_solver(NonlinearSystem& system, const NewtonSettings& settings) {
     KinsolSettings k;
     k.residual_tolerance = settings.residual_tolerance;
+    k.increment_tolerance = settings.increment_tolerance;
     k.max_iterations = settings.max_iterations;
     k.line_search = settings.line_search;
     const KinsolOutcome o = solve_kinsol(system, k);
     NewtonOutcome out;
     out.converged = o.converged;
+    out.criterion = o.criterion;
+    out.error_bound = o.error_bound;
+    out.round_off_floor = o.round_off_floor;
     out.iterations = static_cast<int>(o.iterations);
     out.scaled_residual = o.scaled_residual;
     out.singular = o.singular;
@@ -162,6 +181,7 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
                     rotation_vectors_along_beam(model, problem->rotation_stations(), states);
                 result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
                                                     step.newton_iterations, states, continued));
+                result["steps"].back()["convergence"] = convergence_json(step);
                 add_centerline(*problem, result["steps"].back());
             },
             solver);
@@ -185,6 +205,26 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
 }
 
 }  // namespace
+
+bool static_state_usable(const StaticOutcome& out, nlohmann::json& result) {
+    if (out.status == SolveStatus::stalled_at_round_off) {
+        result["static_state"] = {{"status", to_string(out.status)}, {"message", out.message}};
+    }
+    if (has_solution(out.status)) return true;
+    result["status"] = to_string(out.status);
+    result["message"] = "static state: " + out.message;
+    return false;
+}
+
+void set_analysis_status(nlohmann::json& result, SolveStatus status, const std::string& message) {
+    result["status"] = to_string(status);
+    result["message"] = message;
+    if (status == SolveStatus::converged && result.contains("static_state")) {
+        result["status"] = result["static_state"]["status"];
+        result["message"] =
+            message + "; static state: " + result["static_state"]["message"].get<std::string>();
+    }
+}
 
 void report_unavailable(const Model& model, nlohmann::json& result) {
     result["available"] = false;
@@ -231,8 +271,8 @@ nlohmann::json run_case(const RunRequest& request) {
     if (!all_finite(result)) {
         // A result never prints NaN: drop the numbers, say what happened.
         result["status"] = "error";
-        result["message"] = "non-finite values in the solution (" +
-                            result["message"].get<std::string>() + ")";
+        result["message"] =
+            "non-finite values in the solution (" + result["message"].get<std::string>() + ")";
         result["steps"] = nlohmann::json::array();
     }
     return result;

@@ -69,10 +69,7 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
         result["message"] = *unresolved;
         return false;
     }
-    if (out.status == SolveStatus::converged) return true;
-    result["status"] = to_string(out.status);
-    result["message"] = "static state: " + out.message;
-    return false;
+    return static_state_usable(out, result);
 }
 
 const form::MixedLayout& base_layout(const form::MixedLayout& l) { return l; }
@@ -153,6 +150,10 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                                          "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
+    // A static state that stalled at round-off is carried into the modal status.
+    if (result["status"] == "converged") {
+        set_analysis_status(result, SolveStatus::converged, result["message"].get<std::string>());
+    }
 }
 
 void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNormDrift& worst) {
@@ -251,8 +252,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
     }
     result["counters"] = counters_json(dyn.counters());
-    result["status"] = to_string(out.status);
-    result["message"] = out.message;
+    set_analysis_status(result, out.status, out.message);
     if (unresolved) {
         result["status"] = kKinematicsUnresolved;
         result["message"] = *unresolved;
@@ -263,7 +263,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         std::ostringstream m;
         m << "; max ||q| - 1| over the output times: nodes " << drift.nodes
           << ", elements (midpoint averages, O(dL^2)) " << drift.elements;
-        result["message"] = out.message + m.str();
+        result["message"] = result["message"].get<std::string>() + m.str();
     }
 }
 

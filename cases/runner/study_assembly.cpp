@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/static_driver.hpp"
 #include "run_case.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
@@ -185,7 +186,7 @@ nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md) {
             }
             const nlohmann::json r_needed = run_spec(needed), r_all = run_spec(all);
             const std::string status = r_needed.value("status", "error");
-            if (status != "converged" && status != "diverged" && status != "singular") {
+            if (!has_solution(status) && status != "diverged" && status != "singular") {
                 // Not run at all (unavailable, refused): nothing to time.
                 std::string message = r_needed.value("message", "");
                 if (message.size() > 80) message = message.substr(0, 77) + "...";

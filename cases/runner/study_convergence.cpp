@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bench.hpp"
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
@@ -77,7 +78,7 @@ std::vector<Refinement> refinements(const std::string& formulation, bool quick) 
 
 double step_error(const ConvergenceCase& c, const nlohmann::json& result, double length,
                   const nlohmann::json& reference) {
-    if (result.value("status", "") != "converged" || !converged_steps_exist(result))
+    if (!has_solution(result.value("status", "")) || !converged_steps_exist(result))
         return kNoValue;
     const nlohmann::json& step = result["steps"].back();
     if (c.exact_rollup) return rollup_tip_error(step, length);

@@ -4,6 +4,7 @@
 // function that assembles the four parts.
 #include <cmath>
 
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_extremes.hpp"
 #include "study_math.hpp"
@@ -62,7 +63,7 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
             const std::string status = r.value("status", "error");
             unavailable = status == "unavailable";
             if (unavailable) break;
-            const bool ok = status == "converged" && converged_steps_exist(r);
+            const bool ok = has_solution(status) && converged_steps_exist(r);
             const double e = ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue;
             const int it = total_newton_iterations(r);
             row << " " << (ok ? std::to_string(it) + " it, " + sci(e) : status) << " |";
@@ -121,7 +122,7 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
                 ov.push_back("discretization.order=" + std::to_string(s.order));
             }
             const nlohmann::json r = run_spec({"cantilever-moment", s.combination, ov, n});
-            const bool ok = r.value("status", "") == "converged" && converged_steps_exist(r);
+            const bool ok = has_solution(r.value("status", "")) && converged_steps_exist(r);
             series.add(n, r.value("dofs", 0), r.value("wall_seconds", 0.0),
                        ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue);
         }

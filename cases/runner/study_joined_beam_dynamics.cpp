@@ -17,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
@@ -59,7 +60,7 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
         cpu.push_back(thread_cpu_seconds() - c0);
         wall.push_back(t.median_seconds);
         const double spent = std::accumulate(cpu.begin(), cpu.end(), 0.0);
-        if (first.value("status", "") != "converged" || cpu.back() > 1.0 || spent > 2.0) break;
+        if (!has_solution(first.value("status", "")) || cpu.back() > 1.0 || spent > 2.0) break;
     }
     p.status = first.value("status", "error");
     p.dofs = first.value("dofs", 0);
@@ -67,7 +68,7 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
     p.steps = dynamic_steps(first);
     p.repeats = static_cast<int>(cpu.size());
     p.spent = cpu.front();
-    if (p.status == "converged") {
+    if (has_solution(p.status)) {
         p.cpu = median(cpu);
         p.wall = median(wall);
         p.error = history_error(joint_history(first), reference);
@@ -242,7 +243,7 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
     const History ida_history = joint_history(ida);
 
     auto error_or_nan = [](const ReferenceResponse& a, const ReferenceResponse& b) {
-        return a.status == "converged" && b.status == "converged"
+        return has_solution(a.status) && has_solution(b.status)
                    ? history_error(a.history, b.history)
                    : kNoValue;
     };
@@ -276,7 +277,7 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
     const ReferenceResponse mixed_ref = find(mixed.label());
     const ReferenceResponse disp_ref = find(disp.label());
     const double cross = error_or_nan(jobs[0].result, mixed_ref);
-    const double ida_vs_trap = mixed_ref.status == "converged" && ida_history.size() > 0
+    const double ida_vs_trap = has_solution(mixed_ref.status) && ida_history.size() > 0
                                    ? history_error(ida_history, mixed_ref.history)
                                    : kNoValue;
     const double space_p1 = error_or_nan(disp_ref, fine_space);
@@ -366,7 +367,7 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     };
     std::vector<Task> tasks;
     for (const ReferenceJob& j : jobs) {
-        if (j.result.status != "converged") continue;
+        if (!has_solution(j.result.status)) continue;
         for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick))
             tasks.push_back({&j, s});
     }
@@ -383,7 +384,7 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     for (std::thread& t : pool) t.join();
     size_t task = 0;
     for (const ReferenceJob& j : jobs) {
-        if (j.result.status != "converged") {
+        if (!has_solution(j.result.status)) {
             notes.push_back(j.combination.label() + ": " + j.result.status.substr(0, 160));
             continue;
         }

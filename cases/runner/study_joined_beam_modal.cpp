@@ -13,6 +13,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "mode_matching.hpp"
 #include "studies.hpp"
@@ -78,7 +79,7 @@ ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) 
         }
         std::vector<double> f;
         std::vector<std::vector<double>> sh;
-        if (result.value("status", "") == "converged" && result.contains("modes")) {
+        if (has_solution(result.value("status", "")) && result.contains("modes")) {
             for (const auto& m : result["modes"]) {
                 f.push_back(m["frequency_hz"].get<double>());
                 sh.push_back(m["stations"].get<std::vector<double>>());

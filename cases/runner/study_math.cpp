@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/static_driver.hpp"
+
 namespace rotbeam::cli {
 
 namespace {
@@ -81,7 +83,7 @@ Reach classify_reach(const std::vector<ConvergedStep>& steps, const std::string&
         reach.load_factor = s.load_factor;
         ++reach.steps_reached;
     }
-    if (status == "converged") {
+    if (has_solution(status)) {
         reach.stopped = reach.steps_reached >= target_steps ? "completed" : "error";
     } else {
         reach.stopped = status;

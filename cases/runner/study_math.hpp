@@ -41,8 +41,8 @@ struct Reach {
 // equilibrium) when the error jumped there — by more than `jump_factor` over the previous step's,
 // or at the first step — and "lost accuracy" when the error grew smoothly past the tolerance (a
 // discretization error accumulating along the path, e.g. the precession phase of a coarse helix).
-// Otherwise the reach is the last step, stopped by the run's `status` ("converged" with every
-// target step reached reads "completed").
+// Otherwise the reach is the last step, stopped by the run's `status` (a status with a solution,
+// converged or stalled-at-round-off, with every target step reached reads "completed").
 Reach classify_reach(const std::vector<ConvergedStep>& steps, const std::string& status,
                      int target_steps, double tolerance, double jump_factor = 10.0);
 

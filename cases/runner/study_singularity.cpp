@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_math.hpp"
@@ -225,11 +226,11 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
             // coarse, not on another branch).
             const double last = p.lambda.empty() ? 0.0 : p.lambda.back();
             const double star =
-                p.status == "converged" ? last : last_converged_factor(p.message, last);
+                has_solution(p.status) ? last : last_converged_factor(p.message, last);
             double max_error = 0.0;
             for (double e : p.error) max_error = std::max(max_error, e);
             data << n << " " << star << "\n";
-            row << " " << fixed(star, 4) << (p.status == "converged" ? " (all)" : "") << ", "
+            row << " " << fixed(star, 4) << (has_solution(p.status) ? " (all)" : "") << ", "
                 << sci(max_error, 1) << " |";
             out.push_back({{"combination", comb.label()},
                            {"elements", n},

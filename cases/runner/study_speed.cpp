@@ -11,6 +11,7 @@
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
+#include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
@@ -80,7 +81,7 @@ Point speed_point(const SpeedCase& c, const Combination& comb, const Mesh& m,
     Point p{
         comb.label() + (comb.formulation == "displacement" ? "/p" + std::to_string(m.order) : ""),
         m, kNoValue, kNoValue, r.value("dofs", 0)};
-    if (unavailable || r.value("status", "") != "converged" || !converged_steps_exist(r)) return p;
+    if (unavailable || !has_solution(r.value("status", "")) || !converged_steps_exist(r)) return p;
     const nlohmann::json& step = r["steps"].back();
     p.error = c.exact_rollup
                   ? rollup_tip_error(step, 12.0)

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
+#include "core/static_driver.hpp"
 #include "run_case.hpp"
 #include "verify_plan.hpp"
 
@@ -52,7 +53,7 @@ std::vector<double> computed_values(const Model& model, const nlohmann::json& re
     const std::string status_note =
         result["status"].get<std::string>() + ": " + result["message"].get<std::string>();
     if (ref.quantity == "frequency") {
-        if (result["status"] != "converged") {
+        if (!has_solution(result["status"].get<std::string>())) {
             why = status_note;
             return out;
         }
@@ -66,8 +67,9 @@ std::vector<double> computed_values(const Model& model, const nlohmann::json& re
     }
     const nlohmann::json* step = find_step(result, ref);
     if (!step || !(*step)["points"].contains(ref.point)) {
-        why = result["status"] == "converged" ? "no result at that load factor/time and point"
-                                              : status_note;
+        why = has_solution(result["status"].get<std::string>())
+                  ? "no result at that load factor/time and point"
+                  : status_note;
         return out;
     }
     const nlohmann::json& p = (*step)["points"][ref.point];

@@ -66,13 +66,15 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     }
     additive_ = update == "additive";
     if (model.solver.mip && additive_) {
-        throw InputError("solver.mip: the mixed-integration-point Newton needs the "
-                         "multiplicative update (its stress prediction maps δψ, not δp)");
+        throw InputError(
+            "solver.mip: the mixed-integration-point Newton needs the "
+            "multiplicative update (its stress prediction maps δψ, not δp)");
     }
     if (additive_ && P::kSize != 3) {
-        throw InputError("discretization.update: additive needs a three-parameter rotation "
-                         "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
-                         std::string(P::kName) + "'");
+        throw InputError(
+            "discretization.update: additive needs a three-parameter rotation "
+            "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
+            std::string(P::kName) + "'");
     }
     const size_t nn = static_cast<size_t>(mesh_.order) + 1;
     pe_.resize(nn);
@@ -123,7 +125,8 @@ void DisplacementStatics<P>::build_pattern() {
             for (int b = 0; b < nn; ++b) {
                 const int ra = mesh_.nodes[nodes[a]].dof, cb = mesh_.nodes[nodes[b]].dof;
                 if (ra < 0 || cb < 0) continue;
-                for (int c = 0; c < 6; ++c) block_index_[k][(a * nn + b) * 6 + c] = index_of(ra, cb + c);
+                for (int c = 0; c < 6; ++c)
+                    block_index_[k][(a * nn + b) * 6 + c] = index_of(ra, cb + c);
             }
         }
     }
@@ -139,8 +142,8 @@ void DisplacementStatics<P>::build_pattern() {
 // loads (prescribed motion only) the bending stiffness over L² times the prescribed magnitude.
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::compute_scales(const Model& model) {
-    const double L = model.solver.length_scale > 0.0 ? model.solver.length_scale
-                                                     : mesh_.max_member_length;
+    const double L =
+        model.solver.length_scale > 0.0 ? model.solver.length_scale : mesh_.max_member_length;
     double F = 0.0;
     for (const PointLoad& l : model.point_loads) {
         F = std::max({F, l.force.norm(), l.moment.norm() / L});
@@ -153,7 +156,8 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
         for (const QuadraturePoint& q : e.qp) {
             F = std::max(F, q.mass * model.gravity.norm() * L);
             stiffness = std::max(stiffness, q.C_star.block<3, 3>(3, 3).diagonal().maxCoeff());
-            axial_stiffness_ = std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
+            axial_stiffness_ =
+                std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
         }
     }
     if (!(F > 0.0)) {
@@ -184,9 +188,10 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::update_residual_scale() {
     // Floor: the residual's round-off is ~c ε_mach EA (c ≲ 1e3: sums over quadrature points
-    // weighted by |N′| ~ p²/h). With F ≥ 1e-4 EA that floor stays ≤ 2e-9 scaled, which the
-    // driver's round-off acceptance (≤ 1e4 × tolerance with a negligible increment) admits;
-    // below it, a small load on a stiff member (13 lbf on EA = 1e7) could never converge.
+    // weighted by |N′| ~ p²/h). With F ≥ 1e-4 EA that floor stays ≤ 2e-9 scaled, where the
+    // driver's stall test recognizes it (stalled-at-round-off, within 100× the floor it expects,
+    // docs/solver-convergence.md); below it, a small load on a stiff member (13 lbf on EA = 1e7)
+    // would stall far above any tolerance a user would ask for.
     constexpr double kRoundoffFloor = 1e-4;
     force_scale_ = fixed_force_scale_
                        ? unit_force_scale_

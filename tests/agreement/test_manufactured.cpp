@@ -41,7 +41,7 @@ Error solve_and_measure(StaticProblem& problem, const Model& model) {
         run_static(problem, model.analysis.statics.load_factors,
                    newton_settings_from(model.solver, model.analysis.statics), nullptr);
     Error e;
-    e.converged = out.status == SolveStatus::converged;
+    e.converged = has_solution(out.status);
     e.message = out.message;
     if (!e.converged) return e;
     for (const char* name : {"q1", "mid", "q3"}) {

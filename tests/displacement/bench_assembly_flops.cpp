@@ -81,8 +81,7 @@ double g_budget_seconds = 0.5;
 template <class Problem>
 double seconds_per_evaluation(Problem& problem) {
     const StaticOutcome out = run_static(problem, {0.5}, NewtonSettings{}, nullptr);
-    if (out.status != SolveStatus::converged)
-        std::printf("  (static state: %s)\n", out.message.c_str());
+    if (!has_solution(out.status)) std::printf("  (static state: %s)\n", out.message.c_str());
     VecX r;
     SparseMatrix J;
     problem.evaluate(r, &J);

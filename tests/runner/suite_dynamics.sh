@@ -20,12 +20,15 @@ names = os.listdir(runs)
 for case in ("joined-beam-dead", "joined-beam-follower"):
     mine = [n for n in names if n.startswith(case + "_")]
     assert len(mine) == 8, (case, mine)  # 2 formulations × 4 parameterizations
+    # Every combination has the dynamic analysis: each run must reach t = 2 s with a solution.
+    # The displacement runs' time steps meet the case's 1e-12 residual tolerance or stall at
+    # their round-off floor (docs/solver-convergence.md), which the message must quantify.
     for n in mine:
         j = json.load(open(os.path.join(runs, n)))
-        if j["status"] == "error":
-            assert j["steps"] == [] and j["message"], n
-        else:
-            assert "time" in j["steps"][-1] and abs(j["steps"][-1]["time"] - 2.0) < 1e-6, n
+        assert j["status"] in ("converged", "stalled-at-round-off"), (n, j["status"], j["message"])
+        if j["status"] == "stalled-at-round-off":
+            assert "expected floor" in j["message"], (n, j["message"])
+        assert "time" in j["steps"][-1] and abs(j["steps"][-1]["time"] - 2.0) < 1e-6, n
     wm = json.load(open(os.path.join(runs, case + "_wiener-milenkovic_mixed.json")))
     assert wm["status"] == "converged", wm["message"]
 assert any(n.startswith("joined-beam-160-per-member_") for n in names), names
