@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/limits.hpp"
 #include "core/geometry.hpp"
 
 namespace rotbeam {
@@ -132,6 +133,9 @@ void describe_analysis(const Model& model, std::ostream& os) {
     int gated = 0;
     for (const ReferenceValue& r : model.references) gated += r.gated ? 1 : 0;
     os << " (" << gated << " gated)\n";
+    const cases::MemoryEstimate e = cases::estimate_memory(model);
+    os << "memory: estimated " << cases::memory_text(e.bytes) << " (about " << e.unknowns
+       << " unknowns; mostly " << e.dominant << "; docs/case-format.md, Limits)\n";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
@@ -235,7 +236,8 @@ Member read_member(const YamlReader& r, const YAML::Node& n, const std::string& 
         m.twist_end = tw.back();
     }
     read_member_sections(r, n, key, sections, m);
-    m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements");
+    m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements",
+                                    kMaxElementsPerMember);
     return m;
 }
 

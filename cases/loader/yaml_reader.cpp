@@ -214,6 +214,16 @@ int YamlReader::positive_integer(const YAML::Node& node, const std::string& key)
     return v;
 }
 
+int YamlReader::positive_integer(const YAML::Node& node, const std::string& key, long limit) const {
+    const int v = positive_integer(node, key);
+    if (v > limit) {
+        fail(node, key,
+             "must be at most " + std::to_string(limit) + " (a limit of the case format), got " +
+                 quoted(node.Scalar()));
+    }
+    return v;
+}
+
 bool YamlReader::boolean(const YAML::Node& node, const std::string& key) const {
     const std::string text = scalar(node, key, "true or false");
     try {

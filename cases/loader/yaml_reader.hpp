@@ -59,6 +59,8 @@ class YamlReader {
     double non_negative(const YAML::Node& node, const std::string& key) const;
     int integer(const YAML::Node& node, const std::string& key) const;
     int positive_integer(const YAML::Node& node, const std::string& key) const;
+    // A positive integer no larger than `limit` (a size limit of limits.hpp).
+    int positive_integer(const YAML::Node& node, const std::string& key, long limit) const;
     bool boolean(const YAML::Node& node, const std::string& key) const;
     std::string string(const YAML::Node& node, const std::string& key) const;
     // One of `choices` (else: the list, and the closest choice).

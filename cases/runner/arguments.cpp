@@ -1,6 +1,7 @@
 #include "arguments.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -19,7 +20,7 @@ std::vector<std::string> ParsedArguments::values(const std::string& name) const 
 }
 
 std::optional<int> ParsedArguments::positive_int(const std::string& command,
-                                                 const std::string& name) const {
+                                                 const std::string& name, int max, int min) const {
     const std::optional<std::string> v = value(name);
     if (!v) return std::nullopt;
     size_t used = 0;
@@ -29,9 +30,10 @@ std::optional<int> ParsedArguments::positive_int(const std::string& command,
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != v->size() || n <= 0 || n > 1000000) {
-        throw InputError("rotbeam " + command + ": --" + name +
-                         ": expected a positive integer, got '" + *v + "'");
+    if (used != v->size() || v->empty() || !std::isdigit(static_cast<unsigned char>(v->front())) ||
+        n < min || n > max) {
+        throw InputError("rotbeam " + command + ": --" + name + ": expected an integer from " +
+                         std::to_string(min) + " to " + std::to_string(max) + ", got '" + *v + "'");
     }
     return static_cast<int>(n);
 }
@@ -113,7 +115,8 @@ ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::
             value = *inline_value;
         } else {
             if (i + 1 >= args.size()) {
-                throw InputError(prefix + "--" + name + " needs a value (" + option->value_name + ")");
+                throw InputError(prefix + "--" + name + " needs a value (" + option->value_name +
+                                 ")");
             }
             value = args[++i];
         }

@@ -58,6 +58,7 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
         {"rotation", "discretization.rotation"},
         {"formulation", "discretization.formulation"},
         {"order", "discretization.order"},
+        {"elements", "members.*.elements"},
         {"interpolation", "discretization.interpolation"}};
     for (const auto& [option, key] : shorthands) {
         if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
@@ -66,13 +67,9 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
     return overrides;
 }
 
-Model load_with_options(const std::string& command, const std::string& path,
-                        const ParsedArguments& a, CaseParts parts = CaseParts::all) {
-    Model model = load_case(path, overrides_from(a), parts);
-    if (const auto n = a.positive_int(command, "elements")) {
-        for (Member& m : model.members) m.elements = *n;
-    }
-    return model;
+Model load_with_options(const std::string& path, const ParsedArguments& a,
+                        CaseParts parts = CaseParts::all) {
+    return load_case(path, overrides_from(a), parts);
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
@@ -83,7 +80,8 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
        << "\n";
     os << std::setprecision(10);
     for (const auto& step : r["steps"]) {
-        if (step.contains("load_factor")) os << "  load factor " << step["load_factor"].get<double>();
+        if (step.contains("load_factor"))
+            os << "  load factor " << step["load_factor"].get<double>();
         if (step.contains("time")) os << "  t = " << step["time"].get<double>();
         os << "  (" << step["newton_iterations"] << " Newton iterations)\n";
         for (const auto& [name, p] : step["points"].items()) {
@@ -108,18 +106,18 @@ void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
     };
     if (const auto file = a.value("json")) write(*file);
     if (const auto dir = a.value("out")) {
-        write(fs::path(*dir) / (r["case"].get<std::string>() + "_" +
-                                r["rotation"].get<std::string>() + "_" +
-                                r["formulation"].get<std::string>() + ".json"));
+        write(fs::path(*dir) /
+              (r["case"].get<std::string>() + "_" + r["rotation"].get<std::string>() + "_" +
+               r["formulation"].get<std::string>() + ".json"));
     }
 }
 
 }  // namespace
 
 int command_list(const Args& args) {
-    const CommandSpec spec{"list", "", 0, 0,
-                           "List the catalog cases, the parameterizations and the formulations.",
-                           {}};
+    const CommandSpec spec{
+        "list", "", 0, 0, "List the catalog cases, the parameterizations and the formulations.",
+        {}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -135,7 +133,10 @@ int command_list(const Args& args) {
 }
 
 int command_check(const Args& args) {
-    const CommandSpec spec{"check", "CASE.yaml", 1, 1,
+    const CommandSpec spec{"check",
+                           "CASE.yaml",
+                           1,
+                           1,
                            "Validate a case file (with any --set overrides) and describe the "
                            "model: points, members, elements, sections, loads, analysis.",
                            {kSetOption}};
@@ -152,12 +153,15 @@ int command_check(const Args& args) {
 
 int command_run(const Args& args) {
     const CommandSpec spec{
-        "run", "CASE.yaml", 1, 1,
+        "run",
+        "CASE.yaml",
+        1,
+        1,
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
         "result (DESIGN.md contract). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
          {"formulation", "NAME", "displacement | mixed"},
-         {"elements", "N", "elements per member (overrides the case)"},
+         {"elements", "N", "elements of every member (members.*.elements)"},
          {"order", "P", "element order (displacement formulation)"},
          {"interpolation", "NAME", "relative | direct"},
          kSetOption,
@@ -173,7 +177,7 @@ int command_run(const Args& args) {
     const std::string path = resolve_case_path(a.positional[0]);
     // A run reads the case file alone: the published references beside a catalog case are for
     // check, verify and the suite (case_loader.hpp).
-    const Model model = load_with_options("run", path, a, CaseParts::case_file);
+    const Model model = load_with_options(path, a, CaseParts::case_file);
     const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
@@ -182,11 +186,16 @@ int command_run(const Args& args) {
 
 int command_reference(const Args& args) {
     const CommandSpec spec{
-        "reference", "CASE.yaml", 1, 1,
+        "reference",
+        "CASE.yaml",
+        1,
+        1,
         "Continuum reference solution of a static single-member case with tip loads (shooting on "
         "the Cosserat rod equations with GSL), in the same JSON contract as `run`.",
-        {kSetOption, {"json", "FILE", "write the result JSON to FILE"},
-         {"out", "DIR", "write DIR/<case>_continuum.json"}, {"quiet", "", "print nothing"}}};
+        {kSetOption,
+         {"json", "FILE", "write the result JSON to FILE"},
+         {"out", "DIR", "write DIR/<case>_continuum.json"},
+         {"quiet", "", "print nothing"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -206,8 +215,12 @@ int command_reference(const Args& args) {
 
 int command_study(const Args& args) {
     const CommandSpec spec{
-        "study", "NAME", 1, 1,
-        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for every "
+        "study",
+        "NAME",
+        1,
+        1,
+        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for "
+        "every "
         "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
         "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
         "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "
@@ -215,7 +228,7 @@ int command_study(const Args& args) {
         "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
         "(study-NAME.md, .json, figures).",
         {{"json", "FILE", "write the study JSON to FILE (rotations)"},
-         {"samples", "N", "angles in the sweep (default 721, rotations)"},
+         {"samples", "N", "angles in the sweep, 2 to 20000 (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},
          {"reduced-follower", "",
@@ -230,7 +243,7 @@ int command_study(const Args& args) {
                                                       a.has("quick"), a.has("reduced-follower")});
         return 0;
     }
-    const int samples = a.positive_int("study", "samples").value_or(721);
+    const int samples = a.positive_int("study", "samples", kMaxSamples, 2).value_or(721);
     const nlohmann::json study = param::rotation_study(samples);
     if (const auto file = a.value("json")) {
         write_file_atomically(*file, study.dump(1) + "\n");

@@ -215,7 +215,7 @@ int command_suite(const Args& args) {
         "DIR/index.html, plots). "
         "Finished runs whose inputs are unchanged are skipped on a rerun.",
         {{"out", "DIR", "output folder (default: out)"},
-         {"jobs", "N", "worker threads (default: all cores)"},
+         {"jobs", "N", "worker threads, 1 to 256 (default: all cores)"},
          {"cases", "GLOB", "only catalog cases matching GLOB (default: *)"},
          {"force", "", "rerun everything"},
          {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"},
@@ -227,8 +227,8 @@ int command_suite(const Args& args) {
         return 0;
     }
     const std::string out = a.value("out").value_or("out");
-    const int jobs =
-        a.positive_int("suite", "jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = a.positive_int("suite", "jobs", kMaxJobs)
+                         .value_or(std::max(1u, std::thread::hardware_concurrency()));
     const std::vector<PlannedRun> runs =
         plan_runs(a.value("cases").value_or("*"), out, a.has("quick"));
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
