@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -36,6 +38,21 @@ std::optional<int> ParsedArguments::positive_int(const std::string& command,
                          std::to_string(min) + " to " + std::to_string(max) + ", got '" + *v + "'");
     }
     return static_cast<int>(n);
+}
+
+std::optional<double> ParsedArguments::positive_number(const std::string& command,
+                                                       const std::string& name, double max) const {
+    const std::optional<std::string> v = value(name);
+    if (!v) return std::nullopt;
+    char* end = nullptr;
+    const double x = v->empty() ? 0.0 : std::strtod(v->c_str(), &end);
+    if (v->empty() || end != v->c_str() + v->size() || !std::isfinite(x) || !(x > 0.0) || x > max) {
+        std::ostringstream m;
+        m << "rotbeam " << command << ": --" << name << ": expected a number in (0, " << max
+          << "], got '" << *v << "'";
+        throw InputError(m.str());
+    }
+    return x;
 }
 
 namespace {

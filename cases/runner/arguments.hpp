@@ -14,6 +14,7 @@ namespace rotbeam::cli {
 inline constexpr int kMaxJobs = 256;       // suite --jobs: worker threads
 inline constexpr int kMaxRepeats = 1000;   // bench --repeats: timing repeats per measurement
 inline constexpr int kMaxSamples = 20000;  // study rotations --samples: angles in the sweep
+inline constexpr double kMaxTimeLimit = 604800.0;  // run --time-limit: seconds (a week)
 
 struct OptionSpec {
     std::string name;        // without the leading "--"
@@ -43,6 +44,9 @@ class ParsedArguments {
     // the option and the range otherwise (non-numeric, fractional, out of range, overflowing).
     std::optional<int> positive_int(const std::string& command, const std::string& name, int max,
                                     int min = 1) const;
+    // A finite number in (0, max]; InputError naming the command and the option otherwise.
+    std::optional<double> positive_number(const std::string& command, const std::string& name,
+                                          double max) const;
 
     std::map<std::string, std::vector<std::string>> values_;
 };

@@ -168,7 +168,9 @@ int command_run(const Args& args) {
          {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
          {"json", "FILE", "write the result JSON to FILE"},
          {"quiet", "", "print nothing on success"},
-         {"trace-newton", "", "print every Newton iteration and step cut to stderr"}}};
+         {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
+         {"time-limit", "SECONDS",
+          "stop the run after this wall-clock time with the status time_limit"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -178,7 +180,8 @@ int command_run(const Args& args) {
     // A run reads the case file alone: the published references beside a catalog case are for
     // check, verify and the suite (case_loader.hpp).
     const Model model = load_with_options(path, a, CaseParts::case_file);
-    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
+    const double limit = a.positive_number("run", "time-limit", kMaxTimeLimit).value_or(0.0);
+    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton"), limit});
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;

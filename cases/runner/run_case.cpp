@@ -3,12 +3,13 @@
 #include <chrono>
 #include <iostream>
 
+#include "analyses.hpp"
 #include "core/errors.hpp"
 #include "core/kinsol_driver.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "core/time_limit.hpp"
 #include "core/version.hpp"
-#include "analyses.hpp"
 #include "make_problem.hpp"
 
 namespace rotbeam {
@@ -19,10 +20,14 @@ namespace {
 
 const char* quadrature_name(Quadrature q) {
     switch (q) {
-        case Quadrature::automatic: return "automatic";
-        case Quadrature::reduced: return "reduced";
-        case Quadrature::full: return "full";
-        case Quadrature::gll: return "gll";
+        case Quadrature::automatic:
+            return "automatic";
+        case Quadrature::reduced:
+            return "reduced";
+        case Quadrature::full:
+            return "full";
+        case Quadrature::gll:
+            return "gll";
     }
     return "automatic";
 }
@@ -118,23 +123,23 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     StepSolver solver;
     if (model.solver.driver == "kinsol") {
         if (!problem->additive()) {
-            throw InputError("solver.driver: kinsol needs an additive update (the mixed "
-                             "formulation); this combination composes rotations");
+            throw InputError(
+                "solver.driver: kinsol needs an additive update (the mixed "
+                "formulation); this combination composes rotations");
         }
         solver = kinsol_step_solver;
     }
-    const StaticOutcome outcome =
-        run_static(*problem, model.analysis.statics.load_factors, settings,
-                   [&](const StepRecord& step) {
-                       for (size_t i = 0; i < model.points.size(); ++i) {
-                           states[i] = problem->point_state(static_cast<int>(i));
-                       }
-                       result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
-                                                           step.newton_iterations, states,
-                                                           unwrapper));
-                       add_centerline(*problem, result["steps"].back());
-                   },
-                   solver);
+    const StaticOutcome outcome = run_static(
+        *problem, model.analysis.statics.load_factors, settings,
+        [&](const StepRecord& step) {
+            for (size_t i = 0; i < model.points.size(); ++i) {
+                states[i] = problem->point_state(static_cast<int>(i));
+            }
+            result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
+                                                step.newton_iterations, states, unwrapper));
+            add_centerline(*problem, result["steps"].back());
+        },
+        solver);
     result["status"] = to_string(outcome.status);
     result["message"] = outcome.message;
     result["counters"] = counters_json(problem->counters());
@@ -163,6 +168,7 @@ nlohmann::json run_case(const RunRequest& request) {
     nlohmann::json result = result_header(request);
     const auto start = std::chrono::steady_clock::now();
     try {
+        const ScopedTimeLimit limit(request.time_limit_seconds);
         switch (model.analysis.kind) {
             case AnalysisKind::static_:
                 run_static_case(model, request.trace_newton, result);
@@ -188,14 +194,25 @@ nlohmann::json run_case(const RunRequest& request) {
     } catch (const SolverError& e) {
         result["status"] = "error";
         result["message"] = e.what();
+    } catch (const TimeLimitReached& e) {
+        // Stopped on purpose: what was computed is not an answer, so nothing of it is kept.
+        result["status"] = "time_limit";
+        result["message"] = e.what();
+        result["steps"] = nlohmann::json::array();
+    } catch (const InputError& e) {
+        // A model the formulation refuses (a rigid section in the displacement formulation): the
+        // one-line message names the case file like every other input error.
+        const std::string m = e.what();
+        if (request.case_path.empty() || m.rfind(request.case_path, 0) == 0) throw;
+        throw InputError(request.case_path + ": (model): " + m);
     }
     result["wall_seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!all_finite(result)) {
         // A result never prints NaN: drop the numbers, say what happened.
         result["status"] = "error";
-        result["message"] = "non-finite values in the solution (" +
-                            result["message"].get<std::string>() + ")";
+        result["message"] =
+            "non-finite values in the solution (" + result["message"].get<std::string>() + ")";
         result["steps"] = nlohmann::json::array();
     }
     return result;

@@ -75,6 +75,28 @@ expect_bad_value "bench --repeats 0" "--repeats: expected an integer from 1 to 1
     bench --repeats 0 --json "$work/never.json"
 expect_bad_value "study --samples 1" "--samples: expected an integer from 2 to 20000, got '1'" \
     study rotations --samples 1
+# The wall-clock limit: its own status, no steps, no NaN, exit 0; a bad value is an input error.
+"$rotbeam" run joined-beam-dead --time-limit 0.05 --json "$work/limited.json" >/dev/null 2>&1 ||
+    fail "run --time-limit exited $?"
+python3 - "$work/limited.json" <<'PY' || fail "a run stopped by --time-limit does not say so"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "time_limit", r["status"]
+assert "wall-clock limit of 0.05 s was reached" in r["message"], r["message"]
+assert r["steps"] == [], "steps kept"
+PY
+for v in 0 -1 nan inf abc 1e9; do
+    expect_bad_value "--time-limit $v" "--time-limit: expected a number in (0, 604800], got '$v'" \
+        run cantilever-moment --time-limit "$v" --json "$work/never.json"
+done
+[ ! -e "$work/never.json" ] || fail "a result was written for a bad --time-limit"
+# A model the formulation refuses (a rigid section in the displacement formulation): one line
+# naming the file.
+sed 's/isotropic: {E: 1.0e7, nu: 0.3, A: 1.0, I2: 0.0833, I3: 0.0833, J: 0.14}/compliance: [[1, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]]/' \
+    "$src/cases/bad/zero-elements.yaml" | sed 's/elements: 0/elements: 2/' >"$work/rigid.yaml"
+expect_bad_value "rigid section, displacement" "rigid.yaml: (model): member 'beam': the displacement" \
+    run "$work/rigid.yaml" --json "$work/never.json"
+[ ! -e "$work/never.json" ] || fail "a result was written for a refused model"
 # A file past the size limit, and one of non-UTF-8 text: one line naming the file.
 head -c 1048577 /dev/zero | tr '\0' '#' >"$work/huge.yaml"
 expect_bad_value "file past the size limit" "huge.yaml:1: (file): larger than 1048576 bytes" \
