@@ -163,6 +163,29 @@ std::vector<std::string> apply_override(YAML::Node& root, const std::string& tex
     return {path};
 }
 
+// Every connected part of the structure (members joined at shared points) holds a constrained
+// point. A part that holds none moves as a rigid body: its static tangent is singular, and a modal
+// analysis would report its rigid-body modes, whose ω² is round-off, as frequencies of 1e-5 Hz.
+// (A dynamic analysis may let a part fly free: its inertia keeps the step's matrix regular.)
+void check_every_part_held(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    std::vector<int> part(model.points.size());
+    for (size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i);
+    const auto find = [&](int p) {
+        while (part[static_cast<size_t>(p)] != p) p = part[static_cast<size_t>(p)];
+        return p;
+    };
+    for (const Member& m : model.members)
+        part[static_cast<size_t>(find(m.start_point))] = find(m.end_point);
+    std::vector<bool> held(part.size(), false);
+    for (const Constraint& c : model.constraints) held[static_cast<size_t>(find(c.point))] = true;
+    for (const Member& m : model.members) {
+        if (held[static_cast<size_t>(find(m.start_point))]) continue;
+        r.fail(root["members"], "members." + m.name,
+               "is not joined to any constrained point: its part of the structure moves as a rigid "
+               "body (singular in a static analysis; zero-frequency modes in a modal one)");
+    }
+}
+
 // Every point is an end of some member (a point nothing attaches to cannot carry a load or a
 // constraint), and a static analysis needs a constraint (else rigid-body motion is singular).
 void check_topology(const YamlReader& r, const YAML::Node& root, const Model& model) {
@@ -179,6 +202,7 @@ void check_topology(const YamlReader& r, const YAML::Node& root, const Model& mo
         r.fail(root["analysis"], "constraints",
                "missing: a static analysis needs at least one constraint (rigid-body motion)");
     }
+    if (model.analysis.kind != AnalysisKind::dynamic) check_every_part_held(r, root, model);
 }
 
 // The memory the run would need (limits.hpp), against the machine's: the member with the most
