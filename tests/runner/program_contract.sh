@@ -73,6 +73,12 @@ done
 [ ! -e "$work/never" ] || fail "suite with a bad --jobs created its output folder"
 expect_bad_value "bench --repeats 0" "--repeats: expected an integer from 1 to 1000" \
     bench --repeats 0 --json "$work/never.json"
+expect_bad_value "bench --targets unknown" "--targets: unknown target 'joined-beam-modl'; did you mean 'joined-beam-modal'?" \
+    bench --targets joined-beam-modl --json "$work/never.json"
+[ ! -e "$work/never.json" ] || fail "bench with an unknown target wrote a result"
+expect_bad_value "suite --cases matching nothing" "--cases: 'zzz*' matches no catalog case" \
+    suite --cases 'zzz*' --out "$work/never"
+[ ! -e "$work/never" ] || fail "suite matching no case created its output folder"
 expect_bad_value "study --samples 1" "--samples: expected an integer from 2 to 20000, got '1'" \
     study rotations --samples 1
 # The wall-clock limit: its own status, no steps, no NaN, exit 0; a bad value is an input error.
