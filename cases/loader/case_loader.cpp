@@ -1,5 +1,7 @@
 #include "cases/loader/case_loader.hpp"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +60,11 @@ YAML::Node parse(const std::string& text, const std::string& file) {
     YAML::Node root;
     try {
         root = YAML::Load(text);
+    } catch (const YAML::DeepRecursion& e) {
+        // yaml-cpp's own guard (2000 levels, before the tree exists; its message is "bad file").
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): nested deeper than " + std::to_string(cases::kMaxYamlDepth) +
+                         " levels (the limit of a case file)");
     } catch (const YAML::ParserException& e) {
         throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
     }
@@ -291,10 +298,13 @@ std::string read_text_file(const std::string& path, const char* what) {
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": (file): cannot open the " + std::string(what));
-    // Read at most one byte past the limit (a device or a pipe has no size to ask for).
-    std::string text(cases::kMaxFileBytes + 1, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<size_t>(in.gcount()));
+    // Read in chunks, stopping one chunk past the limit (a device or a pipe has no size to ask
+    // for, and a case file is a few kB: no megabyte buffer for each).
+    std::string text;
+    char chunk[16384];
+    while (text.size() <= cases::kMaxFileBytes && in.read(chunk, sizeof chunk).gcount() > 0) {
+        text.append(chunk, static_cast<size_t>(in.gcount()));
+    }
     if (text.size() > cases::kMaxFileBytes) {
         throw InputError(path + ":1: (file): larger than " + std::to_string(cases::kMaxFileBytes) +
                          " bytes (a limit of the case format)");

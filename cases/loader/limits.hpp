@@ -51,9 +51,10 @@ inline constexpr int kMaxModes = 1000;
 // solver.max_iterations (Newton iterations per step; the catalog converges in under 50).
 inline constexpr int kMaxNewtonIterations = 10000;
 
-// Throws InputError `FILE:LINE: (yaml): problem` for a document that nests deeper than
-// kMaxYamlDepth, expands to more than kMaxYamlNodes, or has an alias inside the node its anchor
-// names (a cycle); also for malformed YAML (the parser's own message).
+// Throws InputError `FILE:LINE: (yaml): problem` for a document with anchors that nests deeper
+// than kMaxYamlDepth, expands to more than kMaxYamlNodes, or has an alias inside the node its
+// anchor names (a cycle); also for malformed YAML (the parser's own message). A document without
+// anchors is left to the parse and to YamlReader::index, which checks its nesting.
 void check_yaml_shape(const std::string& text, const std::string& file);
 
 // The memory a run of `model` would need, estimated from its sizes alone (nothing is built).

@@ -35,7 +35,8 @@ class YamlReader {
 
     // Records the line of every key (and list item) of the tree by key path, so that messages
     // name the line of the key — a block mapping or list value starts on the line after it.
-    void index_lines(const YAML::Node& root) { index(root, ""); }
+    // A tree nested deeper than kMaxYamlDepth (limits.hpp) is refused here: `FILE:LINE: (yaml):`.
+    void index_lines(const YAML::Node& root) { index(root, "", 1); }
     // Whether `key` (or a parent of it) was set by a --set override.
     bool overridden(const std::string& key) const;
 
@@ -81,7 +82,7 @@ class YamlReader {
     std::string scalar(const YAML::Node& node, const std::string& key,
                        const std::string& expected) const;
 
-    void index(const YAML::Node& node, const std::string& path);
+    void index(const YAML::Node& node, const std::string& path, int depth);
 
     std::string file_;
     std::set<std::string> overridden_;
