@@ -228,7 +228,32 @@ struct ReferenceValue {
     std::string justification;
     std::string source;
     std::optional<int> published_iterations;  // the source's Newton iterations (reported only)
-    std::map<std::string, std::string> applies_to;  // formulation, elements, order, quadrature, ...
+    // The discretization the number is checked with: formulation, rotation, interpolation,
+    // wm_map select combinations (unnamed ones: every combination); elements, order, quadrature,
+    // ... set the mesh and rule. `scope` says why named combination keys leave others out.
+    std::map<std::string, std::string> applies_to;
+    std::string scope;
+    // The same number checked with further discretizations, each with its own tolerance
+    // (`also`: e.g. an exact value on the mixed formulation's coarser mesh).
+    struct Check {
+        std::map<std::string, std::string> applies_to;
+        std::string scope;
+        double tolerance = 0.0;
+        std::string justification;
+    };
+    std::vector<Check> also;
+};
+
+// A combination that must stop on the way (docs/case-format.md, "Expected stops"): converged up
+// to `reaches`, no converged step at or past `stops_before`, ending with `status` (a status name
+// of the results, kept as data so that new statuses need no code here).
+struct ExpectedStop {
+    std::string id;
+    std::map<std::string, std::string> applies_to;  // as ReferenceValue::applies_to
+    std::optional<double> reaches;
+    double stops_before = 0.0;
+    std::string status;
+    std::string justification;
 };
 
 struct Model {
@@ -246,6 +271,7 @@ struct Model {
     Discretization discretization;
     SolverSettings solver;
     std::vector<ReferenceValue> references;
+    std::vector<ExpectedStop> expected_stops;
 
     int point_index(const std::string& name) const;  // −1 when absent
     bool has_follower_loads() const;

@@ -132,7 +132,9 @@ void describe_analysis(const Model& model, std::ostream& os) {
     os << "references: " << model.references.size();
     int gated = 0;
     for (const ReferenceValue& r : model.references) gated += r.gated ? 1 : 0;
-    os << " (" << gated << " gated)\n";
+    os << " (" << gated << " gated)";
+    if (!model.expected_stops.empty()) os << ", expected stops: " << model.expected_stops.size();
+    os << "\n";
     const cases::MemoryEstimate e = cases::estimate_memory(model);
     os << "memory: estimated " << cases::memory_text(e.bytes) << " (about " << e.unknowns
        << " unknowns; mostly " << e.dominant << "; docs/case-format.md, Limits)\n";

@@ -26,6 +26,7 @@ TimeFunction read_time_function(const YamlReader& r, const YAML::Node& node,
 void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model);
 void read_discretization(const YamlReader& r, const YAML::Node& root, Model& model);
 void read_solver(const YamlReader& r, const YAML::Node& root, Model& model);
+// `references` and `expected_stops` (references.cpp).
 void read_references(const YamlReader& r, const YAML::Node& root, Model& model);
 
 // Values shared by discretization and references.applies_to.

@@ -1,4 +1,4 @@
-// Case loader: analysis, discretization, solver and published references (docs/case-format.md).
+// Case loader: analysis, discretization and solver (docs/case-format.md).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -112,107 +112,6 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     }
 }
 
-std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::string& key,
-                          const std::string& name) {
-    if (name == "formulation") return r.choice(v, key, kFormulations);
-    if (name == "rotation") return r.choice(v, key, kRotations);
-    if (name == "quadrature") return r.choice(v, key, kQuadratures);
-    if (name == "interpolation") return r.choice(v, key, kInterpolations);
-    if (name == "update") return r.choice(v, key, kUpdates);
-    if (name == "mass_rule") return r.choice(v, key, kMassRules);
-    if (name == "elements")
-        return std::to_string(r.positive_integer(v, key, kMaxElementsPerMember));
-    if (name == "order") return std::to_string(r.positive_integer(v, key, kMaxOrder));
-    return std::to_string(r.positive_integer(v, key, kMaxQuadraturePoints));
-}
-
-bool listed(const std::vector<double>& list, double x) {
-    return std::any_of(list.begin(), list.end(), [x](double v) {
-        return std::abs(v - x) <= 1e-9 * std::max(1.0, std::abs(x));
-    });
-}
-
-void read_reference_where(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                          const Model& model, ReferenceValue& ref) {
-    const Analysis& a = model.analysis;
-    if (ref.quantity == "frequency") {
-        if (a.kind != AnalysisKind::modal)
-            r.fail(n["quantity"], key + ".quantity", "frequency needs a modal analysis");
-        ref.mode = r.positive_integer(r.required(n, key, "mode"), key + ".mode");
-        if (ref.mode > a.modal.modes) r.fail(n["mode"], key + ".mode", "exceeds analysis.modes");
-        return;
-    }
-    std::vector<std::string> points;
-    for (const Point& p : model.points) points.push_back(p.name);
-    ref.point = r.name_in(r.required(n, key, "point"), key + ".point", points, "point");
-    if (a.kind == AnalysisKind::dynamic) {
-        ref.time = r.non_negative(r.required(n, key, "time"), key + ".time");
-        if (*ref.time > a.dynamics.end_time)
-            r.fail(n["time"], key + ".time", "is after analysis.end_time");
-    } else {
-        ref.load_factor = r.number(r.required(n, key, "load_factor"), key + ".load_factor");
-        // A reference must name a reported step, unless --set replaced the steps (a quick run
-        // at other load factors is legitimate; verify then reports the reference unavailable).
-        if (!r.overridden("analysis.load_factors") &&
-            !listed(a.statics.load_factors, *ref.load_factor)) {
-            r.fail(n["load_factor"], key + ".load_factor", "is not one of analysis.load_factors");
-        }
-    }
-}
-
-ReferenceValue read_reference(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                              const Model& model) {
-    r.expect_map(
-        n, key,
-        {"quantity", "point", "load_factor", "time", "mode", "value", "components", "tolerance",
-         "relative", "gated", "justification", "source", "applies_to", "iterations"});
-    ReferenceValue ref;
-    ref.quantity = r.choice(r.required(n, key, "quantity"), key + ".quantity",
-                            {"displacement", "position", "rotation_angle", "frequency"});
-    for (const char* k : {"point", "load_factor", "time", "mode"}) {
-        if (!n[k]) continue;
-        const bool ok =
-            ref.quantity == "frequency" ? std::string(k) == "mode" : std::string(k) != "mode";
-        if (!ok) r.fail(n[k], child_key(key, k), "not used with quantity " + ref.quantity);
-    }
-    read_reference_where(r, n, key, model, ref);
-    ref.value = r.numbers(r.required(n, key, "value"), key + ".value");
-    const bool vector = ref.quantity == "displacement" || ref.quantity == "position";
-    if (n["components"]) {
-        if (!vector) r.fail(n["components"], key + ".components", "only for vector quantities");
-        for (double c : r.numbers(n["components"], key + ".components")) {
-            if (c != 0.0 && c != 1.0 && c != 2.0)
-                r.fail(n["components"], key + ".components", "components are 0, 1, 2 (x, y, z)");
-            ref.components.push_back(static_cast<int>(c));
-        }
-    }
-    const size_t expected = !vector ? 1 : ref.components.empty() ? 3 : ref.components.size();
-    if (ref.value.size() != expected) {
-        r.fail(n["value"], key + ".value",
-               "expected " + std::to_string(expected) + " number(s), got " +
-                   std::to_string(ref.value.size()));
-    }
-    ref.tolerance = r.positive(r.required(n, key, "tolerance"), key + ".tolerance");
-    if (n["relative"]) ref.relative = r.boolean(n["relative"], key + ".relative");
-    if (n["gated"]) ref.gated = r.boolean(n["gated"], key + ".gated");
-    ref.justification = r.string(r.required(n, key, "justification"), key + ".justification");
-    ref.source = r.string(r.required(n, key, "source"), key + ".source");
-    if (n["iterations"]) {
-        ref.published_iterations = r.positive_integer(n["iterations"], key + ".iterations");
-    }
-    if (const YAML::Node at = n["applies_to"]) {
-        const std::string ak = key + ".applies_to";
-        r.expect_map(at, ak,
-                     {"formulation", "rotation", "elements", "order", "quadrature",
-                      "quadrature_points", "interpolation", "update", "mass_rule"});
-        for (const auto& item : at) {
-            const std::string name = item.first.Scalar();
-            ref.applies_to[name] = applies_value(r, item.second, ak + "." + name, name);
-        }
-    }
-    return ref;
-}
-
 }  // namespace
 
 void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
@@ -317,17 +216,6 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     if (n["length_scale"]) s.length_scale = r.non_negative(n["length_scale"], k + ".length_scale");
     if (n["assemble_all_terms"])
         s.assemble_all_terms = r.boolean(n["assemble_all_terms"], k + ".assemble_all_terms");
-}
-
-void read_references(const YamlReader& r, const YAML::Node& root, Model& model) {
-    const YAML::Node refs = root["references"];
-    if (!refs) return;
-    r.expect_named_map(refs, "references");
-    for (const auto& item : refs) {
-        const std::string key = "references." + item.first.Scalar();
-        model.references.push_back(read_reference(r, item.second, key, model));
-        model.references.back().id = item.first.Scalar();
-    }
 }
 
 }  // namespace rotbeam::cases

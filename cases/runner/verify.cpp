@@ -1,6 +1,9 @@
-// `rotbeam verify`: the published-tolerance gate. Every reference of the selected cases is
-// computed with the combination it applies to (applies_to; otherwise the case's own
-// discretization) and compared with its published value and tolerance. Exit 1 on any gated miss.
+// `rotbeam verify`: the published-tolerance gate (docs/case-format.md, "references"). Every
+// reference of the selected cases is computed with every combination its applies_to (and each
+// `also` entry) selects, in the discretization it names, and compared with its value and that
+// check's tolerance; a pair whose combination ends at an expected stop first is not run. Every
+// expected stop is checked on every combination it selects. Exit 1 on any gated miss (an
+// unavailable result is one) or changed stop.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -13,36 +16,17 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "run_case.hpp"
+#include "verify_plan.hpp"
 
 namespace rotbeam::cli {
 
 // The --set overrides that put a case into the discretization a reference applies to (its
 // `elements` is per member and set on the model, not by an override).
 std::vector<std::string> reference_overrides(const ReferenceValue& ref) {
-    static const std::map<std::string, std::string> keys = {
-        {"formulation", "discretization.formulation"},
-        {"rotation", "discretization.rotation"},
-        {"order", "discretization.order"},
-        {"quadrature", "discretization.quadrature"},
-        {"quadrature_points", "discretization.quadrature_points"},
-        {"interpolation", "discretization.interpolation"},
-        {"update", "discretization.update"},
-        {"mass_rule", "discretization.mass_rule"}};
-    std::vector<std::string> overrides;
-    for (const auto& [key, value] : ref.applies_to) {
-        const auto it = keys.find(key);
-        if (it != keys.end()) overrides.push_back(it->second + "=" + value);
-    }
-    return overrides;
+    return discretization_overrides(ref.applies_to);
 }
 
 namespace {
-
-std::string combination_key(const ReferenceValue& ref) {
-    std::string key;
-    for (const auto& [k, v] : ref.applies_to) key += k + "=" + v + " ";
-    return key;
-}
 
 const nlohmann::json* find_step(const nlohmann::json& result, const ReferenceValue& ref) {
     for (const auto& step : result["steps"]) {
@@ -106,8 +90,9 @@ std::vector<double> computed_values(const Model& model, const nlohmann::json& re
 }
 
 std::string format_vector(const std::vector<double>& v) {
+    // Ten digits: the tightest tolerances (1e-9 on values of order 10) must be visible.
     std::ostringstream s;
-    s << std::setprecision(6);
+    s << std::setprecision(10);
     if (v.size() == 1) {
         s << v[0];
         return s.str();
@@ -123,16 +108,25 @@ struct Row {
         verdict;
 };
 
-Row compare(const Model& model, const nlohmann::json& result, const ReferenceValue& ref) {
-    Row row{
-        model.name, ref.id, ref.quantity, combination_key(ref), format_vector(ref.value), "-", "-",
-        "",         ""};
+// One (reference × discretization) pair: the computed value against the published one with
+// the check's tolerance. An unavailable result is a miss of a gated reference.
+Row compare(const Model& model, const nlohmann::json& result, const ReferenceValue& ref,
+            const Settings& settings, double tolerance) {
+    Row row{model.name,
+            ref.id,
+            ref.quantity,
+            settings_label(settings),
+            format_vector(ref.value),
+            "-",
+            "-",
+            "",
+            ""};
     std::ostringstream tol;
-    tol << std::setprecision(3) << ref.tolerance << (ref.relative ? " rel" : " abs");
+    tol << std::setprecision(3) << tolerance << (ref.relative ? " rel" : " abs");
     row.tolerance = tol.str();
     if (!result.value("available", true)) {
-        row.computed = result["message"].get<std::string>();
-        row.verdict = "unavailable";
+        row.computed = "unavailable: " + result["message"].get<std::string>();
+        row.verdict = ref.gated ? "FAIL" : "recorded";
         return row;
     }
     std::string why;
@@ -146,8 +140,7 @@ Row compare(const Model& model, const nlohmann::json& result, const ReferenceVal
     bool pass = true;
     for (size_t i = 0; i < computed.size(); ++i) {
         const double d = std::abs(computed[i] - ref.value[i]);
-        const double allowed =
-            ref.relative ? ref.tolerance * std::abs(ref.value[i]) : ref.tolerance;
+        const double allowed = ref.relative ? tolerance * std::abs(ref.value[i]) : tolerance;
         worst =
             std::max(worst, ref.relative && ref.value[i] != 0.0 ? d / std::abs(ref.value[i]) : d);
         if (!(d <= allowed)) pass = false;
@@ -158,6 +151,105 @@ Row compare(const Model& model, const nlohmann::json& result, const ReferenceVal
     row.difference = diff.str();
     row.verdict = !ref.gated ? (pass ? "recorded (ok)" : "recorded") : (pass ? "pass" : "FAIL");
     return row;
+}
+
+bool same_factor(double a, double b) {
+    return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
+}
+
+// The expected stop of a case that ends this run before the reference's load factor, if any.
+const ExpectedStop* stop_before(const Model& base, const Model* model, const ReferenceValue& ref) {
+    if (!model || !ref.load_factor) return nullptr;
+    for (const ExpectedStop& stop : base.expected_stops) {
+        if (model_has(*model, stop.applies_to) &&
+            (stop.stops_before < *ref.load_factor ||
+             same_factor(stop.stops_before, *ref.load_factor)))
+            return &stop;
+    }
+    return nullptr;
+}
+
+// The last converged load factor of a static run (0 without a converged step).
+double last_converged(const nlohmann::json& result) {
+    double last = 0.0;
+    for (const auto& step : result["steps"]) {
+        if (step.contains("load_factor")) last = std::max(last, step["load_factor"].get<double>());
+    }
+    return last;
+}
+
+std::string number(double x) {
+    std::ostringstream s;
+    s << std::setprecision(6) << x;
+    return s.str();
+}
+
+// An expected stop on one combination: the status it names, converged up to `reaches` and not at
+// or past `stops_before`. Anything else (farther, shorter, another status, unavailable) is a miss:
+// the combination's reach changed.
+Row check_stop(const Model& base, const nlohmann::json& result, const ExpectedStop& stop,
+               const Settings& settings) {
+    Row row{base.name, stop.id, "stop", settings_label(settings), "", "-", "-", "-", ""};
+    row.published = stop.status + " in [" + (stop.reaches ? number(*stop.reaches) : "0") + ", " +
+                    number(stop.stops_before) + ")";
+    const std::string status = result.value("status", "error");
+    const double last = last_converged(result);
+    row.computed = status + " after " + number(last);
+    if (status != "converged") row.computed += ": " + result.value("message", "");
+    const bool reached = !stop.reaches || last > *stop.reaches || same_factor(last, *stop.reaches);
+    const bool stopped = last < stop.stops_before && !same_factor(last, stop.stops_before);
+    row.verdict = status == stop.status && reached && stopped ? "pass" : "FAIL";
+    return row;
+}
+
+std::vector<Row> verify_rows(const std::vector<std::string>& cases) {
+    std::vector<Row> rows;
+    for (const std::string& c : cases) {
+        const std::string path = resolve_case_path(c);
+        const Model base = load_case(path, {});
+        GateRuns runs(path);
+        for (const ReferenceValue& ref : base.references) {
+            std::vector<std::pair<Settings, double>> checks;
+            for (const Settings& s : selected_runs(ref.applies_to))
+                checks.push_back({s, ref.tolerance});
+            for (const ReferenceValue::Check& also : ref.also) {
+                for (const Settings& s : selected_runs(also.applies_to))
+                    checks.push_back({s, also.tolerance});
+            }
+            if (checks.empty()) {  // the loader refuses applies_to that select nothing
+                rows.push_back({base.name, ref.id, ref.quantity, "-", format_vector(ref.value),
+                                "applies_to selects no combination", "-", "-", "FAIL"});
+            }
+            for (const auto& [settings, tolerance] : checks) {
+                const Model* model = runs.model(settings);
+                if (const ExpectedStop* stop = stop_before(base, model, ref)) {
+                    Row row{base.name,
+                            ref.id,
+                            ref.quantity,
+                            settings_label(settings),
+                            format_vector(ref.value),
+                            "stops first (expected stop " + stop->id + ")",
+                            "-",
+                            "-",
+                            "not reached"};
+                    rows.push_back(row);
+                    continue;
+                }
+                rows.push_back(compare(model ? *model : base, runs.result(settings), ref, settings,
+                                       tolerance));
+            }
+        }
+        for (const ExpectedStop& stop : base.expected_stops) {
+            const std::vector<Settings> selected = selected_runs(stop.applies_to);
+            if (selected.empty()) {
+                rows.push_back({base.name, stop.id, "stop", "-", stop.status,
+                                "applies_to selects no combination", "-", "-", "FAIL"});
+            }
+            for (const Settings& s : selected)
+                rows.push_back(check_stop(base, runs.result(s), stop, s));
+        }
+    }
+    return rows;
 }
 
 void print_table(const std::vector<Row>& rows, std::ostream& os) {
@@ -186,27 +278,6 @@ void print_table(const std::vector<Row>& rows, std::ostream& os) {
     for (const Row& r : rows) line(cells(r));
 }
 
-std::vector<Row> verify_rows(const std::vector<std::string>& cases) {
-    std::vector<Row> rows;
-    for (const std::string& c : cases) {
-        const std::string path = resolve_case_path(c);
-        const Model base = load_case(path, {});
-        std::map<std::string, std::vector<const ReferenceValue*>> groups;
-        for (const ReferenceValue& ref : base.references)
-            groups[combination_key(ref)].push_back(&ref);
-        for (const auto& [key, refs] : groups) {
-            Model model = load_case(path, reference_overrides(*refs.front()));
-            const auto elements = refs.front()->applies_to.find("elements");
-            if (elements != refs.front()->applies_to.end()) {
-                for (Member& m : model.members) m.elements = std::stoi(elements->second);
-            }
-            const nlohmann::json result = run_case(RunRequest{path, model});
-            for (const ReferenceValue* ref : refs) rows.push_back(compare(model, result, *ref));
-        }
-    }
-    return rows;
-}
-
 }  // namespace
 
 std::string published_references_markdown(const std::vector<std::string>& cases) {
@@ -215,9 +286,9 @@ std::string published_references_markdown(const std::vector<std::string>& cases)
     std::ostringstream md;
     md << "## Published numbers\n\nEvery published reference of the cases run (the case files' "
           "`references`: Table I, Table II and the other 45° bend values, Table III), computed "
-          "with the discretization it belongs to, as `rotbeam verify` does. `recorded` entries "
-          "are published values that are not converged solutions (benchmarks.md §1); "
-          "`unavailable` ones need an analysis that is not implemented yet.\n\n"
+          "with every combination its applies_to selects, and every expected stop, as `rotbeam "
+          "verify` does. `recorded` entries are published values that are not converged solutions "
+          "(benchmarks.md §1); `not reached` pairs end at an expected stop first.\n\n"
           "| case | reference | combination | published | computed | difference | tolerance | "
           "result |\n|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
@@ -235,8 +306,10 @@ int command_verify(const Args& args) {
         "[CASE ...]",
         0,
         -1,
-        "Run every applicable published reference of the given cases (default: the whole catalog) "
-        "and compare with its tolerance. Prints a table; exit 1 on any gated miss.",
+        "Run every published reference of the given cases (default: the whole catalog) with every "
+        "combination its applies_to selects and compare with its tolerance; check every expected "
+        "stop. Prints a table; exit 1 on any gated miss (an unavailable result is one) or a "
+        "changed stop.",
         {{"json", "FILE", "also write the table as JSON"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
@@ -248,11 +321,21 @@ int command_verify(const Args& args) {
     const std::vector<Row> rows = verify_rows(cases);
     nlohmann::json table = nlohmann::json::array();
     print_table(rows, std::cout);
-    int misses = 0, gated = 0, unavailable = 0;
+    int pairs = 0, pair_misses = 0, stops = 0, stop_misses = 0, recorded = 0, not_reached = 0;
     for (const Row& r : rows) {
-        if (r.verdict == "FAIL") ++misses;
-        if (r.verdict == "pass" || r.verdict == "FAIL") ++gated;
-        if (r.verdict == "unavailable") ++unavailable;
+        const bool gated = r.verdict == "pass" || r.verdict == "FAIL";
+        const bool miss = r.verdict == "FAIL";
+        if (r.quantity == "stop") {
+            ++stops;
+            stop_misses += miss ? 1 : 0;
+        } else if (gated) {
+            ++pairs;
+            pair_misses += miss ? 1 : 0;
+        } else if (r.verdict == "not reached") {
+            ++not_reached;
+        } else {
+            ++recorded;
+        }
         table.push_back({{"case", r.case_name},
                          {"reference", r.id},
                          {"quantity", r.quantity},
@@ -263,11 +346,13 @@ int command_verify(const Args& args) {
                          {"tolerance", r.tolerance},
                          {"result", r.verdict}});
     }
-    std::cout << "\nverify: " << gated - misses << " gated references passed, " << misses
-              << " missed; " << rows.size() - gated - unavailable << " recorded only; "
-              << unavailable << " unavailable (analysis not implemented yet)\n";
+    std::cout << "\nverify: " << pairs - pair_misses << " of " << pairs
+              << " gated (reference × combination) pairs passed, " << pair_misses << " missed; "
+              << stops - stop_misses << " of " << stops << " expected stops held, " << stop_misses
+              << " changed; " << not_reached << " pairs end at an expected stop first; " << recorded
+              << " recorded only\n";
     if (const auto file = a.value("json")) write_file_atomically(*file, table.dump(2) + "\n");
-    return misses > 0 ? 1 : 0;
+    return pair_misses + stop_misses > 0 ? 1 : 0;
 }
 
 }  // namespace rotbeam::cli

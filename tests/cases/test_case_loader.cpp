@@ -90,6 +90,81 @@ BOOST_AUTO_TEST_CASE(cantilever_moment_is_table_one) {
     BOOST_TEST(r.value.at(0) == -13.8800);
 }
 
+// The gate's data: the exact column is checked with every combination (displacement at order 4,
+// mixed through `also`), and the stops of Rodrigues and WM are declared beside the numbers.
+BOOST_AUTO_TEST_CASE(cantilever_moment_declares_its_checks_and_expected_stops) {
+    const Model m = load_case(case_path("cantilever-moment"));
+    const ReferenceValue& exact = reference(m, "exact-0p4");
+    BOOST_TEST(exact.applies_to.at("formulation") == "displacement");
+    BOOST_TEST(!exact.scope.empty());
+    BOOST_REQUIRE(exact.also.size() == 1u);
+    BOOST_TEST(exact.also[0].applies_to.at("formulation") == "mixed");
+    BOOST_TEST(exact.also[0].tolerance > exact.tolerance);
+    BOOST_TEST(reference(m, "gebt-wm-1p6").applies_to.at("wm_map") == "plain");
+    BOOST_TEST(m.expected_stops.size() == 5u);
+    const auto stop = std::find_if(m.expected_stops.begin(), m.expected_stops.end(),
+                                   [](const ExpectedStop& s) { return s.id == "mixed-wm-plain"; });
+    BOOST_REQUIRE(stop != m.expected_stops.end());
+    BOOST_TEST(stop->status == "diverged");
+    BOOST_TEST(*stop->reaches == 1.6);
+    BOOST_TEST(stop->stops_before == 1.96);
+    BOOST_TEST(stop->applies_to.at("rotation") == "wiener-milenkovic");
+}
+
+// A status is data (any name a run may end with), but a stop must name a reported step, stop
+// after what it reaches, and not be "converged"; a narrowed applies_to needs its scope.
+BOOST_AUTO_TEST_CASE(expected_stops_and_narrowed_references_are_validated) {
+    std::ifstream in(case_path("cantilever-moment"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    auto with_stop = [&](const std::string& body) {
+        return text +
+               "expected_stops:\n  s:\n    applies_to: {formulation: mixed, rotation: "
+               "rodrigues}\n    scope: why\n    justification: why\n" +
+               body;
+    };
+    const Model m = load_case_text(
+        with_stop("    reaches: 0.8\n    stops_before: 1.0\n    status: some-new-status\n"),
+        "t.yaml");
+    BOOST_TEST(m.expected_stops.at(0).status == "some-new-status");
+    const std::string off = input_error([&] {
+        load_case_text(with_stop("    stops_before: 0.9\n    status: diverged\n"), "t.yaml");
+    });
+    BOOST_TEST(off.find("expected_stops.s.stops_before: is not one of analysis.load_factors") !=
+                   std::string::npos,
+               off);
+    const std::string order = input_error([&] {
+        load_case_text(with_stop("    reaches: 1.0\n    stops_before: 0.8\n    status: diverged\n"),
+                       "t.yaml");
+    });
+    BOOST_TEST(order.find("must be below stops_before") != std::string::npos, order);
+    const std::string converged = input_error([&] {
+        load_case_text(with_stop("    stops_before: 1.0\n    status: converged\n"), "t.yaml");
+    });
+    BOOST_TEST(converged.find("must name the status of a run that stops") != std::string::npos,
+               converged);
+    const std::string scope = input_error([&] {
+        load_case_text(text +
+                           "references:\n  r:\n    quantity: displacement\n    point: tip\n"
+                           "    load_factor: 0.4\n    value: [0, 0, 0]\n    tolerance: 1\n"
+                           "    justification: j\n    source: s\n"
+                           "    applies_to: {rotation: quaternion}\n",
+                       "t.yaml");
+    });
+    BOOST_TEST(scope.find("references.r.applies_to: names a combination") != std::string::npos,
+               scope);
+    const std::string none = input_error([&] {
+        load_case_text(text +
+                           "references:\n  r:\n    quantity: displacement\n    point: tip\n"
+                           "    load_factor: 0.4\n    value: [0, 0, 0]\n    tolerance: 1\n"
+                           "    justification: j\n    source: s\n    scope: s\n"
+                           "    applies_to: {formulation: mixed, interpolation: direct}\n",
+                       "t.yaml");
+    });
+    BOOST_TEST(none.find("no combination is selected") != std::string::npos, none);
+}
+
 BOOST_AUTO_TEST_CASE(bend45_is_the_exact_arc_with_a_unit_tip_force) {
     const Model m = load_case(case_path("bend-45"));
     const ReferenceGeometry g(m, 0);
@@ -217,9 +292,9 @@ BOOST_AUTO_TEST_CASE(a_references_block_in_the_case_and_beside_it_is_refused) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir / "references");
     std::filesystem::copy_file(case_path("cantilever-moment"), dir / "c.yaml");
-    std::filesystem::copy_file(std::string(ROTBEAM_SOURCE_DIR) +
-                                   "/cases/references/cantilever-moment.yaml",
-                               dir / "references" / "c.yaml");
+    std::filesystem::copy_file(
+        std::string(ROTBEAM_SOURCE_DIR) + "/cases/references/cantilever-moment.yaml",
+        dir / "references" / "c.yaml");
     BOOST_TEST(load_case((dir / "c.yaml").string()).references.size() == 15u);
     {
         std::ofstream out(dir / "c.yaml", std::ios::app);

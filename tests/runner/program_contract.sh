@@ -221,6 +221,46 @@ sed -E '0,/value: *\[/s/value: *\[[^]]*\]/value: [1000.0, 1000.0]/' "$src/cases/
 "$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
 rc=$?
 [ $rc -eq 1 ] || fail "verify with a wrong reference exited $rc, expected 1: $(tail -3 "$work/verify")"
+# An unavailable result is a miss, not a skip: a discretization the program refuses (the mixed
+# formulation has no lumped mass) selected by a reference fails the gate.
+cp "$src/cases/references/cantilever-moment.yaml" "$work/references/wrong.yaml"
+python3 - "$work/references/wrong.yaml" <<'PY'
+import sys
+p = sys.argv[1]
+s = open(p).read()
+s = s.replace("references:\n", """references:
+  refused:
+    quantity: displacement
+    point: tip
+    load_factor: 0.4
+    components: [0, 2]
+    value: [-2.9180792563, 6.5984016563]
+    tolerance: 0.1
+    justification: test
+    source: test
+    applies_to: {formulation: mixed, mass_rule: lumped}
+    scope: test
+""", 1)
+open(p, "w").write(s)
+PY
+"$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "verify with an unavailable combination exited $rc, expected 1"
+grep -q "refused .*unavailable: .*FAIL" "$work/verify" ||
+    fail "the unavailable pair is not a FAIL row: $(grep refused "$work/verify" | head -2)"
+# A change in reach is caught both ways: an expected stop that the combination passes (mixed WM
+# does converge at 1.6) and one with another status fail the gate.
+sed -E '/^  mixed-wm-plain:/,$ s/reaches: 1.6/reaches: 1.2/; /^  mixed-wm-plain:/,$ s/stops_before: 1.96/stops_before: 1.6/' \
+    "$src/cases/references/cantilever-moment.yaml" >"$work/references/wrong.yaml"
+"$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "verify with a stop the combination passes exited $rc, expected 1"
+grep -q "mixed-wm-plain .*FAIL" "$work/verify" || fail "the passed stop is not a FAIL row"
+sed -E '/^  mixed-rodrigues:/,$ s/status: diverged/status: singular/' \
+    "$src/cases/references/cantilever-moment.yaml" >"$work/references/wrong.yaml"
+"$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "verify with a stop of another status exited $rc, expected 1"
 sed -E '0,/point: tip/s/point: tip/point: nowhere/' "$src/cases/references/cantilever-moment.yaml" >"$work/references/wrong.yaml"
 "$rotbeam" verify "$work/wrong.yaml" >"$work/verify" 2>"$work/verify.err"
 rc=$?

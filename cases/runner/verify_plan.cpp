@@ -1,0 +1,166 @@
+#include "verify_plan.hpp"
+
+#include "cases/loader/case_loader.hpp"
+#include "core/errors.hpp"
+#include "parameterizations/registry.hpp"
+#include "run_case.hpp"
+
+namespace rotbeam::cli {
+
+namespace {
+
+// The keys that choose a combination; the others only set the discretization.
+const std::vector<std::string> kCombinationKeys = {"formulation", "rotation", "interpolation",
+                                                   "wm_map"};
+
+bool is_combination_key(const std::string& key) {
+    return std::find(kCombinationKeys.begin(), kCombinationKeys.end(), key) !=
+           kCombinationKeys.end();
+}
+
+// A model's value of one applies_to key, as the loader writes it; "" where the key does not apply
+// (interpolation outside the displacement formulation, wm_map outside the mixed WM, elements
+// that differ between members).
+std::string model_setting(const Model& model, const std::string& key) {
+    const Discretization& d = model.discretization;
+    if (key == "formulation") return d.formulation;
+    if (key == "rotation") return d.rotation;
+    if (key == "interpolation") return d.formulation == "displacement" ? d.interpolation : "";
+    if (key == "wm_map") {
+        return d.formulation == "mixed" && d.rotation == "wiener-milenkovic" ? d.wm_map : "";
+    }
+    if (key == "order") return std::to_string(d.order);
+    if (key == "quadrature_points") return std::to_string(d.quadrature_points);
+    if (key == "update") return d.update;
+    if (key == "mass_rule") return d.mass_rule;
+    if (key == "rescale") return d.rescale ? "true" : "false";
+    if (key == "quadrature") {
+        static const char* names[] = {"automatic", "reduced", "full", "gll"};  // enum order
+        return names[static_cast<int>(d.quadrature)];
+    }
+    if (key == "elements") {
+        std::string n;
+        for (const Member& m : model.members) {
+            const std::string e = std::to_string(m.elements);
+            if (!n.empty() && n != e) return "";
+            n = e;
+        }
+        return n;
+    }
+    return "";
+}
+
+}  // namespace
+
+std::vector<Settings> gate_combinations() {
+    std::vector<Settings> list;
+    for (const std::string& f : formulation_names()) {
+        for (const std::string& r : param::parameterization_names()) {
+            if (f == "displacement") {
+                for (const char* i : {"relative", "direct"})
+                    list.push_back({{"formulation", f}, {"rotation", r}, {"interpolation", i}});
+            } else if (r == "wiener-milenkovic") {
+                for (const char* m : {"plain", "continuous"})
+                    list.push_back({{"formulation", f}, {"rotation", r}, {"wm_map", m}});
+            } else {
+                list.push_back({{"formulation", f}, {"rotation", r}});
+            }
+        }
+    }
+    return list;
+}
+
+std::vector<Settings> selected_runs(const Settings& applies_to) {
+    std::vector<Settings> out;
+    for (Settings c : gate_combinations()) {
+        bool selected = true;
+        for (const auto& [key, value] : applies_to) {
+            if (!is_combination_key(key)) continue;
+            const auto it = c.find(key);
+            if (it == c.end() || it->second != value) selected = false;
+        }
+        if (!selected) continue;
+        for (const auto& [key, value] : applies_to) {
+            if (!is_combination_key(key)) c[key] = value;
+        }
+        out.push_back(c);
+    }
+    return out;
+}
+
+bool model_has(const Model& model, const Settings& pattern) {
+    for (const auto& [key, value] : pattern) {
+        if (model_setting(model, key) != value) return false;
+    }
+    return true;
+}
+
+std::string settings_label(const Settings& s) {
+    std::string label;
+    for (const std::string& key : kCombinationKeys) {
+        const auto it = s.find(key);
+        if (it != s.end()) label += (label.empty() ? "" : "/") + it->second;
+    }
+    for (const auto& [key, value] : s) {
+        if (!is_combination_key(key)) label += " " + key + "=" + value;
+    }
+    return label;
+}
+
+std::vector<std::string> discretization_overrides(const Settings& s) {
+    std::vector<std::string> overrides;
+    for (const auto& [key, value] : s) {
+        if (key != "elements") overrides.push_back("discretization." + key + "=" + value);
+    }
+    return overrides;
+}
+
+GateRuns::GateRuns(std::string case_path)
+    : path_(std::move(case_path)), base_(load_case(path_, {}, CaseParts::case_file)) {}
+
+GateRuns::Entry& GateRuns::entry(const Settings& wanted) {
+    Settings s;
+    for (const auto& [key, value] : wanted) {
+        if (model_setting(base_, key) != value) s[key] = value;
+    }
+    Entry& e = entries_[s];
+    if (e.loaded) return e;
+    e.loaded = true;
+    try {
+        Model m = load_case(path_, discretization_overrides(s), CaseParts::case_file);
+        const auto elements = s.find("elements");
+        if (elements != s.end()) {
+            for (Member& member : m.members) member.elements = std::stoi(elements->second);
+        }
+        e.model = std::move(m);
+    } catch (const InputError& error) {
+        e.refusal = error.what();
+    }
+    return e;
+}
+
+const Model* GateRuns::model(const Settings& s) {
+    const Entry& e = entry(s);
+    return e.model ? &*e.model : nullptr;
+}
+
+const nlohmann::json& GateRuns::result(const Settings& s) {
+    Entry& e = entry(s);
+    if (e.ran) return e.result;
+    e.ran = true;
+    if (e.model) {
+        try {
+            e.result = run_case(RunRequest{path_, *e.model});
+            return e.result;
+        } catch (const InputError& error) {
+            e.refusal = error.what();
+        }
+    }
+    e.result = {{"status", "unavailable"},
+                {"available", false},
+                {"message", e.refusal},
+                {"steps", nlohmann::json::array()}};
+    return e.result;
+}
+
+}  // namespace rotbeam::cli
