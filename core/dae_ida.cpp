@@ -16,6 +16,7 @@
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
 #include "core/sundials_callbacks.hpp"
+#include "core/time_limit.hpp"
 
 namespace rotbeam {
 
@@ -204,6 +205,7 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     for (long k = 1; k <= outputs; ++k) {
         const double tout = k == outputs ? s.end_time : s.start_time + k * interval;
         double tret = outcome.last_time;
+        check_time_limit("at time", tret);
         const int flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);
         statistics(r.ida, outcome);
         if (flag < 0) {

@@ -8,6 +8,7 @@
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
+#include "core/time_limit.hpp"
 
 namespace rotbeam {
 
@@ -207,9 +208,15 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
                                                            : SparseLUSolver::Kind::sparse_lu);
     for (long n = 1; n <= steps; ++n) {
         const double t = s.start_time + static_cast<double>(n) * s.time_step;
+        check_time_limit("at time", t - s.time_step);
         step.begin(t, x, xdot);
         if (n == 1) step.set_scales();
-        const NewtonOutcome out = solve_newton(step, s.newton, workspace);
+        NewtonOutcome out;
+        try {
+            out = solve_newton(step, s.newton, workspace);
+        } catch (const TimeLimitReached& e) {
+            rethrow_with_context(e, "in the step to time", t);
+        }
         outcome.newton_iterations += out.iterations;
         if (!out.accepted()) {
             std::ostringstream m;

@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
+#include "core/time_limit.hpp"
 
 namespace rotbeam {
 
@@ -66,10 +67,13 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
     for (long n = 1; n <= steps; ++n) {
         const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
         const double h = t_next - t;
+        check_time_limit("at time", t);
         NewtonOutcome out;
         try {
             problem.begin_step(t_next, h, scheme);
             out = solve_newton(problem, newton, workspace);
+        } catch (const TimeLimitReached& e) {
+            rethrow_with_context(e, "in the step to time", t_next);
         } catch (const SingularityError& e) {
             out.converged = false;
             out.singular = true;

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
+#include "core/time_limit.hpp"
 
 namespace rotbeam {
 
@@ -192,6 +193,7 @@ NewtonOutcome solve_newton(NonlinearSystem& system, const NewtonSettings& settin
     };
 
     for (int it = 0;; ++it) {
+        check_time_limit("in Newton iteration", it);
         try {
             if (damping.trial_jacobian_ready) {
                 // The damping test already evaluated r and J at this state.
@@ -347,9 +349,15 @@ StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load
         while (std::abs(target - lambda) > 1e-14 * std::max(std::abs(target), std::abs(lambda))) {
             const double trial =
                 (std::abs(target - lambda) <= std::abs(h) * (1.0 + 1e-12)) ? target : lambda + h;
+            check_time_limit("before the sub-step to load factor", trial);
             problem.set_load_factor(trial);
             if (settings.trace) *settings.trace << "load factor " << trial << "\n";
-            last = solver ? solver(problem, settings) : solve_newton(problem, settings, workspace);
+            try {
+                last =
+                    solver ? solver(problem, settings) : solve_newton(problem, settings, workspace);
+            } catch (const TimeLimitReached& e) {
+                rethrow_with_context(e, "in the sub-step to load factor", trial);
+            }
             if (last.accepted()) {
                 lambda = trial;
                 record.newton_iterations += last.iterations;

@@ -29,8 +29,10 @@ ly = (logy eq '1')
 # Shared ranges over every file (and the reference line), padded.
 xmin = 1e300; xmax = -1e300; ymin = 1e300; ymax = -1e300
 do for [i=1:n] {
+    # A file with no valid point (every run of its curve failed) leaves STATS_* undefined.
+    undefine STATS_*
     stats word(files, i) using xc:yc nooutput
-    if (STATS_records > 0) {
+    if (exists("STATS_records") && STATS_records > 0) {
         xmin = (STATS_min_x < xmin) ? STATS_min_x : xmin
         xmax = (STATS_max_x > xmax) ? STATS_max_x : xmax
         ymin = (STATS_min_y < ymin) ? STATS_min_y : ymin

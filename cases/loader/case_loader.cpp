@@ -1,11 +1,14 @@
 #include "cases/loader/case_loader.hpp"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string_view>
 
+#include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "core/errors.hpp"
 
@@ -48,10 +51,20 @@ void check_text(const std::string& text, const std::string& file) {
 }
 
 YAML::Node parse(const std::string& text, const std::string& file) {
+    if (text.size() > cases::kMaxFileBytes) {
+        throw InputError(file + ":1: (file): larger than " + std::to_string(cases::kMaxFileBytes) +
+                         " bytes (a limit of the case format)");
+    }
     check_text(text, file);
+    cases::check_yaml_shape(text, file);
     YAML::Node root;
     try {
         root = YAML::Load(text);
+    } catch (const YAML::DeepRecursion& e) {
+        // yaml-cpp's own guard (2000 levels, before the tree exists; its message is "bad file").
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): nested deeper than " + std::to_string(cases::kMaxYamlDepth) +
+                         " levels (the limit of a case file)");
     } catch (const YAML::ParserException& e) {
         throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
     }
@@ -90,9 +103,27 @@ YAML::Node descend(YAML::Node& node, const std::string& segment, const std::stri
     return next;
 }
 
+// The value of an override, parsed as YAML after the checks a file gets (text, shape).
+YAML::Node override_value(const std::string& value_text, const std::string& path,
+                          const std::string& file) {
+    try {
+        check_text(value_text, "");
+        cases::check_yaml_shape(value_text, "");
+        return YAML::Load(value_text);
+    } catch (const YAML::Exception& e) {
+        override_error(file, path, "the value is not valid YAML (" + e.msg + ")");
+    } catch (const InputError& e) {
+        // `:LINE: (file|yaml): problem` of a one-line value: the problem alone.
+        const std::string m = e.what();
+        override_error(file, path, "the value: " + m.substr(m.find("): ") + 3));
+    }
+}
+
 // Applies `key.path=value` to the tree: map segments are created when missing, list segments
-// are indices. The value is YAML (`[0.4, 2]` is a list). Returns the key path.
-std::string apply_override(YAML::Node& root, const std::string& text, const std::string& file) {
+// are indices, and a `*` segment stands for every key of a mapping that exists
+// (`members.*.elements=8`). The value is YAML (`[0.4, 2]` is a list). Returns the key paths set.
+std::vector<std::string> apply_override(YAML::Node& root, const std::string& text,
+                                        const std::string& file) {
     const size_t eq = text.find('=');
     const std::string path = eq == std::string::npos ? text : text.substr(0, eq);
     if (eq == std::string::npos || path.empty()) {
@@ -104,19 +135,31 @@ std::string apply_override(YAML::Node& root, const std::string& text, const std:
         if (s.empty()) override_error(file, path, "empty segment in the key path");
         segments.push_back(s);
     }
-    YAML::Node value;
-    try {
-        value = YAML::Load(text.substr(eq + 1));
-    } catch (const YAML::Exception& e) {
-        override_error(file, path, "the value is not valid YAML (" + e.msg + ")");
-    }
+    if (path.back() == '.') override_error(file, path, "empty segment in the key path");
+    const YAML::Node value = override_value(text.substr(eq + 1), path, file);
     if (value.IsNull()) override_error(file, path, "missing value after '='");
     YAML::Node node = root;
     std::string reached;
     for (size_t i = 0; i + 1 < segments.size(); ++i) {
+        if (segments[i] == "*") {
+            if (!node.IsMap() || node.size() == 0) {
+                override_error(file, path, "'*' must stand for the keys of an existing mapping");
+            }
+            std::vector<std::string> keys, set;
+            for (const auto& item : node) keys.push_back(item.first.Scalar());
+            for (const std::string& key : keys) {
+                std::string concrete = reached.empty() ? "" : reached + ".";
+                concrete += key;
+                for (size_t j = i + 1; j < segments.size(); ++j) concrete += "." + segments[j];
+                for (const std::string& p : apply_override(root, concrete + text.substr(eq), file))
+                    set.push_back(p);
+            }
+            return set;
+        }
         node.reset(descend(node, segments[i], reached, file));
         reached = cases::child_key(reached, segments[i]);
     }
+    if (segments.back() == "*") override_error(file, path, "'*' cannot be the last segment");
     if (node.IsScalar()) override_error(file, path, "cannot set a key inside a value");
     if (node.IsSequence()) {
         YAML::Node item = descend(node, segments.back(), path, file);
@@ -124,7 +167,30 @@ std::string apply_override(YAML::Node& root, const std::string& text, const std:
     } else {
         node[segments.back()] = value;
     }
-    return path;
+    return {path};
+}
+
+// Every connected part of the structure (members joined at shared points) holds a constrained
+// point. A part that holds none moves as a rigid body: its static tangent is singular, and a modal
+// analysis would report its rigid-body modes, whose ω² is round-off, as frequencies of 1e-5 Hz.
+// (A dynamic analysis may let a part fly free: its inertia keeps the step's matrix regular.)
+void check_every_part_held(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    std::vector<int> part(model.points.size());
+    for (size_t i = 0; i < part.size(); ++i) part[i] = static_cast<int>(i);
+    const auto find = [&](int p) {
+        while (part[static_cast<size_t>(p)] != p) p = part[static_cast<size_t>(p)];
+        return p;
+    };
+    for (const Member& m : model.members)
+        part[static_cast<size_t>(find(m.start_point))] = find(m.end_point);
+    std::vector<bool> held(part.size(), false);
+    for (const Constraint& c : model.constraints) held[static_cast<size_t>(find(c.point))] = true;
+    for (const Member& m : model.members) {
+        if (held[static_cast<size_t>(find(m.start_point))]) continue;
+        r.fail(root["members"], "members." + m.name,
+               "is not joined to any constrained point: its part of the structure moves as a rigid "
+               "body (singular in a static analysis; zero-frequency modes in a modal one)");
+    }
 }
 
 // Every point is an end of some member (a point nothing attaches to cannot carry a load or a
@@ -143,6 +209,23 @@ void check_topology(const YamlReader& r, const YAML::Node& root, const Model& mo
         r.fail(root["analysis"], "constraints",
                "missing: a static analysis needs at least one constraint (rigid-body motion)");
     }
+    if (model.analysis.kind != AnalysisKind::dynamic) check_every_part_held(r, root, model);
+}
+
+// The memory the run would need (limits.hpp), against the machine's: the member with the most
+// elements is named, as the usual cause.
+void check_memory(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    const cases::MemoryEstimate e = cases::estimate_memory(model);
+    const double available = cases::physical_memory_bytes();
+    if (available <= 0.0 || e.bytes <= available) return;
+    const auto largest =
+        std::max_element(model.members.begin(), model.members.end(),
+                         [](const Member& a, const Member& b) { return a.elements < b.elements; });
+    r.fail(root, "members." + largest->name + ".elements",
+           "the run would need an estimated " + cases::memory_text(e.bytes) + " of memory (" +
+               std::to_string(e.unknowns) + " unknowns; mostly " + e.dominant +
+               "), more than this machine's " + cases::memory_text(available) +
+               "; use fewer elements or a lower order");
 }
 
 // The displacement formulation's `midpoint` mass rule samples the inertia at one point per
@@ -199,6 +282,7 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
             }
         }
     }
+    check_memory(r, root, model);
     return model;
 }
 
@@ -208,7 +292,9 @@ Model load_case_text(const std::string& text, const std::string& file_name,
                      const std::vector<std::string>& overrides) {
     YAML::Node root = parse(text, file_name);
     std::set<std::string> overridden;
-    for (const std::string& o : overrides) overridden.insert(apply_override(root, o, file_name));
+    for (const std::string& o : overrides) {
+        for (const std::string& p : apply_override(root, o, file_name)) overridden.insert(p);
+    }
     YamlReader reader(file_name, overridden);
     reader.index_lines(root);
     try {
@@ -233,9 +319,18 @@ std::string read_text_file(const std::string& path, const char* what) {
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": (file): cannot open the " + std::string(what));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
+    // Read in chunks, stopping one chunk past the limit (a device or a pipe has no size to ask
+    // for, and a case file is a few kB: no megabyte buffer for each).
+    std::string text;
+    char chunk[16384];
+    while (text.size() <= cases::kMaxFileBytes && in.read(chunk, sizeof chunk).gcount() > 0) {
+        text.append(chunk, static_cast<size_t>(in.gcount()));
+    }
+    if (text.size() > cases::kMaxFileBytes) {
+        throw InputError(path + ":1: (file): larger than " + std::to_string(cases::kMaxFileBytes) +
+                         " bytes (a limit of the case format)");
+    }
+    return text;
 }
 
 bool sets_references(const std::string& override_text) {
@@ -259,7 +354,7 @@ void read_published_references(const std::string& file, const std::vector<std::s
     std::set<std::string> overridden;
     for (const std::string& o : overrides) {
         if (sets_references(o)) {
-            overridden.insert(apply_override(root, o, case_file));
+            for (const std::string& p : apply_override(root, o, case_file)) overridden.insert(p);
         } else {
             overridden.insert(o.substr(0, o.find('=')));
         }

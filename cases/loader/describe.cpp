@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/limits.hpp"
 #include "core/geometry.hpp"
 
 namespace rotbeam {
@@ -134,6 +135,9 @@ void describe_analysis(const Model& model, std::ostream& os) {
     os << " (" << gated << " gated)";
     if (!model.expected_stops.empty()) os << ", expected stops: " << model.expected_stops.size();
     os << "\n";
+    const cases::MemoryEstimate e = cases::estimate_memory(model);
+    os << "memory: estimated " << cases::memory_text(e.bytes) << " (about " << e.unknowns
+       << " unknowns; mostly " << e.dominant << "; docs/case-format.md, Limits)\n";
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
+#include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
@@ -235,7 +237,8 @@ Member read_member(const YamlReader& r, const YAML::Node& n, const std::string& 
         m.twist_end = tw.back();
     }
     read_member_sections(r, n, key, sections, m);
-    m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements");
+    m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements",
+                                    kMaxElementsPerMember);
     return m;
 }
 
@@ -273,8 +276,21 @@ void read_members(const YamlReader& r, const YAML::Node& root, const SectionTabl
         // The geometry refuses coincident ends, inconsistent arcs, coincident key points.
         try {
             const ReferenceGeometry g(model, static_cast<int>(model.members.size()) - 1);
-            (void)g.frame(0.0);
-            (void)g.frame(g.length());
+            // Coordinates so large (or a member so long) that the length, the frame or the
+            // curvature overflow would reach the solver as NaN: refused here, with the length.
+            bool finite = std::isfinite(g.length());
+            for (double f : {0.0, 0.5, 1.0}) {
+                if (!finite) break;
+                finite = g.frame(f * g.length()).allFinite() &&
+                         g.curvature(f * g.length()).allFinite() &&
+                         g.position(f * g.length()).allFinite();
+            }
+            if (!finite) {
+                std::ostringstream m;
+                m << "its geometry overflows double precision (length " << g.length()
+                  << "): use units that keep coordinates well below 1e150";
+                throw InputError(m.str());
+            }
         } catch (const InputError& e) {
             const YAML::Node line = item.second["line"];
             r.fail(line ? line : item.second, line ? key + ".line" : key, e.what());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 
 namespace rotbeam::cases {
@@ -24,7 +25,10 @@ std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::s
     if (name == "mass_rule") return r.choice(v, key, kMassRules);
     if (name == "wm_map") return r.choice(v, key, {"plain", "continuous"});
     if (name == "rescale") return r.boolean(v, key) ? "true" : "false";
-    return std::to_string(r.positive_integer(v, key));  // elements, order, quadrature_points
+    if (name == "elements")
+        return std::to_string(r.positive_integer(v, key, kMaxElementsPerMember));
+    if (name == "order") return std::to_string(r.positive_integer(v, key, kMaxOrder));
+    return std::to_string(r.positive_integer(v, key, kMaxQuadraturePoints));
 }
 
 // `applies_to` of a reference, an `also` entry or an expected stop; `scope` (why the named

@@ -1,7 +1,9 @@
 // Case loader: analysis, discretization and solver (docs/case-format.md).
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
+#include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 
 namespace rotbeam::cases {
@@ -39,12 +41,31 @@ void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bo
             r.numbers(r.required(n, "analysis", "load_factors"), "analysis.load_factors");
         if (s.load_factors.empty())
             r.fail(n["load_factors"], "analysis.load_factors", "must not be empty");
+        if (s.load_factors.size() > static_cast<size_t>(kMaxLoadFactors)) {
+            r.fail(n["load_factors"], "analysis.load_factors",
+                   "has " + std::to_string(s.load_factors.size()) + " entries, more than " +
+                       std::to_string(kMaxLoadFactors) + " (a limit of the case format)");
+        }
     }
-    if (n["substeps"]) s.substeps = r.positive_integer(n["substeps"], "analysis.substeps");
+    if (n["substeps"])
+        s.substeps = r.positive_integer(n["substeps"], "analysis.substeps", kMaxSubsteps);
+    const long total = static_cast<long>(s.load_factors.size()) * s.substeps;
+    if (total > kMaxStaticSubsteps) {
+        r.fail(n["substeps"], "analysis.substeps",
+               std::to_string(s.substeps) + " sub-steps per load factor × " +
+                   std::to_string(s.load_factors.size()) +
+                   " load factors = " + std::to_string(total) + " sub-steps, more than " +
+                   std::to_string(kMaxStaticSubsteps) + " (a limit of the case format)");
+    }
     if (n["max_step_cuts"]) {
         s.max_step_cuts = r.integer(n["max_step_cuts"], "analysis.max_step_cuts");
         if (s.max_step_cuts < 0)
             r.fail(n["max_step_cuts"], "analysis.max_step_cuts", "must not be negative");
+        if (s.max_step_cuts > kMaxStepCuts) {
+            r.fail(n["max_step_cuts"], "analysis.max_step_cuts",
+                   "must be at most " + std::to_string(kMaxStepCuts) +
+                       " (a limit of the case format: a sub-step cut that often is round-off)");
+        }
     }
 }
 
@@ -53,6 +74,12 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     d.end_time = r.positive(r.required(n, "analysis", "end_time"), "analysis.end_time");
     if (d.end_time < d.time_step)
         r.fail(n["end_time"], "analysis.end_time", "is shorter than time_step");
+    if (d.end_time / d.time_step > kMaxTimeSteps) {
+        std::ostringstream m;
+        m << "end_time / time_step = " << d.end_time / d.time_step << " time steps, more than "
+          << kMaxTimeSteps << " (a limit of the case format)";
+        r.fail(n["time_step"], "analysis.time_step", m.str());
+    }
     if (n["output_interval"]) {
         d.output_interval = r.non_negative(n["output_interval"], "analysis.output_interval");
     }
@@ -120,7 +147,7 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     } else {
         a.kind = AnalysisKind::modal;
         read_static(r, n, a.statics, false);
-        if (n["modes"]) a.modal.modes = r.positive_integer(n["modes"], "analysis.modes");
+        if (n["modes"]) a.modal.modes = r.positive_integer(n["modes"], "analysis.modes", kMaxModes);
         if (n["about_static_state"]) {
             a.modal.about_static_state =
                 r.boolean(n["about_static_state"], "analysis.about_static_state");
@@ -139,7 +166,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     if (n["formulation"])
         d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
     if (n["rotation"]) d.rotation = r.choice(n["rotation"], k + ".rotation", kRotations);
-    if (n["order"]) d.order = r.positive_integer(n["order"], k + ".order");
+    if (n["order"]) d.order = r.positive_integer(n["order"], k + ".order", kMaxOrder);
     if (n["quadrature"]) {
         const std::string q = r.choice(n["quadrature"], k + ".quadrature", kQuadratures);
         const auto at =
@@ -147,7 +174,8 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
         d.quadrature = static_cast<Quadrature>(at);  // kQuadratures lists the enum in order
     }
     if (n["quadrature_points"])
-        d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points");
+        d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points",
+                                                 kMaxQuadraturePoints);
     if (n["interpolation"])
         d.interpolation = r.choice(n["interpolation"], k + ".interpolation", kInterpolations);
     if (n["update"]) d.update = r.choice(n["update"], k + ".update", kUpdates);
@@ -176,7 +204,8 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     if (n["increment_tolerance"])
         s.increment_tolerance = r.positive(n["increment_tolerance"], k + ".increment_tolerance");
     if (n["max_iterations"])
-        s.max_iterations = r.positive_integer(n["max_iterations"], k + ".max_iterations");
+        s.max_iterations =
+            r.positive_integer(n["max_iterations"], k + ".max_iterations", kMaxNewtonIterations);
     if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
     if (n["mip"]) s.mip = r.boolean(n["mip"], k + ".mip");
     if (n["linear_solver"]) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cases/loader/limits.hpp"
 #include "core/errors.hpp"
 
 namespace rotbeam::cases {
@@ -68,19 +69,24 @@ bool YamlReader::overridden(const std::string& key) const {
     return false;
 }
 
-void YamlReader::index(const YAML::Node& node, const std::string& path) {
+void YamlReader::index(const YAML::Node& node, const std::string& path, int depth) {
+    if ((node.IsMap() || node.IsSequence()) && depth > kMaxYamlDepth) {
+        throw InputError(file_ + ":" + std::to_string(node.Mark().line + 1) +
+                         ": (yaml): nested deeper than " + std::to_string(kMaxYamlDepth) +
+                         " levels (the limit of a case file)");
+    }
     if (node.IsMap()) {
         for (const auto& item : node) {
             if (!item.first.IsScalar()) continue;
             const std::string k = child_key(path, item.first.Scalar());
             if (!item.first.Mark().is_null()) lines_[k] = item.first.Mark().line;
-            index(item.second, k);
+            index(item.second, k, depth + 1);
         }
     } else if (node.IsSequence()) {
         for (size_t i = 0; i < node.size(); ++i) {
             const std::string k = path + "[" + std::to_string(i) + "]";
             if (!node[i].Mark().is_null()) lines_[k] = node[i].Mark().line;
-            index(node[i], k);
+            index(node[i], k, depth + 1);
         }
     }
 }
@@ -211,6 +217,16 @@ int YamlReader::integer(const YAML::Node& node, const std::string& key) const {
 int YamlReader::positive_integer(const YAML::Node& node, const std::string& key) const {
     const int v = integer(node, key);
     if (v < 1) fail(node, key, "must be a positive integer, got " + quoted(node.Scalar()));
+    return v;
+}
+
+int YamlReader::positive_integer(const YAML::Node& node, const std::string& key, long limit) const {
+    const int v = positive_integer(node, key);
+    if (v > limit) {
+        fail(node, key,
+             "must be at most " + std::to_string(limit) + " (a limit of the case format), got " +
+                 quoted(node.Scalar()));
+    }
     return v;
 }
 

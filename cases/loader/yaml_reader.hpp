@@ -35,7 +35,8 @@ class YamlReader {
 
     // Records the line of every key (and list item) of the tree by key path, so that messages
     // name the line of the key — a block mapping or list value starts on the line after it.
-    void index_lines(const YAML::Node& root) { index(root, ""); }
+    // A tree nested deeper than kMaxYamlDepth (limits.hpp) is refused here: `FILE:LINE: (yaml):`.
+    void index_lines(const YAML::Node& root) { index(root, "", 1); }
     // Whether `key` (or a parent of it) was set by a --set override.
     bool overridden(const std::string& key) const;
 
@@ -59,6 +60,8 @@ class YamlReader {
     double non_negative(const YAML::Node& node, const std::string& key) const;
     int integer(const YAML::Node& node, const std::string& key) const;
     int positive_integer(const YAML::Node& node, const std::string& key) const;
+    // A positive integer no larger than `limit` (a size limit of limits.hpp).
+    int positive_integer(const YAML::Node& node, const std::string& key, long limit) const;
     bool boolean(const YAML::Node& node, const std::string& key) const;
     std::string string(const YAML::Node& node, const std::string& key) const;
     // One of `choices` (else: the list, and the closest choice).
@@ -79,7 +82,7 @@ class YamlReader {
     std::string scalar(const YAML::Node& node, const std::string& key,
                        const std::string& expected) const;
 
-    void index(const YAML::Node& node, const std::string& path);
+    void index(const YAML::Node& node, const std::string& path, int depth);
 
     std::string file_;
     std::set<std::string> overridden_;

@@ -1,6 +1,9 @@
 #include "arguments.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -19,7 +22,7 @@ std::vector<std::string> ParsedArguments::values(const std::string& name) const 
 }
 
 std::optional<int> ParsedArguments::positive_int(const std::string& command,
-                                                 const std::string& name) const {
+                                                 const std::string& name, int max, int min) const {
     const std::optional<std::string> v = value(name);
     if (!v) return std::nullopt;
     size_t used = 0;
@@ -29,11 +32,27 @@ std::optional<int> ParsedArguments::positive_int(const std::string& command,
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != v->size() || n <= 0 || n > 1000000) {
-        throw InputError("rotbeam " + command + ": --" + name +
-                         ": expected a positive integer, got '" + *v + "'");
+    if (used != v->size() || v->empty() || !std::isdigit(static_cast<unsigned char>(v->front())) ||
+        n < min || n > max) {
+        throw InputError("rotbeam " + command + ": --" + name + ": expected an integer from " +
+                         std::to_string(min) + " to " + std::to_string(max) + ", got '" + *v + "'");
     }
     return static_cast<int>(n);
+}
+
+std::optional<double> ParsedArguments::positive_number(const std::string& command,
+                                                       const std::string& name, double max) const {
+    const std::optional<std::string> v = value(name);
+    if (!v) return std::nullopt;
+    char* end = nullptr;
+    const double x = v->empty() ? 0.0 : std::strtod(v->c_str(), &end);
+    if (v->empty() || end != v->c_str() + v->size() || !std::isfinite(x) || !(x > 0.0) || x > max) {
+        std::ostringstream m;
+        m << "rotbeam " << command << ": --" << name << ": expected a number in (0, " << max
+          << "], got '" << *v << "'";
+        throw InputError(m.str());
+    }
+    return x;
 }
 
 namespace {
@@ -113,7 +132,8 @@ ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::
             value = *inline_value;
         } else {
             if (i + 1 >= args.size()) {
-                throw InputError(prefix + "--" + name + " needs a value (" + option->value_name + ")");
+                throw InputError(prefix + "--" + name + " needs a value (" + option->value_name +
+                                 ")");
             }
             value = args[++i];
         }

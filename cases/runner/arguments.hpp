@@ -9,6 +9,13 @@
 
 namespace rotbeam::cli {
 
+// The limits of the numeric options (docs/case-format.md, "Limits"); a case file's sizes are
+// limited by the loader (cases/loader/limits.hpp).
+inline constexpr int kMaxJobs = 256;       // suite --jobs: worker threads
+inline constexpr int kMaxRepeats = 1000;   // bench --repeats: timing repeats per measurement
+inline constexpr int kMaxSamples = 20000;  // study rotations --samples: angles in the sweep
+inline constexpr double kMaxTimeLimit = 604800.0;  // run --time-limit: seconds (a week)
+
 struct OptionSpec {
     std::string name;        // without the leading "--"
     std::string value_name;  // empty: a flag without value
@@ -26,15 +33,20 @@ struct CommandSpec {
 };
 
 class ParsedArguments {
-public:
+  public:
     bool help = false;
     std::vector<std::string> positional;
 
     bool has(const std::string& name) const { return values_.count(name) > 0; }
     std::optional<std::string> value(const std::string& name) const;
     std::vector<std::string> values(const std::string& name) const;
-    // A positive integer option; InputError naming the command and option otherwise.
-    std::optional<int> positive_int(const std::string& command, const std::string& name) const;
+    // An integer option in [min, max] (its documented limits); InputError naming the command,
+    // the option and the range otherwise (non-numeric, fractional, out of range, overflowing).
+    std::optional<int> positive_int(const std::string& command, const std::string& name, int max,
+                                    int min = 1) const;
+    // A finite number in (0, max]; InputError naming the command and the option otherwise.
+    std::optional<double> positive_number(const std::string& command, const std::string& name,
+                                          double max) const;
 
     std::map<std::string, std::vector<std::string>> values_;
 };

@@ -4,11 +4,13 @@
 // like-for-like: the machine tag names host, CPU and core count).
 #include <unistd.h>
 
+#include <algorithm>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "arguments.hpp"
@@ -17,6 +19,7 @@
 #include "bench_long_run.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
+#include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
@@ -24,6 +27,26 @@
 #include "timing.hpp"
 
 namespace rotbeam::cli {
+
+namespace {
+
+// Every name of --targets is a target (an unknown one would silently benchmark nothing).
+void check_target_names(const std::string& list) {
+    std::vector<std::string> known = {"joined-beam-modal", "joined-beam-dynamic", "long-run"};
+    for (const BenchTarget& t : bench_targets()) known.push_back(t.name);
+    std::stringstream ss(list);
+    for (std::string name; std::getline(ss, name, ',');) {
+        if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        const std::string guess = closest_match(name, known);
+        std::string all;
+        for (const std::string& k : known) all += (all.empty() ? "" : ", ") + k;
+        throw InputError(
+            "rotbeam bench: --targets: unknown target '" + name + "'" +
+            (guess.empty() ? " (known: " + all + ")" : "; did you mean '" + guess + "'?"));
+    }
+}
+
+}  // namespace
 
 namespace fs = std::filesystem;
 
@@ -204,7 +227,7 @@ int command_bench(const Args& args) {
         "history to 1e-3 of a same-mesh self-converged reference) targets.",
         {{"json", "FILE", "write the results (default out/bench.json)"},
          {"history", "", "also write reports/history/<date>-<machine>.json"},
-         {"repeats", "N", "timing repeats (default 11, --quick 5)"},
+         {"repeats", "N", "timing repeats, 1 to 1000 (default 11, --quick 5)"},
          {"quick", "", "a smaller search grid and fewer repeats"},
          {"targets", "LIST", "comma-separated target names (default: all; e.g. joined-beam-modal)"},
          {"references", "DIR",
@@ -217,7 +240,8 @@ int command_bench(const Args& args) {
         return 0;
     }
     const bool quick = a.has("quick");
-    const int repeats = a.positive_int("bench", "repeats").value_or(quick ? 5 : 11);
+    const int repeats = a.positive_int("bench", "repeats", kMaxRepeats).value_or(quick ? 5 : 11);
+    check_target_names(a.value("targets").value_or(""));
     nlohmann::json out = {{"version", kGitDescribe},
                           {"date", utc("%Y-%m-%d %H:%M UTC")},
                           {"machine", machine_json()},

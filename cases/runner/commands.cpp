@@ -58,6 +58,7 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
         {"rotation", "discretization.rotation"},
         {"formulation", "discretization.formulation"},
         {"order", "discretization.order"},
+        {"elements", "members.*.elements"},
         {"interpolation", "discretization.interpolation"}};
     for (const auto& [option, key] : shorthands) {
         if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
@@ -66,13 +67,9 @@ std::vector<std::string> overrides_from(const ParsedArguments& a) {
     return overrides;
 }
 
-Model load_with_options(const std::string& command, const std::string& path,
-                        const ParsedArguments& a, CaseParts parts = CaseParts::all) {
-    Model model = load_case(path, overrides_from(a), parts);
-    if (const auto n = a.positive_int(command, "elements")) {
-        for (Member& m : model.members) m.elements = *n;
-    }
-    return model;
+Model load_with_options(const std::string& path, const ParsedArguments& a,
+                        CaseParts parts = CaseParts::all) {
+    return load_case(path, overrides_from(a), parts);
 }
 
 // A modal run's modes: frequency (or why it is not reported), growth rate and the checks.
@@ -202,14 +199,16 @@ int command_run(const Args& args) {
         "result (DESIGN.md contract). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
          {"formulation", "NAME", "displacement | mixed"},
-         {"elements", "N", "elements per member (overrides the case)"},
+         {"elements", "N", "elements of every member (members.*.elements)"},
          {"order", "P", "element order (displacement formulation)"},
          {"interpolation", "NAME", "relative | direct"},
          kSetOption,
          {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
          {"json", "FILE", "write the result JSON to FILE"},
          {"quiet", "", "print nothing on success"},
-         {"trace-newton", "", "print every Newton iteration and step cut to stderr"}}};
+         {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
+         {"time-limit", "SECONDS",
+          "stop the run after this wall-clock time with the status time-limit"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -218,8 +217,9 @@ int command_run(const Args& args) {
     const std::string path = resolve_case_path(a.positional[0]);
     // A run reads the case file alone: the published references beside a catalog case are for
     // check, verify and the suite (case_loader.hpp).
-    const Model model = load_with_options("run", path, a, CaseParts::case_file);
-    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton")});
+    const Model model = load_with_options(path, a, CaseParts::case_file);
+    const double limit = a.positive_number("run", "time-limit", kMaxTimeLimit).value_or(0.0);
+    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton"), limit});
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;
@@ -269,7 +269,7 @@ int command_study(const Args& args) {
         "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
         "(study-NAME.md, .json, figures).",
         {{"json", "FILE", "write the study JSON to FILE (rotations)"},
-         {"samples", "N", "angles in the sweep (default 721, rotations)"},
+         {"samples", "N", "angles in the sweep, 2 to 20000 (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},
          {"reduced-follower", "",
@@ -284,7 +284,7 @@ int command_study(const Args& args) {
                                                       a.has("quick"), a.has("reduced-follower")});
         return 0;
     }
-    const int samples = a.positive_int("study", "samples").value_or(721);
+    const int samples = a.positive_int("study", "samples", kMaxSamples, 2).value_or(721);
     const nlohmann::json study = param::rotation_study(samples);
     if (const auto file = a.value("json")) {
         write_file_atomically(*file, study.dump(1) + "\n");

@@ -1,16 +1,20 @@
 #include "report.hpp"
 
 #include <sys/utsname.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
+#include <thread>
 
 #include "core/results.hpp"
 #include "core/version.hpp"
@@ -54,15 +58,50 @@ nlohmann::json read_json(const std::string& path) {
     }
 }
 
-// Runs a gnuplot script from reports/ with named string variables. Returns false if gnuplot is
-// missing or fails (the report then says so instead of showing the figure).
-bool gnuplot(const std::string& script, const std::map<std::string, std::string>& vars) {
+// `text` as one word for the shell: single-quoted, each ' written as '\''.
+std::string shell_word(const std::string& text) {
+    std::string s = "'";
+    for (char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return s + "'";
+}
+
+// `text` as a gnuplot string literal: single-quoted, each ' doubled (no escapes are expanded).
+std::string gnuplot_string(const std::string& text) {
+    std::string s = "'";
+    for (char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
+    return s + "'";
+}
+
+// Runs a gnuplot script from reports/ with named string variables. A figure the report links must
+// exist, so a failure (gnuplot missing, or the script failing on the data) throws, with gnuplot's
+// last message: the report is never written with a hole where a figure should be.
+void gnuplot(const std::string& script, const std::map<std::string, std::string>& vars) {
+    const fs::path errors =
+        fs::temp_directory_path() /
+        ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
+         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".err");
     // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string&&.)
     std::ostringstream command;
     command << "gnuplot";
-    for (const auto& [k, v] : vars) command << " -e \"" << k << "='" << v << "'\"";
-    command << " " << (fs::path(ROTBEAM_REPORTS_DIR) / script).string() << " 2>/dev/null";
-    return std::system(command.str().c_str()) == 0;
+    for (const auto& [k, v] : vars) command << " -e " << shell_word(k + "=" + gnuplot_string(v));
+    command << " " << shell_word((fs::path(ROTBEAM_REPORTS_DIR) / script).string()) << " 2>"
+            << shell_word(errors.string());
+    const int status = std::system(command.str().c_str());
+    std::string last;
+    {
+        std::ifstream in(errors);
+        for (std::string line; std::getline(in, line);) {
+            if (line.find_first_not_of(" ^") != std::string::npos) last = line;
+        }
+    }
+    std::error_code ec;
+    fs::remove(errors, ec);
+    if (status != 0) {
+        const auto outbase = vars.find("outbase");
+        throw std::runtime_error("gnuplot failed on reports/" + script +
+                                 (outbase == vars.end() ? "" : " for " + outbase->second) +
+                                 " (exit status " + std::to_string(status) + "): " + last);
+    }
 }
 
 // The roll-up's tip path u1/L, u3/L against λ for every converged combination, plus the exact
@@ -88,10 +127,8 @@ std::vector<Figure> rollup_figures(const std::string& out,
     }
     if (files.empty()) return {};
     const std::string png = "rollup-tip.png";
-    if (!gnuplot("rollup_tip.gp",
-                 {{"files", files}, {"outbase", (fs::path(out) / "rollup-tip").string()}})) {
-        return {};
-    }
+    gnuplot("rollup_tip.gp",
+            {{"files", files}, {"outbase", (fs::path(out) / "rollup-tip").string()}});
     return {{png,
              "Tip displacement of the moment-loaded cantilever (seed 002 Example 1) against the "
              "load factor λ for every combination that ran, over the exact solution (lines; "
@@ -122,12 +159,9 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
             lambdas << s["load_factor"].get<double>() << " ";
         }
         f.close();
-        if (!gnuplot("rollup_shapes.gp",
-                     {{"datafile", file.string()},
-                      {"lambdas", lambdas.str()},
-                      {"outbase", (fs::path(out) / "rollup-shapes").string()}})) {
-            return {};
-        }
+        gnuplot("rollup_shapes.gp", {{"datafile", file.string()},
+                                     {"lambdas", lambdas.str()},
+                                     {"outbase", (fs::path(out) / "rollup-shapes").string()}});
         return {{"rollup-shapes.png",
                  "Seed 002 Fig. 3: deformed shapes of the moment-loaded cantilever for every "
                  "reported λ (displacement formulation, quaternion, the case's 16 elements of "
@@ -172,10 +206,8 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
     const fs::path data = fs::path(out) / "data" / "rotation-study.dat";
     fs::create_directories(data.parent_path());
     if (!write_rotation_study_data(study, data.string())) return {};
-    if (!gnuplot("rotation_study.gp", {{"datafile", data.string()},
-                                       {"outbase", (fs::path(out) / "rotation-study").string()}})) {
-        return {};
-    }
+    gnuplot("rotation_study.gp", {{"datafile", data.string()},
+                                  {"outbase", (fs::path(out) / "rotation-study").string()}});
     return {{"rotation-study.png",
              "Smallest singular value of the material tangent H_m and the round-trip error of each "
              "parameterization against the rotation angle (0 … 4π): where each one becomes "
@@ -184,8 +216,8 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
 
 }  // namespace
 
-bool run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
-    return gnuplot(script, vars);
+void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
+    gnuplot(script, vars);
 }
 
 void write_report(const std::string& out_dir, const std::vector<std::string>& run_files) {

@@ -14,8 +14,9 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
 // page, images embedded (report_html.cpp).
 std::string markdown_page_html(const std::string& markdown, const std::string& out_dir);
 
-// Runs reports/<script> with gnuplot and string variables (-e "k='v'"); false when gnuplot is
-// missing or fails. Shared with the studies and the benchmark (study_common.cpp).
-bool run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars);
+// Runs reports/<script> with gnuplot and string variables (-e "k='v'", any text quoted); throws
+// std::runtime_error with gnuplot's message when gnuplot is missing or fails, since the report
+// links the figure. Shared with the studies and the benchmark (study_common.cpp).
+void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars);
 
 }  // namespace rotbeam::cli

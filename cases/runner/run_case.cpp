@@ -12,6 +12,7 @@
 #include "core/kinsol_driver.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "core/time_limit.hpp"
 #include "core/version.hpp"
 #include "make_problem.hpp"
 
@@ -240,6 +241,7 @@ nlohmann::json run_case(const RunRequest& request) {
     nlohmann::json result = result_header(request);
     const auto start = std::chrono::steady_clock::now();
     try {
+        const ScopedTimeLimit limit(request.time_limit_seconds);
         switch (model.analysis.kind) {
             case AnalysisKind::static_:
                 run_static_case(model, request.trace_newton, result);
@@ -265,6 +267,17 @@ nlohmann::json run_case(const RunRequest& request) {
     } catch (const SolverError& e) {
         result["status"] = "error";
         result["message"] = e.what();
+    } catch (const TimeLimitReached& e) {
+        // Stopped on purpose: what was computed is not an answer, so nothing of it is kept.
+        result["status"] = "time-limit";
+        result["message"] = e.what();
+        result["steps"] = nlohmann::json::array();
+    } catch (const InputError& e) {
+        // A model the formulation refuses (a rigid section in the displacement formulation): the
+        // one-line message names the case file like every other input error.
+        const std::string m = e.what();
+        if (request.case_path.empty() || m.rfind(request.case_path, 0) == 0) throw;
+        throw InputError(request.case_path + ": (model): " + m);
     }
     result["wall_seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -10,9 +10,12 @@
 namespace rotbeam {
 
 struct RunRequest {
-    std::string case_path;  // for the record
-    Model model;            // with every override already applied
+    std::string case_path;      // for the record
+    Model model;                // with every override already applied
     bool trace_newton = false;  // print the Newton iterations to stderr
+    // Wall-clock limit in seconds (core/time_limit.hpp), 0 = none: past it the run stops with
+    // the status `time-limit`.
+    double time_limit_seconds = 0.0;
 };
 
 // Runs the analysis. Never throws for numerical failure: the status says it (`converged`,

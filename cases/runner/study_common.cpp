@@ -159,9 +159,9 @@ void write_text(const StudyOptions& o, const std::string& relative_path, const s
     write_file_atomically(p.string(), text);
 }
 
-bool plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars) {
+void plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars) {
     std::map<std::string, std::string> m(vars.begin(), vars.end());
-    return run_gnuplot_script(script, m);
+    run_gnuplot_script(script, m);
 }
 
 std::string sci(double value, int digits) {

@@ -94,7 +94,8 @@ std::string join_words(const std::vector<std::string>& words);
 // Output: text files under the study folder, gnuplot (reports/<script>), numbers for tables.
 void write_text(const StudyOptions& o, const std::string& relative_path, const std::string& text);
 std::string out_path(const StudyOptions& o, const std::string& relative_path);
-bool plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
+// Throws when gnuplot fails (report.hpp, run_gnuplot_script).
+void plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
 std::string sci(double value, int digits = 2);  // "—" for NaN
 std::string quoted(const std::string& s);       // for gnuplot data-file titles
 

@@ -203,8 +203,11 @@ nlohmann::json study_convergence(const StudyOptions& o) {
     for (const ConvergenceCase& c : convergence_cases()) {
         out["cases"].push_back(convergence_case(o, c, table));
     }
+    // The p-refinement is the last of the displacement refinements; held in a variable, since a
+    // range-for over a member of the returned temporary would read it after it is destroyed.
+    const std::vector<Refinement> displacement = refinements("displacement", o.quick);
     std::string orders;
-    for (int p : refinements("displacement", o.quick).back().orders) {
+    for (int p : displacement.back().orders) {
         orders += (orders.empty() ? "" : ", ") + std::to_string(p);
     }
     std::ostringstream md;

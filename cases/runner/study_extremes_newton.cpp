@@ -159,9 +159,7 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
                  {"ycol", "4"},
                  {"xlabel", "elements N"},
                  {"ylabel", "tip error ‖Δu‖/L [-]"},
-                 {"plottitle",
-                  "Roll-up λ = 0.8: tip error under mesh doubling (where it stops "
-                  "falling, if it does: the table's floor column)"},
+                 {"plottitle", "Roll-up λ = 0.8: tip error under mesh doubling"},
                  {"outbase", out_path(o, "extremes-round-off")},
                  {"logx", "1"},
                  {"logy", "1"}});

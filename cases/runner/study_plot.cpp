@@ -64,7 +64,8 @@ bool plot_panels(const StudyOptions& o, const PanelFigure& figure,
         write_text(o, rel, s.str());
         vars.push_back({"failed", out_path(o, rel)});
     }
-    return plot("study_panels.gp", vars);
+    plot("study_panels.gp", vars);
+    return true;
 }
 
 }  // namespace rotbeam::cli

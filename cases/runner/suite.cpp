@@ -215,7 +215,7 @@ int command_suite(const Args& args) {
         "DIR/index.html, plots). "
         "Finished runs whose inputs are unchanged are skipped on a rerun.",
         {{"out", "DIR", "output folder (default: out)"},
-         {"jobs", "N", "worker threads (default: all cores)"},
+         {"jobs", "N", "worker threads, 1 to 256 (default: all cores)"},
          {"cases", "GLOB", "only catalog cases matching GLOB (default: *)"},
          {"force", "", "rerun everything"},
          {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"},
@@ -227,10 +227,17 @@ int command_suite(const Args& args) {
         return 0;
     }
     const std::string out = a.value("out").value_or("out");
-    const int jobs =
-        a.positive_int("suite", "jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
-    const std::vector<PlannedRun> runs =
-        plan_runs(a.value("cases").value_or("*"), out, a.has("quick"));
+    const int jobs = a.positive_int("suite", "jobs", kMaxJobs)
+                         .value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const std::string glob = a.value("cases").value_or("*");
+    const std::vector<std::string> catalog = catalog_cases();
+    if (std::none_of(catalog.begin(), catalog.end(), [&](const std::string& name) {
+            return fnmatch(glob.c_str(), name.c_str(), 0) == 0;
+        })) {
+        throw InputError("rotbeam suite: --cases: '" + glob +
+                         "' matches no catalog case (see 'rotbeam list')");
+    }
+    const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"));
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
     run_all(runs, jobs, a.has("force"));

@@ -6,8 +6,11 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/limits.hpp"
 #include "core/errors.hpp"
 
 using namespace rotbeam;
@@ -76,6 +79,44 @@ BOOST_AUTO_TEST_CASE(every_bad_file_gives_one_line_naming_file_line_key_and_prob
 BOOST_AUTO_TEST_CASE(missing_file_and_directory_are_input_errors) {
     BOOST_CHECK_THROW(load_case(kBadDir + "does-not-exist.yaml"), InputError);
     BOOST_CHECK_THROW(load_case(kBadDir), InputError);
+}
+
+// Text past the size limit is refused before it is parsed, and an override's value gets the
+// shape checks of a file (a recursive alias in `--set` would otherwise loop like one in a file).
+BOOST_AUTO_TEST_CASE(oversized_text_and_recursive_override_values_are_one_line_input_errors) {
+    const std::string huge(cases::kMaxFileBytes + 1, '#');
+    try {
+        load_case_text(huge, "huge.yaml");
+        BOOST_FAIL("oversized text accepted");
+    } catch (const InputError& e) {
+        BOOST_TEST(std::string(e.what()) ==
+                   "huge.yaml:1: (file): larger than 1048576 bytes (a limit of the case format)");
+    }
+    const std::string path = std::string(ROTBEAM_SOURCE_DIR) + "/cases/cantilever-moment.yaml";
+    try {
+        load_case(path, {"points.tip=&a [*a]"});
+        BOOST_FAIL("recursive override accepted");
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(m.rfind(path + ":--set: points.tip: the value: alias *a is inside", 0) == 0u, m);
+    }
+}
+
+// The limits admit the whole catalog: each size key at its limit is accepted (the limit is
+// inclusive), one past it is refused.
+BOOST_AUTO_TEST_CASE(each_size_limit_is_inclusive) {
+    const std::string path = std::string(ROTBEAM_SOURCE_DIR) + "/cases/cantilever-moment.yaml";
+    const std::vector<std::pair<std::string, long>> keys = {
+        {"discretization.order", cases::kMaxOrder},
+        {"discretization.quadrature_points", cases::kMaxQuadraturePoints},
+        {"analysis.max_step_cuts", cases::kMaxStepCuts},
+        {"solver.max_iterations", cases::kMaxNewtonIterations}};
+    for (const auto& [key, limit] : keys) {
+        BOOST_TEST_CONTEXT(key) {
+            BOOST_CHECK_NO_THROW(load_case(path, {key + "=" + std::to_string(limit)}));
+            BOOST_CHECK_THROW(load_case(path, {key + "=" + std::to_string(limit + 1)}), InputError);
+        }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

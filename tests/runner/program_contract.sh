@@ -36,6 +36,82 @@ expect_input_error "unknown parameterization" run cantilever-moment --rotation e
 [ ! -e "$work/r.json" ] || fail "a result file was written for bad input"
 expect_input_error "unknown study" study nothing
 
+# Every command-line value goes through the validation of the case file, with the same limits
+# (docs/case-format.md, Limits): negative, zero, non-numeric, fractional, overflowing, NaN/inf,
+# past a limit, unknown keys; refused with one line before anything runs or is written.
+expect_bad_value() {
+    local what=$1 fragment=$2
+    shift 2
+    expect_input_error "$what" "$@"
+    grep -qF -- "$fragment" "$work/err" || fail "$what: '$(cat "$work/err")' lacks '$fragment'"
+}
+for v in -3 abc 2.5 99999999999 .nan .inf "[1, 2]"; do
+    expect_bad_value "--elements $v" "members.beam.elements: " run cantilever-moment --elements "$v"
+done
+expect_bad_value "--elements past its limit" "members.beam.elements: must be at most 100000" \
+    run cantilever-moment --elements 100001
+expect_bad_value "--order 400" "discretization.order: must be at most 24" \
+    run cantilever-moment --order 400
+expect_bad_value "--order 0" "discretization.order: must be a positive integer" \
+    check cantilever-moment --set discretization.order=0
+expect_bad_value "--set NaN" "must be finite, got '.nan'" \
+    check cantilever-moment --set sections.square.isotropic.E=.nan
+expect_bad_value "--set -inf" "must be finite" check cantilever-moment --set 'points.tip=[-.inf, 0, 0]'
+expect_bad_value "--set unknown key" "discretization.ordr: unknown key; did you mean 'order'?" \
+    check cantilever-moment --set discretization.ordr=2
+expect_bad_value "--set substeps past the limit" "analysis.substeps: must be at most 100000" \
+    check cantilever-moment --set analysis.substeps=1000000
+expect_bad_value "--set modal memory" "the run would need an estimated" \
+    check free-vibration --set analysis.time_step=0.1 --set analysis.end_time=0.1 \
+    --set 'members.*.elements=100000' --set solver.linear_solver=dense
+expect_bad_value "--set recursive alias" "the value: alias *a is inside the node its anchor names" \
+    check cantilever-moment --set 'points.tip=&a [*a]'
+expect_bad_value "--set '*' on a value" "'*' must stand for the keys of an existing mapping" \
+    check cantilever-moment --set 'gravity.*.x=1'
+for v in 0 -1 abc 1.5 99999999999 nan 257; do
+    expect_bad_value "suite --jobs $v" "--jobs: expected an integer from 1 to 256, got '$v'" \
+        suite --jobs "$v" --out "$work/never"
+done
+[ ! -e "$work/never" ] || fail "suite with a bad --jobs created its output folder"
+expect_bad_value "bench --repeats 0" "--repeats: expected an integer from 1 to 1000" \
+    bench --repeats 0 --json "$work/never.json"
+expect_bad_value "bench --targets unknown" "--targets: unknown target 'joined-beam-modl'; did you mean 'joined-beam-modal'?" \
+    bench --targets joined-beam-modl --json "$work/never.json"
+[ ! -e "$work/never.json" ] || fail "bench with an unknown target wrote a result"
+expect_bad_value "suite --cases matching nothing" "--cases: 'zzz*' matches no catalog case" \
+    suite --cases 'zzz*' --out "$work/never"
+[ ! -e "$work/never" ] || fail "suite matching no case created its output folder"
+expect_bad_value "study --samples 1" "--samples: expected an integer from 2 to 20000, got '1'" \
+    study rotations --samples 1
+# The wall-clock limit: its own status, no steps, no NaN, exit 0; a bad value is an input error.
+"$rotbeam" run joined-beam-dead --time-limit 0.05 --json "$work/limited.json" >/dev/null 2>&1 ||
+    fail "run --time-limit exited $?"
+python3 - "$work/limited.json" <<'PY' || fail "a run stopped by --time-limit does not say so"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "time-limit", r["status"]
+assert "wall-clock limit of 0.05 s was reached" in r["message"], r["message"]
+assert r["steps"] == [], "steps kept"
+PY
+for v in 0 -1 nan inf abc 1e9; do
+    expect_bad_value "--time-limit $v" "--time-limit: expected a number in (0, 604800], got '$v'" \
+        run cantilever-moment --time-limit "$v" --json "$work/never.json"
+done
+[ ! -e "$work/never.json" ] || fail "a result was written for a bad --time-limit"
+# A model the formulation refuses (a rigid section in the displacement formulation): one line
+# naming the file.
+sed 's/isotropic: {E: 1.0e7, nu: 0.3, A: 1.0, I2: 0.0833, I3: 0.0833, J: 0.14}/compliance: [[1, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, 1]]/' \
+    "$src/cases/bad/zero-elements.yaml" | sed 's/elements: 0/elements: 2/' >"$work/rigid.yaml"
+expect_bad_value "rigid section, displacement" "rigid.yaml: (model): member 'beam': the displacement" \
+    run "$work/rigid.yaml" --json "$work/never.json"
+[ ! -e "$work/never.json" ] || fail "a result was written for a refused model"
+# A file past the size limit, and one of non-UTF-8 text: one line naming the file.
+head -c 1048577 /dev/zero | tr '\0' '#' >"$work/huge.yaml"
+expect_bad_value "file past the size limit" "huge.yaml:1: (file): larger than 1048576 bytes" \
+    check "$work/huge.yaml"
+printf 'name: caf\xe9\n' >"$work/latin.yaml"
+expect_bad_value "non-UTF-8 file" "latin.yaml:1: (file): not a text case file" check "$work/latin.yaml"
+
 # Every command has --help (exit 0).
 for c in list check run suite verify reference study; do
     "$rotbeam" $c --help >/dev/null 2>&1 || fail "$c --help failed"
