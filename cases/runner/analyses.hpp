@@ -3,13 +3,17 @@
 // make_problem.cpp does for statics), so nothing below dispatches on the parameterization.
 //
 // Each function fills the result JSON of DESIGN.md's contract (run_case has written the header):
-//   `dofs`, `status` (converged | diverged | singular | error), `message`, `counters`;
+//   `dofs`, `status` (converged | diverged | singular | error; modal also
+//   eigenpair-check-failed), `message`, `counters`;
 //   dynamic: `steps`, one per output time, built with step_json(model, nullopt, t, iterations, …)
 //            (run writes the CSV time history from them);
-//   modal:   `frequencies_hz` (ascending, model.analysis.modal.modes of them), `modes` (per mode:
-//            `frequency_hz`, `growth_rate` (Re s, mixed) and `points`: each named point's
-//            displacement [3] and rotation [3] amplitude, normalized to a largest component of 1),
-//            and `steps` holding the static state the modes are computed about (if loaded).
+//   modal:   `modes` (model.analysis.modal.modes of them, lowest first; per mode: `s` [Re, Im]
+//            of the oscillation e^{st}, `growth_rate`, `check` (modal_checks.hpp), `frequency_hz`
+//            only when the check accepted the pair, `points`: each named point's displacement [3]
+//            and rotation [3] amplitude, normalized to a largest component of 1, and `stations`
+//            (mode_matching.hpp)), `frequencies_hz` (the accepted ones; all of them when the
+//            status is `converged`, else the status is `eigenpair-check-failed`), and `steps`
+//            holding the static state the modes are computed about (if loaded).
 // Numerical failure is a status, never an exception; bad input throws InputError; a singular
 // parameterization throws SingularityError (run_case turns it into status `singular`).
 // `available: false` with status `error` says the analysis does not exist in the formulation.

@@ -72,6 +72,35 @@ Model load_with_options(const std::string& path, const ParsedArguments& a,
     return load_case(path, overrides_from(a), parts);
 }
 
+// A modal run's modes: frequency (or why it is not reported), growth rate and the checks.
+void print_modes(const nlohmann::json& r, std::ostream& os) {
+    if (!r.contains("modes")) return;
+    const std::streamsize precision = os.precision();
+    int k = 0;
+    for (const auto& m : r["modes"]) {
+        ++k;
+        os << "  mode " << k << ": ";
+        if (m.contains("frequency_hz")) {
+            os << std::setprecision(10) << m["frequency_hz"].get<double>() << " Hz";
+        } else {
+            os << "not reported (s = " << m["s"][0].get<double>() << " + "
+               << m["s"][1].get<double>() << "i)";
+        }
+        const auto& c = m["check"];
+        os << std::setprecision(2) << std::scientific << "  growth rate "
+           << m.value("growth_rate", 0.0) << " 1/s, backward error "
+           << c["backward_error"].get<double>();
+        if (c.contains("error_bound")) os << ", error bound " << c["error_bound"].get<double>();
+        if (c.contains("mass_orthogonality"))
+            os << ", mass orthogonality " << c["mass_orthogonality"].get<double>();
+        if (c.contains("mass_participation"))
+            os << ", mass participation " << c["mass_participation"].get<double>();
+        if (c.contains("failed")) os << "  REJECTED (" << c["failed"].get<std::string>() << ")";
+        os << std::defaultfloat << "\n";
+    }
+    os.precision(precision);
+}
+
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
     os << r["case"].get<std::string>() << " | " << r["rotation"].get<std::string>() << " | "
        << r["formulation"].get<std::string>() << " | " << r["elements"] << " elements, order "
@@ -91,6 +120,7 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
                << "]  angle = " << p["rotation_angle"].get<double>() << " rad\n";
         }
     }
+    print_modes(r, os);
     os << "wall time: " << r["wall_seconds"].get<double>() << " s\n";
 }
 

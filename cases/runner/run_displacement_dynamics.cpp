@@ -10,6 +10,8 @@
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "modal_checks.hpp"
+#include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 
 namespace rotbeam {
@@ -34,8 +36,8 @@ nlohmann::json mode_json(const Model& model, const form::Mesh& mesh, const VecX&
         const int node = mesh.point_node[i];
         const int dof = node < 0 ? -1 : mesh.nodes[static_cast<size_t>(node)].dof;
         const VecX zero = VecX::Zero(6);
-        const Eigen::Ref<const VecX> s = dof < 0 ? Eigen::Ref<const VecX>(zero)
-                                                 : Eigen::Ref<const VecX>(v.segment(dof, 6));
+        const Eigen::Ref<const VecX> s =
+            dof < 0 ? Eigen::Ref<const VecX>(zero) : Eigen::Ref<const VecX>(v.segment(dof, 6));
         points[model.points[i].name] = {{"displacement", vec3(s.head(3))},
                                         {"rotation", vec3(s.tail(3))}};
     }
@@ -57,8 +59,8 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
             for (size_t i = 0; i < model.points.size(); ++i) {
                 states[i] = problem.point_state(static_cast<int>(i));
             }
-            result["steps"].push_back(
-                step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, unwrapper));
+            result["steps"].push_back(step_json(model, s.load_factor, std::nullopt,
+                                                s.newton_iterations, states, unwrapper));
         });
         if (out.status != SolveStatus::converged) {
             result["status"] = to_string(out.status);
@@ -73,18 +75,26 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     const SparseMatrix M = form::assemble_mass_matrix(
         model, mass_mesh, [&](int node) { return P::matrix(problem.node_rotation(node)); });
     const form::ModalSolution s = form::solve_modal(K, M, model.analysis.modal.modes);
-    result["frequencies_hz"] = s.frequencies_hz;
     result["modes"] = nlohmann::json::array();
-    for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
-        result["modes"].push_back(mode_json(model, problem.mesh(), s.shapes[i], s.frequencies_hz[i]));
+    std::vector<CheckedMode> checked;
+    for (size_t i = 0; i < s.pairs.size(); ++i) {
+        const form::ModalPair& p = s.pairs[i];
+        result["modes"].push_back(mode_json(model, problem.mesh(), s.shapes[i], p.frequency_hz));
+        result["modes"].back()["omega_squared"] = {p.omega2.real(), p.omega2.imag()};
+        std::vector<NodeDisplacement> nodes;
+        for (const form::MeshNode& n : problem.mesh().nodes) {
+            nodes.push_back({n.x0, n.dof < 0 ? Vec3::Zero() : Vec3(s.shapes[i].segment<3>(n.dof))});
+        }
+        result["modes"].back()["stations"] = station_displacements(model, nodes);
+        checked.push_back({p.frequency_hz, p.growth_rate,
+                           std::complex<double>(p.growth_rate, 2.0 * kPi * p.frequency_hz),
+                           p.check});
     }
     result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
                        {"stiffness_asymmetry", s.asymmetry},
                        {"mass_rule", model.discretization.mass_rule}};
     result["counters"] = counters_json(problem.counters());
-    result["status"] = "converged";
-    result["message"] = "modes of the " +
-                        std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
+    report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
 }
 
 // Reactions of the constrained named points: the force and moment the support exerts on the beam

@@ -14,6 +14,8 @@
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
+#include "modal_checks.hpp"
+#include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 
 namespace rotbeam {
@@ -54,6 +56,9 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     return false;
 }
 
+const form::MixedLayout& base_layout(const form::MixedLayout& l) { return l; }
+const form::MixedLayout& base_layout(const form::MixedQuaternionLayout& l) { return l.base; }
+
 // Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
 // the largest free-node component, real part, largest component 1; rotations as spatial rotation
 // increments H_s(ĉ₀) δĉ (3 × 3, or 3 × 4 for the quaternion's q̂).
@@ -82,7 +87,19 @@ nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn
         }
         points[model.points[i].name] = {{"displacement", vec3(d)}, {"rotation", vec3(r)}};
     }
-    return {{"frequency_hz", frequency_hz}, {"growth_rate", growth_rate}, {"points", points}};
+    std::vector<NodeDisplacement> nodes;
+    const form::MixedLayout& layout = base_layout(dyn.layout());
+    for (int n = 0; n < dyn.node_count(); ++n) {
+        Vec3 d = Vec3::Zero();
+        if (!dyn.supported(n) && std::abs(peak) > 0.0) {
+            for (int k = 0; k < 3; ++k) d[k] = (shape[dyn.node_column(n) + k] / peak).real();
+        }
+        nodes.push_back({layout.nodes[static_cast<size_t>(n)].reference, d});
+    }
+    return {{"frequency_hz", frequency_hz},
+            {"growth_rate", growth_rate},
+            {"points", points},
+            {"stations", station_displacements(model, nodes)}};
 }
 
 template <class P>
@@ -100,11 +117,14 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     SparseMatrix A, B;
     dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
     const form::DaeModalSolution s = form::solve_dae_modal(A, B, model.analysis.modal.modes);
-    result["frequencies_hz"] = s.frequencies_hz;
     result["modes"] = nlohmann::json::array();
+    std::vector<CheckedMode> checked;
     for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
         result["modes"].push_back(
             mode_json<P>(model, dyn, x0, s.shapes[i], s.frequencies_hz[i], s.growth_rates[i]));
+        checked.push_back({s.frequencies_hz[i], s.growth_rates[i],
+                           std::complex<double>(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]),
+                           s.checks[i]});
     }
     result["modal"] = {{"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
                        {"arnoldi_vectors", s.arnoldi_vectors},
@@ -113,9 +133,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                                          "average of the section mass, midpoint = its mid-length "
                                          "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
-    result["status"] = "converged";
-    result["message"] =
-        "modes of the " + std::string(result["steps"].empty() ? "undeformed" : "static") + " state";
+    report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
 }
 
 void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNormDrift& worst) {

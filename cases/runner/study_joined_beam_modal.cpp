@@ -7,12 +7,14 @@
 // silently). Each h-series is extrapolated by Richardson from its three finest meshes with the
 // observed order of each mode (study_extrapolation.hpp); errors are taken against that
 // extrapolation and against the series' finest mesh; the Richardson values of every series are
-// compared with the p-converged frequencies (which converge exponentially).
+// compared with the p-converged frequencies (which converge exponentially). Modes are identified
+// across the meshes of a series by their shapes (MAC against the finest mesh), not by sort order.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "joined_beam_dynamics.hpp"
+#include "mode_matching.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_extrapolation.hpp"
@@ -54,11 +56,17 @@ struct ModalSeries {
     std::vector<Richardson> limit;       // per mode (h-series); p-series: the finest, invalid
 };
 
+// Modes computed per mesh: the five compared plus spares, so that a mode which a coarse mesh
+// places above the fifth is still found by its shape.
+constexpr int kComputedModes = kModes + 3;
+
 ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) {
     ModalSeries s;
     s.label = comb.formulation + "/" + comb.rotation + "/" + r.name;
+    std::vector<std::vector<double>> computed;             // per mesh: frequencies
+    std::vector<std::vector<std::vector<double>>> shapes;  // per mesh, per mode: stations
     for (size_t i = 0; i < r.elements.size(); ++i) {
-        std::vector<std::string> o = {"analysis.modes=" + std::to_string(kModes)};
+        std::vector<std::string> o = {"analysis.modes=" + std::to_string(kComputedModes)};
         if (comb.formulation == "displacement") {
             o.push_back("discretization.order=" + std::to_string(r.orders[i]));
             o.push_back("discretization.mass_rule=consistent");
@@ -69,17 +77,43 @@ ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) 
             return s;
         }
         std::vector<double> f;
-        if (result.value("status", "") == "converged" && result.contains("frequencies_hz") &&
-            result["frequencies_hz"].size() >= kModes) {
-            f = result["frequencies_hz"].get<std::vector<double>>();
-            f.resize(kModes);
+        std::vector<std::vector<double>> sh;
+        if (result.value("status", "") == "converged" && result.contains("modes")) {
+            for (const auto& m : result["modes"]) {
+                f.push_back(m["frequency_hz"].get<double>());
+                sh.push_back(m["stations"].get<std::vector<double>>());
+            }
         } else if (s.note.empty()) {
             s.note = result.value("status", "") + ": " + result.value("message", "").substr(0, 80);
         }
         s.elements.push_back(r.name == "p" ? r.orders[i] : r.elements[i]);
         s.dofs.push_back(result.value("dofs", 0));
         s.seconds.push_back(result.value("wall_seconds", 0.0));
+        computed.push_back(f);
+        shapes.push_back(sh);
+    }
+    // Mode k of every mesh is the one whose shape matches mode k of the finest mesh (MAC,
+    // mode_matching.hpp), not the k-th in frequency; a mode without a match is missing (NaN).
+    const std::vector<std::vector<double>> reference =
+        shapes.empty() || shapes.back().size() < kModes
+            ? std::vector<std::vector<double>>{}
+            : std::vector<std::vector<double>>(shapes.back().begin(),
+                                               shapes.back().begin() + kModes);
+    int unmatched = 0;
+    for (size_t i = 0; i < computed.size(); ++i) {
+        std::vector<double> f;
+        if (!reference.empty() && !computed[i].empty()) {
+            const std::vector<int> m = match_modes(reference, shapes[i], kMatchMac);
+            for (int k = 0; k < kModes; ++k) {
+                const int c = m[static_cast<size_t>(k)];
+                f.push_back(c < 0 ? kNoValue : computed[i][static_cast<size_t>(c)]);
+                if (c < 0) ++unmatched;
+            }
+        }
         s.f.push_back(f);
+    }
+    if (unmatched > 0 && s.note.empty()) {
+        s.note = std::to_string(unmatched) + " mode(s) of the coarse meshes without a shape match";
     }
     const size_t n = s.f.size();
     for (int k = 0; k < kModes; ++k) {
@@ -99,7 +133,11 @@ ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) 
 double max_relative(const std::vector<double>& f, const std::vector<double>& g) {
     if (f.size() < kModes || g.size() < kModes) return kNoValue;
     double e = 0.0;
-    for (int k = 0; k < kModes; ++k) e = std::max(e, std::abs(f[k] - g[k]) / std::abs(g[k]));
+    for (int k = 0; k < kModes; ++k) {
+        const double d = std::abs(f[k] - g[k]) / std::abs(g[k]);
+        if (!std::isfinite(d)) return kNoValue;  // a mode without a match
+        e = std::max(e, d);
+    }
     return e;
 }
 

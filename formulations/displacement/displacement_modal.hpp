@@ -14,14 +14,20 @@
 // Rotations at mass points: Q = exp(Σ_j N_j log(R_0ᵀ R_j)) R_0 from the element's nodal rotations
 // (relative to its first node: objective, exact for the undeformed state).
 //
-// Solver: dense generalized eigenproblem. K is checked for symmetry (dead loads, no follower
-// stiffness: symmetric to round-off; follower loads or a deformed state under dead moments: not);
-// symmetric → Eigen's GeneralizedSelfAdjointEigenSolver (M symmetric positive definite), otherwise
-// the real QZ of Eigen::GeneralizedEigenSolver, keeping finite eigenvalues with Re ω² > 0.
+// Solver: dense generalized eigenproblem on the pencil scaled by D = diag(M)^(−1/2) (DKD, DMD:
+// same eigenvalues, unit mass diagonal). K is checked for symmetry (dead loads, no follower
+// stiffness: symmetric to round-off; follower loads or a deformed state under dead moments: not).
+// Symmetric → Cholesky of DMD = LLᵀ and the symmetric eigensolver on L⁻¹DKDL⁻ᵀ; otherwise the real
+// QZ of Eigen::GeneralizedEigenSolver, dropping infinite eigenvalues, one of each conjugate pair.
+// Every reported pair is checked (core/eigenpair_check.hpp) on the scaled pencil; the runner
+// reports a frequency only for an accepted pair. A mass matrix with a zero diagonal entry or
+// without a Cholesky factor is a SolverError naming it (no eigenvalue is computed from it).
 #pragma once
 
+#include <complex>
 #include <vector>
 
+#include "core/eigenpair_check.hpp"
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/types.hpp"
@@ -29,12 +35,24 @@
 
 namespace rotbeam::form {
 
+// One eigenpair K φ = ω² M φ. Oscillation e^{st} with s² = −ω²: `growth_rate` = |Re s| (zero for
+// a real ω² > 0; the growing member of the pair ±Re s for a complex ω² — flutter — and for a
+// negative ω² — divergence, f = 0), `frequency_hz` = Im s / 2π = Re √ω² / 2π.
+struct ModalPair {
+    std::complex<double> omega2;
+    double frequency_hz = 0.0;
+    double growth_rate = 0.0;
+    VecXc shape;  // in the problem's unknowns
+    EigenpairCheck check;
+};
+
 struct ModalSolution {
-    std::vector<double> frequencies_hz;  // ascending
-    std::vector<VecX> shapes;            // eigenvectors in the problem's unknowns
-    std::vector<double> imaginary_parts; // Im ω² / (2π)² of the kept eigenvalues (0 if symmetric)
+    std::vector<double> frequencies_hz;  // of `pairs`, whether accepted or not (runner filters)
+    std::vector<VecX> shapes;            // real parts of the pairs' shapes
+    std::vector<ModalPair> pairs;        // the `count` lowest |ω²|, ascending
     bool symmetric = true;               // which solver was used
     double asymmetry = 0.0;              // ‖K − Kᵀ‖_max / ‖K‖_max
+    bool accepted() const;               // every pair passed its check
 };
 
 // The mass matrix in the unknowns of `mesh` (nodes with dof ≥ 0). `node_rotation(i)` returns the
@@ -44,7 +62,8 @@ template <class NodeRotation>
 SparseMatrix assemble_mass_matrix(const Model& model, const Mesh& mesh,
                                   const NodeRotation& node_rotation);
 
-// The `count` lowest natural frequencies of K x = ω² M x. Throws SolverError when fewer exist.
+// The `count` eigenpairs of K x = ω² M x lowest in |ω²|, checked. Throws SolverError when fewer
+// finite eigenvalues exist or when M is singular (zero diagonal, no Cholesky factor).
 ModalSolution solve_modal(const SparseMatrix& K, const SparseMatrix& M, int count);
 
 // The mesh whose quadrature points are the mass rule's (same nodes and unknowns as `model`'s).

@@ -14,26 +14,34 @@
 //
 // An undamped structure has s = ±iω pairs; one of each pair is kept (Im s > 0) and reported as
 // f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms).
+//
+// Each reported pair is checked against the pencil it claims to solve (core/eigenpair_check.hpp):
+// the backward error of (s, φ) for A φ = s (−B) φ. B = ∂F/∂Ẋ is no mass matrix (singular by
+// design, not symmetric), so no mass orthogonality or participation applies; the infinite
+// eigenvalues of the algebraic unknowns are separated by the shift-invert itself (θ = 0).
 #pragma once
 
 #include <complex>
 #include <string>
 #include <vector>
 
+#include "core/eigenpair_check.hpp"
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/types.hpp"
 
 namespace rotbeam::form {
 
-using VecXc = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1>;
+using rotbeam::VecXc;
 
 struct DaeModalSolution {
     std::vector<double> frequencies_hz;  // ascending, f = |Im s| / 2π
     std::vector<double> growth_rates;    // Re s [1/time]
     std::vector<VecXc> shapes;           // φ in the DAE's unknowns
+    std::vector<EigenpairCheck> checks;  // per pair
     int arnoldi_vectors = 0;             // Spectra's ncv
     int converged = 0;                   // Ritz pairs converged
+    bool accepted() const;               // every pair passed its check
 };
 
 // The `count` lowest-frequency oscillatory modes of A φ = −s B φ by shift-invert Arnoldi.

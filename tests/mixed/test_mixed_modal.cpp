@@ -164,7 +164,7 @@ BOOST_AUTO_TEST_CASE(cantilever_bending_frequencies_converge_at_order_two_to_bea
 // deflection 0.26 m): the dynamic residual with the loads frozen at the static load factor
 // vanishes at the static state mapped into the dynamic unknowns (so the modes are about an
 // equilibrium), A is not symmetric (follower stiffness), and Arnoldi still agrees with the dense
-// decomposition; the first frequency moves off the unloaded 35.213 Hz.
+// decomposition; the first frequency moves off the unloaded one.
 BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
     using P = param::WienerMilenkovic;
     Model model = joined_beam(10);
@@ -194,7 +194,13 @@ BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
                                                    << a.growth_rates[static_cast<std::size_t>(i)]);
         BOOST_TEST(std::abs(fa - d.frequencies_hz[static_cast<std::size_t>(i)]) < 1e-8 * fa);
     }
-    BOOST_TEST(std::abs(a.frequencies_hz[0] - 35.2131) > 0.1);
+    // The load moves the first frequency (35.213 → 35.704 Hz, measured) far beyond the
+    // eigensolver's 1e-8: against the unloaded structure on the same mesh. The loaded values
+    // themselves are compared with an independent number (the displacement formulation at
+    // convergence, the mixed one extrapolated in h) in tests/agreement/test_modal_agreement.cpp.
+    const form::DaeModalSolution unloaded = modes_of<P>(joined_beam(10), 5);
+    BOOST_TEST(std::abs(a.frequencies_hz[0] - unloaded.frequencies_hz[0]) >
+               1e-4 * unloaded.frequencies_hz[0]);
     // The quaternion about its own static state: a different discretization of Eq. 48 (the
     // midpoint rule in four components), so close to WM's but not equal (the statics' tips differ
     // by O(ΔL²) at this deflection): within 1e-3, and Arnoldi = dense on its operator.
