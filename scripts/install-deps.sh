@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages rotbeam needs, and nothing when they are all present.
-# Idempotent: `apt-get update` runs only when something must be installed.
+# clang-14, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and llvm-14 (llvm-cov) are for
+# the fuzz preset (docs/fuzzing.md). Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(
@@ -8,6 +9,7 @@ packages=(
   libeigen3-dev libgsl-dev libsundials-dev libsuitesparse-dev
   libboost-test-dev libyaml-cpp-dev nlohmann-json3-dev libspectra-dev
   gnuplot-nox
+  clang-14 libclang-rt-14-dev llvm-14
 )
 
 missing=()

@@ -66,7 +66,8 @@ YAML::Node parse(const std::string& text, const std::string& file) {
                          ": (yaml): nested deeper than " + std::to_string(cases::kMaxYamlDepth) +
                          " levels (the limit of a case file)");
     } catch (const YAML::ParserException& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): " + cases::one_line(e.msg));
     }
     if (root.IsNull()) throw InputError(file + ":1: (file): the case file is empty");
     if (!root.IsMap()) {
@@ -78,7 +79,8 @@ YAML::Node parse(const std::string& text, const std::string& file) {
 
 [[noreturn]] void override_error(const std::string& file, const std::string& path,
                                  const std::string& problem) {
-    throw InputError(file + ":--set: " + (path.empty() ? "(set)" : path) + ": " + problem);
+    throw InputError(
+        cases::one_line(file + ":--set: " + (path.empty() ? "(set)" : path) + ": " + problem));
 }
 
 // The child of `node` named by one path segment: a key of a mapping (created when missing) or
@@ -301,7 +303,8 @@ Model load_case_text(const std::string& text, const std::string& file_name,
         return build(reader, root, file_name);
     } catch (const YAML::Exception& e) {
         // Defensive: every access is type-checked, but yaml-cpp must never escape as a crash.
-        throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+        throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): " + cases::one_line(e.msg));
     }
 }
 
@@ -370,7 +373,8 @@ void read_published_references(const std::string& file, const std::vector<std::s
     try {
         cases::read_references(reader, root, model);
     } catch (const YAML::Exception& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): " + cases::one_line(e.msg));
     }
 }
 

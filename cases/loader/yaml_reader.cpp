@@ -10,6 +10,26 @@
 
 namespace rotbeam::cases {
 
+std::string one_line(const std::string& text) {
+    static const char digits[] = "0123456789abcdef";
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (u < 0x20 || u == 0x7f) {
+            out += std::string("\\x") + digits[u >> 4] + digits[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 std::string child_key(const std::string& parent, const std::string& child) {
     return parent.empty() ? child : parent + "." + child;
 }
@@ -107,7 +127,8 @@ std::string YamlReader::where(const YAML::Node& node, const std::string& key) co
 
 void YamlReader::fail(const YAML::Node& node, const std::string& key,
                       const std::string& problem) const {
-    throw InputError(where(node, key) + " " + (key.empty() ? "(file)" : key) + ": " + problem);
+    throw InputError(
+        one_line(where(node, key) + " " + (key.empty() ? "(file)" : key) + ": " + problem));
 }
 
 std::string YamlReader::kind_name(const YAML::Node& node) const {

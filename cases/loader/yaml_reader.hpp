@@ -18,6 +18,10 @@
 
 namespace rotbeam::cases {
 
+// `text` with its control characters written as escapes (\n, \r, \t, \xHH), so that a message
+// quoting a key or value the user wrote (a quoted YAML string may span lines) stays one line.
+std::string one_line(const std::string& text);
+
 // "a.b" + "c" → "a.b.c"; an empty parent gives the child.
 std::string child_key(const std::string& parent, const std::string& child);
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cases/loader/limits.hpp"
+#include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 
 namespace rotbeam::cases {
@@ -144,7 +145,8 @@ void check_yaml_shape(const std::string& text, const std::string& file) {
         YAML::Parser parser(in);
         parser.HandleNextDocument(check);
     } catch (const YAML::ParserException& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": (yaml): " + e.msg);
+        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
+                         ": (yaml): " + one_line(e.msg));
     }
 }
 

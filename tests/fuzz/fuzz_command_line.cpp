@@ -1,0 +1,187 @@
+// Fuzz target: the command line. The input is an argument vector (arguments separated by NUL or
+// newline; the first one is the command). It goes through the parser of cases/runner/arguments.*
+// with each command's option shapes, the numeric validators with the documented limits, and, for
+// `check` and `run`, the --set overrides and the shorthand options into the case loader on a
+// catalog case — everything the program does before a solve, and no solve. docs/fuzzing.md.
+//
+// The option tables of the commands live inside the command functions (cases/runner/*.cpp),
+// which also run the solves; they are mirrored here. A finding is anything but a clean refusal:
+// a crash or sanitizer report, any exception other than InputError, or a multi-line message.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <typeinfo>
+#include <vector>
+
+#include "cases/loader/case_loader.hpp"
+#include "cases/runner/arguments.hpp"
+#include "core/errors.hpp"
+
+using rotbeam::cli::CommandSpec;
+using rotbeam::cli::OptionSpec;
+using rotbeam::cli::ParsedArguments;
+
+namespace {
+
+const OptionSpec kSet{"set", "KEY.PATH=VALUE", "", true};
+
+const std::map<std::string, CommandSpec>& specs() {
+    static const std::map<std::string, CommandSpec> table = {
+        {"list", {"list", "", 0, 0, "", {}}},
+        {"check", {"check", "CASE.yaml", 1, 1, "", {kSet}}},
+        {"run",
+         {"run",
+          "CASE.yaml",
+          1,
+          1,
+          "",
+          {{"rotation", "NAME", ""},
+           {"formulation", "NAME", ""},
+           {"elements", "N", ""},
+           {"order", "P", ""},
+           {"interpolation", "NAME", ""},
+           kSet,
+           {"out", "DIR", ""},
+           {"json", "FILE", ""},
+           {"quiet", "", ""},
+           {"trace-newton", "", ""},
+           {"time-limit", "SECONDS", ""}}}},
+        {"reference",
+         {"reference",
+          "CASE.yaml",
+          1,
+          1,
+          "",
+          {kSet, {"json", "FILE", ""}, {"out", "DIR", ""}, {"quiet", "", ""}}}},
+        {"study",
+         {"study",
+          "NAME",
+          1,
+          1,
+          "",
+          {{"json", "FILE", ""},
+           {"samples", "N", ""},
+           {"out", "DIR", ""},
+           {"quick", "", ""},
+           {"reduced-follower", "", ""}}}},
+        {"suite",
+         {"suite",
+          "",
+          0,
+          0,
+          "",
+          {{"out", "DIR", ""},
+           {"jobs", "N", ""},
+           {"cases", "GLOB", ""},
+           {"force", "", ""},
+           {"quick", "", ""},
+           {"studies", "", ""},
+           {"no-studies", "", ""}}}},
+        {"verify", {"verify", "[CASE ...]", 0, -1, "", {{"json", "FILE", ""}}}},
+        {"bench",
+         {"bench",
+          "",
+          0,
+          0,
+          "",
+          {{"json", "FILE", ""},
+           {"history", "", ""},
+           {"repeats", "N", ""},
+           {"quick", "", ""},
+           {"targets", "LIST", ""},
+           {"references", "DIR", ""}}}},
+    };
+    return table;
+}
+
+// The catalog case text, read once; the positional argument picks one by name, else the first.
+const std::string& catalog_text(const std::string& name) {
+    static std::map<std::string, std::string> texts;
+    static const char* const names[] = {"tip-load-cantilever", "cantilever-moment", "helix",
+                                        "joined-beam",         "free-vibration",    "blade-mh104"};
+    std::string chosen = names[0];
+    for (const char* n : names) {
+        if (name == n) chosen = n;
+    }
+    auto it = texts.find(chosen);
+    if (it == texts.end()) {
+        std::ifstream in(std::string(ROTBEAM_CASES_DIR) + "/" + chosen + ".yaml");
+        std::ostringstream s;
+        s << in.rdbuf();
+        it = texts.emplace(chosen, s.str()).first;
+    }
+    return it->second;
+}
+
+// `run`'s shorthand options become --set overrides (cases/runner/commands.cpp).
+std::vector<std::string> overrides_from(const ParsedArguments& a) {
+    std::vector<std::string> overrides;
+    const std::pair<const char*, const char*> shorthands[] = {
+        {"rotation", "discretization.rotation"},
+        {"formulation", "discretization.formulation"},
+        {"order", "discretization.order"},
+        {"elements", "members.*.elements"},
+        {"interpolation", "discretization.interpolation"}};
+    for (const auto& [option, key] : shorthands) {
+        if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
+    }
+    for (const std::string& s : a.values("set")) overrides.push_back(s);
+    return overrides;
+}
+
+void parse(const std::vector<std::string>& argv) {
+    if (argv.empty()) return;
+    const auto it = specs().find(argv[0]);
+    if (it == specs().end()) return;  // main's unknown-command message: no parsing
+    const CommandSpec& spec = it->second;
+    const ParsedArguments a =
+        rotbeam::cli::parse_arguments(spec, std::vector<std::string>(argv.begin() + 1, argv.end()));
+    if (a.help) {
+        (void)rotbeam::cli::help_text(spec);
+        return;
+    }
+    (void)a.positive_int("suite", "jobs", rotbeam::cli::kMaxJobs);
+    (void)a.positive_int("bench", "repeats", rotbeam::cli::kMaxRepeats);
+    (void)a.positive_int("study", "samples", rotbeam::cli::kMaxSamples, 2);
+    (void)a.positive_number("run", "time-limit", rotbeam::cli::kMaxTimeLimit);
+    if (spec.name == "check" || spec.name == "run" || spec.name == "reference") {
+        const rotbeam::Model model =
+            rotbeam::load_case_text(catalog_text(a.positional[0]), "case.yaml", overrides_from(a));
+        (void)rotbeam::describe_model(model);
+    }
+}
+
+[[noreturn]] void finding(const std::string& what) {
+    std::fprintf(stderr, "fuzz_command_line: %s\n", what.c_str());
+    std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    std::vector<std::string> argv(1);
+    for (size_t i = 0; i < size; ++i) {
+        const char c = static_cast<char>(data[i]);
+        if (c == '\0' || c == '\n') {
+            argv.emplace_back();
+        } else {
+            argv.back().push_back(c);
+        }
+    }
+    try {
+        parse(argv);
+    } catch (const rotbeam::InputError& e) {
+        const std::string message = e.what();
+        if (message.empty() || message.find('\n') != std::string::npos) {
+            finding("refusal not on one line: " + message);
+        }
+    } catch (const std::exception& e) {
+        finding(std::string("escaped exception ") + typeid(e).name() + ": " + e.what());
+    }
+    return 0;
+}
