@@ -43,6 +43,9 @@ run precessing helix-precessing
 "$rotbeam" reference helix-precessing --json "$work/ref.json" >/dev/null || fail "reference: exit $?"
 python3 - "$work" <<'PY' || fail "rotation angles"
 import json, math, sys
+# A solved state: the tolerances met, or the residual at its round-off floor with a bound
+# (docs/solver-convergence.md).
+SOLVED = ("converged", "stalled-at-round-off")
 work = sys.argv[1]
 
 def mul(A, B):
@@ -65,7 +68,7 @@ def angle(R):  # rotation angle in [0, π]
 
 def load(name):
     r = json.load(open(f"{work}/{name}.json"))
-    assert r["status"] == "converged", (name, r["status"], r["message"])
+    assert r["status"] in SOLVED, (name, r["status"], r["message"])
     return r
 
 def tip(name, lam):
