@@ -203,7 +203,9 @@ nlohmann::json study_convergence(const StudyOptions& o) {
         out["cases"].push_back(convergence_case(o, c, table));
     }
     std::string orders;
-    for (int p : refinements("displacement", o.quick).back().orders) {
+    // A named vector: a range-for over a temporary's member would read it after its end.
+    const std::vector<Refinement> displacement = refinements("displacement", o.quick);
+    for (int p : displacement.back().orders) {
         orders += (orders.empty() ? "" : ", ") + std::to_string(p);
     }
     std::ostringstream md;
