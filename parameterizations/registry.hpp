@@ -35,8 +35,12 @@ using AllParameterizations = TypeList<Quaternion, WienerMilenkovic, Rodrigues, R
     X(Quaternion) X(WienerMilenkovic) X(Rodrigues) X(RotationVector)
 
 namespace detail {
+// Both expand to an operator and its operand, to be chained after a first term (`0 +1 +1`);
+// parentheses would turn the chain into calls, hence the NOLINT.
+// NOLINTBEGIN(bugprone-macro-parentheses)
 #define ROTBEAM_DETAIL_COUNT_ONE(T) +1
 #define ROTBEAM_DETAIL_CHECK_LISTED(T) &&AllParameterizations::kContains<T>
+// NOLINTEND(bugprone-macro-parentheses)
 inline constexpr int kMacroCount = 0 ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DETAIL_COUNT_ONE);
 static_assert(
     kMacroCount == AllParameterizations::kSize &&

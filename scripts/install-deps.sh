@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libgsl-dev libsundials-dev libsuitesparse-dev
   libboost-test-dev libyaml-cpp-dev nlohmann-json3-dev libspectra-dev
-  gnuplot-nox
+  gnuplot-nox clang-tidy
   clang-14 libclang-rt-14-dev llvm-14
 )
 

@@ -45,7 +45,9 @@ class GateRuns {
     const nlohmann::json& result(const Settings& s);
 
   private:
-    struct Entry {
+    // bugprone-exception-escape: Entry's implicit special members may throw through Model's;
+    // entries live in a std::map and are never moved, so nothing relies on them not throwing.
+    struct Entry {  // NOLINT(bugprone-exception-escape)
         std::optional<Model> model;
         std::string refusal;  // the InputError's message when there is no model
         nlohmann::json result;

@@ -120,7 +120,7 @@ void DisplacementStatics<P>::build_pattern() {
     for (size_t k = 0; k < mesh_.elements.size(); ++k) {
         const std::vector<int>& nodes = mesh_.elements[k].nodes;
         const int nn = static_cast<int>(nodes.size());
-        block_index_[k].assign(static_cast<size_t>(nn * nn * 6), -1);
+        block_index_[k].assign(nodes.size() * nodes.size() * 6, -1);
         for (int a = 0; a < nn; ++a) {
             for (int b = 0; b < nn; ++b) {
                 const int ra = mesh_.nodes[nodes[a]].dof, cb = mesh_.nodes[nodes[b]].dof;

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# rotbeam under AddressSanitizer + UndefinedBehaviorSanitizer (the asan preset: -O1 -g, assertions
+# on, -fno-sanitize-recover). Every finding stops the process with a report on stderr; this script
+# fails on a non-zero ctest, on a sanitizer report in any program's stderr, and on an exit code the
+# command does not document.
+# Usage: scripts/asan.sh [--full]
+#   default (CI): the unit tests (ctest -L unit, the scripted ones included), `rotbeam suite
+#                 --quick`, every command's --help and every bad-case fixture through `check` and
+#                 `run`;
+#   --full:       also every other ctest test and every study path (slow: docs/quality-checks.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+full=0
+if [ "${1:-}" = "--full" ]; then full=1; fi
+
+export ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+
+cmake --preset asan >/dev/null
+if [ $full -eq 1 ]; then
+  cmake --build --preset asan -j "$(nproc)"
+else
+  # The unit tests' executables (a test run by a shell script drives the program itself).
+  mapfile -t unit < <(ctest --preset asan -N -L unit 2>/dev/null | sed -n 's/^ *Test *#[0-9]*: //p' |
+    while read -r t; do ninja -C build/asan -t query "$t" >/dev/null 2>&1 && echo "$t"; done)
+  cmake --build --preset asan -j "$(nproc)" --target rotbeam "${unit[@]}"
+fi
+
+step() { echo "asan: $1 ($(( $(date +%s) - t0 )) s so far)"; }
+t0=$(date +%s)
+log=$(mktemp -d)
+trap 'rm -rf "$log"' EXIT
+rotbeam=build/asan/cases/runner/rotbeam
+
+# expect CODES... -- COMMAND...: run COMMAND, fail on a sanitizer report or an exit code not in CODES.
+expect() {
+  local codes=() code
+  while [ "$1" != "--" ]; do codes+=("$1"); shift; done
+  shift
+  set +e
+  "$@" >"$log/out" 2>"$log/err"
+  code=$?
+  set -e
+  if grep -q -E 'Sanitizer|runtime error:' "$log/err"; then
+    echo "asan: FINDING in: $*"
+    cat "$log/err"
+    exit 1
+  fi
+  if [[ " ${codes[*]} " != *" $code "* ]]; then
+    echo "asan: exit $code (expected ${codes[*]}) from: $*"
+    tail -5 "$log/err"
+    exit 1
+  fi
+}
+
+if [ $full -eq 1 ]; then
+  ctest --preset asan -j "$(nproc)"
+else
+  ctest --preset asan -j "$(nproc)" -L unit
+fi
+step "ctest"
+
+expect 0 -- "$rotbeam" --help
+for c in bench check list reference run study suite verify; do
+  expect 0 -- "$rotbeam" "$c" --help
+done
+step "every --help"
+
+for f in cases/bad/*.yaml; do
+  expect 2 -- "$rotbeam" check "$f"
+  expect 2 -- "$rotbeam" run "$f" --quiet
+done
+step "cases/bad through check and run"
+
+expect 0 -- "$rotbeam" suite --quick --out "$log/suite" --jobs "$(nproc)"
+step "suite --quick"
+
+if [ $full -eq 1 ]; then
+  expect 0 -- "$rotbeam" study rotations --json "$log/rotations.json"
+  step "study rotations"
+  for s in convergence singularity extremes manufactured-time speed-accuracy joined-beam-modal \
+           joined-beam-dynamics joined-beam-agreement; do
+    expect 0 -- "$rotbeam" study "$s" --quick --out "$log/study-$s"
+    step "study $s --quick"
+  done
+fi
+echo "asan: no finding"

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# clang-tidy's bugprone checks (Debian's clang-tidy) over rotbeam's sources; any finding fails.
+# Usage: scripts/tidy.sh [BASE]
+#   without BASE: every source file of the release build's compile_commands.json;
+#   with BASE (a commit): only the .cpp files changed since BASE, and the .cpp files that include
+#   a header changed since BASE (CI; docs/quality-checks.md says why not every file there).
+# The checks are bugprone-* less the -bugprone-* exclusions of .clang-tidy (the one place where
+# they are chosen, with their reasons; its CheckOptions apply too), so that its style checks
+# (naming, performance) stay advice for editors, not a CI gate.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+checks="-*,bugprone-*,$(grep -o -E -- '-bugprone-[a-z-]+' .clang-tidy | paste -sd, -)"
+if [ ! -f build/release/compile_commands.json ]; then
+  cmake --preset release >/dev/null
+fi
+
+files=()
+if [ $# -ge 1 ]; then
+  mapfile -t changed < <(git diff --name-only --diff-filter=d "$1" -- \
+    'core/*' 'cases/*' 'formulations/*' 'parameterizations/*' 'tests/*')
+  for f in "${changed[@]}"; do
+    case "$f" in
+      *.cpp) files+=("$root/$f") ;;
+      *.hpp) mapfile -t users < <(git grep -l -E "#include \"($f|$(basename "$f"))\"" -- '*.cpp')
+             for u in "${users[@]}"; do files+=("$root/$u"); done ;;
+    esac
+  done
+  if [ ${#files[@]} -eq 0 ]; then
+    echo "tidy: no C++ source changed since $1"
+    exit 0
+  fi
+  mapfile -t files < <(printf '%s\n' "${files[@]}" | sort -u)
+else
+  mapfile -t files < <(python3 -c 'import json,sys
+for e in json.load(open("build/release/compile_commands.json")): print(e["file"])' | sort -u)
+fi
+
+echo "tidy: ${#files[@]} files, checks $checks"
+start=$(date +%s)
+# run-clang-tidy exits non-zero when clang-tidy does; --warnings-as-errors makes a finding do so.
+set +e
+run-clang-tidy -p build/release -j "$(nproc)" -quiet -checks="$checks" \
+  -warnings-as-errors='*' \
+  -header-filter="^$root/(core|cases|formulations|parameterizations|tests)/" \
+  "${files[@]/#/^}" 2>&1 | grep -v -E '^[0-9]+ warnings? generated\.$|^Suppressed [0-9]+ warnings|^Use -header-filter'
+status=${PIPESTATUS[0]}
+set -e
+echo "tidy: ${#files[@]} files in $(( $(date +%s) - start )) s, exit $status"
+exit "$status"
