@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.hpp"  // write_file_atomically
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 
@@ -20,12 +21,12 @@ namespace rotbeam {
 // Tracks each named point's rotation along a load or time path so that the reported angle is
 // continuous (a full roll-up reads 2π, not 0).
 class RotationUnwrapper {
-public:
+  public:
     explicit RotationUnwrapper(size_t points) : previous_(points, Vec3::Zero()) {}
     // Returns the unwrapped rotation vector of point i for rotation R and remembers it.
     Vec3 update(size_t i, const Mat3& R);
 
-private:
+  private:
     std::vector<Vec3> previous_;
 };
 
@@ -41,9 +42,5 @@ nlohmann::json counters_json(const AssemblyCounters& c);
 
 // True when every number in the document is finite (a result never prints NaN).
 bool all_finite(const nlohmann::json& j);
-
-// Write `text` to `path` through a temporary file in the same directory and a rename, so a
-// reader never sees a partial file. Throws InputError when the directory cannot be written.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace rotbeam

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
+#include "parallel.hpp"
 #include "studies.hpp"
 
 namespace rotbeam::cli {
@@ -67,13 +68,7 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
         if (!timed_study(entry.first) && !standalone_study(entry.first))
             parallel.push_back(entry.first);
     }
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        for (size_t i = next++; i < parallel.size(); i = next++) run_named_study(parallel[i], o);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < std::max(1, jobs); ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+    for_each_parallel(parallel.size(), jobs, [&](size_t i) { run_named_study(parallel[i], o); });
     for (const auto& entry : static_studies()) {
         if (timed_study(entry.first)) run_named_study(entry.first, o);
     }
