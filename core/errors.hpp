@@ -6,6 +6,8 @@
 //   (or with non-finite input). Solvers turn it into the status `singular`.
 // - SolverError: a numerical procedure failed (factorization, integrator setup). Solvers turn it
 //   into `diverged`/`error`.
+// - OutputError: an output file could not be written (full disk, file size limit, permissions).
+//   The message names the file; nothing partial is left (core/atomic_file.hpp). Exit code 4.
 // `ROTBEAM_VERIFY(cond, msg)` is always on and throws std::logic_error with file:line: it guards
 // API misuse, not user input (user input gets an InputError with file/key context).
 #pragma once
@@ -48,6 +50,11 @@ private:
 };
 
 class SolverError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class OutputError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };

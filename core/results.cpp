@@ -1,12 +1,7 @@
 #include "core/results.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <unistd.h>
 
-#include "core/errors.hpp"
 #include "core/so3.hpp"
 
 namespace rotbeam {
@@ -61,31 +56,6 @@ bool all_finite(const nlohmann::json& j) {
         }
     }
     return true;
-}
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    if (target.has_parent_path()) {
-        std::error_code ec;
-        fs::create_directories(target.parent_path(), ec);
-        if (ec) throw InputError(path + ": cannot create directory: " + ec.message());
-    }
-    const fs::path temporary =
-        target.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError(path + ": cannot write result file");
-        out << text;
-        out.flush();
-        if (!out) throw InputError(path + ": write failed");
-    }
-    std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw InputError(path + ": cannot move result file into place");
-    }
 }
 
 }  // namespace rotbeam

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.hpp"  // write_file_atomically
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 
@@ -35,9 +36,5 @@ nlohmann::json counters_json(const AssemblyCounters& c);
 
 // True when every number in the document is finite (a result never prints NaN).
 bool all_finite(const nlohmann::json& j);
-
-// Write `text` to `path` through a temporary file in the same directory and a rename, so a
-// reader never sees a partial file. Throws InputError when the directory cannot be written.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace rotbeam

@@ -1,5 +1,7 @@
 // The rotbeam program. Bad input → one line on stderr naming the file/option and the problem, exit
-// code 2, no partial output; anything unexpected → exit 3 with the message (a bug).
+// code 2, no partial output; anything unexpected → exit 3 with the message (a bug); an output file
+// that cannot be written (full disk, file size limit) → exit 4 with its name, nothing partial left;
+// stopped by SIGINT/SIGTERM/SIGHUP → exit 128 + signal (interrupt.hpp).
 #include <iostream>
 #include <map>
 #include <string>
@@ -9,6 +11,7 @@
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "interrupt.hpp"
 #include "timing.hpp"
 
 namespace {
@@ -47,7 +50,8 @@ void print_usage(std::ostream& os) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    rotbeam::cli::report_peak_rss_at_exit();  // only under `rotbeam bench` (timing.hpp)
+    rotbeam::cli::install_interrupt_handling();  // before any thread starts
+    rotbeam::cli::report_peak_rss_at_exit();     // only under `rotbeam bench` (timing.hpp)
     const std::vector<std::string> all(argv + 1, argv + argc);
     if (all.empty()) {
         std::cerr << "rotbeam: missing command; see 'rotbeam --help'\n";
@@ -74,6 +78,9 @@ int main(int argc, char** argv) {
     } catch (const rotbeam::InputError& e) {
         std::cerr << e.what() << "\n";
         return 2;
+    } catch (const rotbeam::OutputError& e) {
+        std::cerr << "rotbeam: " << e.what() << "\n";
+        return 4;
     } catch (const std::exception& e) {
         std::cerr << "rotbeam: internal error: " << e.what() << "\n";
         return 3;

@@ -116,13 +116,14 @@ std::vector<Figure> rollup_figures(const std::string& out,
         const std::string name =
             r["rotation"].get<std::string>() + "-" + r["formulation"].get<std::string>();
         const fs::path file = data / ("rollup_" + name + ".dat");
-        std::ofstream f(file);
+        std::ostringstream f;
         f << "# load_factor u1 u3 newton_iterations (" << name << ")\n";
         for (const auto& s : r["steps"]) {
             const auto& u = s["points"]["tip"]["displacement"];
             f << s["load_factor"].get<double>() << " " << u[0].get<double>() << " "
               << u[2].get<double>() << " " << s["newton_iterations"] << "\n";
         }
+        write_file_atomically(file.string(), f.str());
         files += file.string() + " ";
     }
     if (files.empty()) return {};
@@ -148,7 +149,7 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
         }
         const fs::path file = fs::path(out) / "data" / "rollup_shapes.dat";
         fs::create_directories(file.parent_path());
-        std::ofstream f(file);
+        std::ostringstream f;
         std::ostringstream lambdas;
         for (const auto& s : r["steps"]) {
             f << "# lambda " << s["load_factor"].get<double>() << "\n";
@@ -158,7 +159,7 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
             f << "\n\n";
             lambdas << s["load_factor"].get<double>() << " ";
         }
-        f.close();
+        write_file_atomically(file.string(), f.str());
         gnuplot("rollup_shapes.gp", {{"datafile", file.string()},
                                      {"lambdas", lambdas.str()},
                                      {"outbase", (fs::path(out) / "rollup-shapes").string()}});
@@ -175,7 +176,7 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
 bool write_rotation_study_data(const nlohmann::json& study, const std::string& path) {
     const auto& list = study["parameterizations"];
     if (!list.is_array() || list.empty()) return false;
-    std::ofstream f(path);
+    std::ostringstream f;
     f << "angle";
     for (const auto& p : list) {
         const std::string name = p["name"].get<std::string>();
@@ -197,7 +198,8 @@ bool write_rotation_study_data(const nlohmann::json& study, const std::string& p
         }
         f << "\n";
     }
-    return static_cast<bool>(f);
+    write_file_atomically(path, f.str());
+    return true;
 }
 
 std::vector<Figure> rotation_study_figures(const std::string& out) {

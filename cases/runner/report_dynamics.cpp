@@ -3,12 +3,12 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
 #include <sstream>
 
+#include "core/atomic_file.hpp"
 #include "parameterizations/registry.hpp"
 #include "report.hpp"
 
@@ -57,8 +57,7 @@ std::string combination(const nlohmann::json& run) {
 
 // Writes the history ("?" for missing values, gnuplot's `set datafile missing`); columns as Row.
 void write_history(const fs::path& file, const std::vector<Row>& rows, const std::string& what) {
-    fs::create_directories(file.parent_path());
-    std::ofstream f(file);
+    std::ostringstream f;
     f << "# t ux uy uz rx ry rz Fx Fy Fz Mx My Mz (" << what << "; SI, rotation vector [rad])\n"
       << std::setprecision(10);
     for (const Row& row : rows) {
@@ -72,6 +71,7 @@ void write_history(const fs::path& file, const std::vector<Row>& rows, const std
         }
         f << "\n";
     }
+    write_file_atomically(file.string(), f.str());
 }
 
 // max |column| over the history and the time it is reached (NaN when the column is missing).

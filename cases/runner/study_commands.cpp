@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
+#include "parallel.hpp"
 #include "studies.hpp"
 
 namespace rotbeam::cli {
@@ -69,27 +70,7 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
         if (!timed_study(entry.first) && !standalone_study(entry.first))
             parallel.push_back(entry.first);
     }
-    std::atomic<size_t> next{0};
-    // A study that fails (a figure gnuplot could not draw) stops the suite with its message: the
-    // first failure is kept and rethrown here, after the other workers finish their study (an
-    // exception leaving a thread would terminate the program instead).
-    std::mutex failure_lock;
-    std::exception_ptr failure;
-    auto worker = [&] {
-        for (size_t i = next++; i < parallel.size(); i = next++) {
-            try {
-                run_named_study(parallel[i], o);
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failure_lock);
-                if (!failure) failure = std::current_exception();
-                next = parallel.size();
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < std::max(1, jobs); ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    for_each_parallel(parallel.size(), jobs, [&](size_t i) { run_named_study(parallel[i], o); });
     for (const auto& entry : static_studies()) {
         if (timed_study(entry.first)) run_named_study(entry.first, o);
     }

@@ -27,6 +27,7 @@
 #include "core/results.hpp"
 #include "core/version.hpp"
 #include "joined_beam_dynamics.hpp"
+#include "parallel.hpp"
 #include "studies.hpp"
 #include "study_plot.hpp"
 
@@ -145,19 +146,13 @@ ReferenceResponse ida_response(const Combination& c, const ResponseWindow& w, do
 
 // The references of `jobs` on two threads, in the order of the list (each run is single-threaded).
 void compute(std::vector<Job>& jobs, const std::string& cache_dir) {
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        for (size_t i = next++; i < jobs.size(); i = next++) {
-            const Job& j = jobs[i];
-            jobs[i].result =
-                j.ida_tolerance > 0.0
-                    ? ida_response(j.combination, j.window, j.ida_tolerance, cache_dir)
-                    : same_mesh_reference(j.combination, j.window, j.coarse_step, cache_dir);
-        }
-    };
-    std::thread a(worker), b(worker);
-    a.join();
-    b.join();
+    for_each_parallel(jobs.size(), 2, [&](size_t i) {
+        const Job& j = jobs[i];
+        jobs[i].result =
+            j.ida_tolerance > 0.0
+                ? ida_response(j.combination, j.window, j.ida_tolerance, cache_dir)
+                : same_mesh_reference(j.combination, j.window, j.coarse_step, cache_dir);
+    });
 }
 
 ResponseWindow window_of(const AgreementPlan& p, const std::string& case_name, int elements,

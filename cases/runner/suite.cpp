@@ -26,6 +26,7 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
+#include "parallel.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "report.hpp"
@@ -173,32 +174,27 @@ nlohmann::json execute(const PlannedRun& run) {
 }
 
 void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
-    std::atomic<size_t> next{0}, done{0};
+    std::atomic<size_t> done{0};
     std::mutex print;
     const auto start = std::chrono::steady_clock::now();
     const bool terminal = isatty(STDOUT_FILENO);
-    auto worker = [&]() {
-        for (size_t i = next++; i < runs.size(); i = next++) {
-            const PlannedRun& run = runs[i];
-            if (force || !up_to_date(run)) {
-                nlohmann::json result = execute(run);
-                result["input_key"] = run.key;
-                write_file_atomically(run.output, result.dump(1) + "\n");
-            }
-            const size_t d = ++done;
-            const double elapsed =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            std::lock_guard<std::mutex> lock(print);
-            if (terminal) {
-                std::cout << "\r[" << d << "/" << runs.size() << "] " << std::fixed
-                          << std::setprecision(1) << elapsed << " s elapsed, ETA "
-                          << elapsed / d * (runs.size() - d) << " s   " << std::flush;
-            }
+    for_each_parallel(runs.size(), jobs, [&](size_t i) {
+        const PlannedRun& run = runs[i];
+        if (force || !up_to_date(run)) {
+            nlohmann::json result = execute(run);
+            result["input_key"] = run.key;
+            write_file_atomically(run.output, result.dump(1) + "\n");
         }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < jobs; ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+        const size_t d = ++done;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::lock_guard<std::mutex> lock(print);
+        if (terminal) {
+            std::cout << "\r[" << d << "/" << runs.size() << "] " << std::fixed
+                      << std::setprecision(1) << elapsed << " s elapsed, ETA "
+                      << elapsed / d * (runs.size() - d) << " s   " << std::flush;
+        }
+    });
     if (terminal) std::cout << "\n";
 }
 
@@ -240,6 +236,9 @@ int command_suite(const Args& args) {
     const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"));
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
+    // A suite killed with SIGKILL in the middle of a write left a temporary (never a partial
+    // result file): clear it so the resumed folder is the one an uninterrupted suite writes.
+    if (fs::exists(out)) remove_stale_temporaries(out);
     run_all(runs, jobs, a.has("force"));
     {
         // The published numbers of the cases run (Tables I–III), as `verify` computes them.

@@ -1,10 +1,13 @@
 // Result schema helpers: unwrapped angles, NaN detection, atomic files.
-#include <boost/test/unit_test.hpp>
+#include <signal.h>
+#include <sys/resource.h>
 
+#include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/so3.hpp"
 
@@ -46,6 +49,43 @@ BOOST_AUTO_TEST_CASE(atomic_write_replaces_the_file_and_leaves_no_temporary) {
     BOOST_TEST(text == "second");
     int files = 0;
     for (const auto& e : fs::directory_iterator(dir / "sub")) {
+        (void)e;
+        ++files;
+    }
+    BOOST_TEST(files == 1);
+    fs::remove_all(dir);
+}
+
+// A file size limit makes write() fail with EFBIG, the same path as a full disk (ENOSPC): the
+// error is reported with the file's name, the old file stays as it was, and no temporary is left.
+BOOST_AUTO_TEST_CASE(a_failed_write_names_the_file_and_keeps_the_old_one) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "rotbeam_results_full";
+    fs::remove_all(dir);
+    const std::string path = (dir / "r.json").string();
+    write_file_atomically(path, "old");
+    const auto previous = ::signal(SIGXFSZ, SIG_IGN);
+    rlimit saved{};
+    getrlimit(RLIMIT_FSIZE, &saved);
+    rlimit small = saved;
+    small.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &small);
+    std::string message;
+    try {
+        write_file_atomically(path, std::string(10000, 'x'));
+    } catch (const OutputError& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &saved);
+    ::signal(SIGXFSZ, previous);
+    BOOST_TEST(message.find(path) != std::string::npos, message);
+    BOOST_TEST(message.find("file size limit") != std::string::npos, message);
+    std::ifstream in(path);
+    std::string text;
+    in >> text;
+    BOOST_TEST(text == "old");
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
         (void)e;
         ++files;
     }

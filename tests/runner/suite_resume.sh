@@ -1,62 +1,148 @@
 #!/usr/bin/env bash
-# `rotbeam suite` is restartable and deterministic (issue 11 point 1): a suite killed midway
-# (SIGKILL, no chance to clean up) and rerun ends with the same results as an uninterrupted run,
-# every result file is complete JSON at every moment (atomic writes), finished runs are not
-# redone, and the results do not depend on --jobs. Usage: suite_resume.sh ROTBEAM
+# Nothing half-written, resumes exactly, deterministic (docs/durability.md). Over `rotbeam suite
+# --quick` (its static runs and every study in its quick form; its runs alone where said):
+# - `--jobs 2` gives the same results as `--jobs 1` (scripts/compare-results.py: equal JSON apart
+#   from the listed timing fields);
+# - a suite stopped by SIGKILL, SIGINT or SIGTERM, early (among the runs) or late (in the
+#   studies), leaves only complete files and no temporary, exits 128 + signal with one line for
+#   SIGINT/SIGTERM, keeps its finished runs untouched on resume, and resumes to the same results;
+# - a suite and a `run` that hit a file size limit (ulimit -f, the EFBIG of a full disk) exit 4
+#   naming the file, leave no partial file, and the suite then resumes to the same results;
+# - a `run` stopped by SIGINT or SIGTERM writes nothing.
+# Usage: suite_resume.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
 rotbeam=$1
+compare=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-cases='cantilever-moment*'
+# Background jobs in their own process group: a non-interactive shell would otherwise start
+# them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
+set -m
 
-# Reference: one uninterrupted run on one thread.
-"$rotbeam" suite --cases "$cases" --jobs 1 --out "$work/ref" >/dev/null 2>&1 || fail "reference suite failed"
-total=$(ls "$work/ref/runs" | wc -l)
-[ "$total" -ge 8 ] || fail "reference suite wrote $total runs"
+same() {  # same DIR_A DIR_B WHAT
+    "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {
+        fail "$3 differs from the uninterrupted --jobs 1 suite:"
+        head -5 "$work/compare.txt"
+    }
+}
 
-# Interrupted: kill -9 as soon as a few results exist, check what is on disk, then resume.
-"$rotbeam" suite --cases "$cases" --jobs 2 --out "$work/resumed" >/dev/null 2>&1 &
-pid=$!
-for _ in $(seq 1 600); do
-    n=$(ls "$work/resumed/runs" 2>/dev/null | grep -c '\.json$')
-    [ "$n" -ge 3 ] && break
-    sleep 0.01
-done
-kill -9 $pid 2>/dev/null
-wait $pid 2>/dev/null
-finished=$(ls "$work/resumed/runs" | grep -c '\.json$')
-[ "$finished" -lt "$total" ] || echo "note: the suite finished before it was killed ($finished runs)"
-for f in "$work"/resumed/runs/*.json; do
-    python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$f" 2>/dev/null ||
-        fail "damaged result after kill: $f"
-done
-before=$(stat -c '%n %Y.%y' "$work"/resumed/runs/*.json | sort)
-"$rotbeam" suite --cases "$cases" --jobs 2 --out "$work/resumed" >/dev/null 2>&1 || fail "resumed suite failed"
-# Finished runs were skipped: their files are untouched.
-while read -r name stamp; do
-    now=$(stat -c '%Y.%y' "$name")
-    [ "$now" = "$stamp" ] || fail "finished run redone on resume: $name"
-done <<<"$before"
-
-# Same results as the reference, apart from timings (wall_seconds).
-python3 - "$work/ref/runs" "$work/resumed/runs" <<'PY' || fail "resumed or --jobs 2 results differ from the reference"
-import json, os, sys
-ref, res = sys.argv[1], sys.argv[2]
-def strip(j):
-    j.pop("wall_seconds", None)
-    return j
-names = sorted(os.listdir(ref))
-assert names == sorted(os.listdir(res)), (names, sorted(os.listdir(res)))
-for n in names:
-    a = strip(json.load(open(os.path.join(ref, n))))
-    b = strip(json.load(open(os.path.join(res, n))))
-    assert a == b, n
+complete_files() {  # complete_files DIR WHAT: no temporary, every JSON parses, runs not empty
+    if find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then fail "$2: temporary left behind"; fi
+    python3 - "$1" <<'PY' || fail "$2: a truncated or empty JSON file"
+import json, pathlib, sys
+for p in pathlib.Path(sys.argv[1]).rglob("*.json"):
+    json.loads(p.read_text())
 PY
+    if find "$1" -type f -empty | grep -q .; then fail "$2: an empty file"; fi
+}
+
+# Reference: one uninterrupted suite on one thread; then the same on two threads. The studies
+# cost most of the quick suite (~55 s CPU of it), so the early stops and the full disk use the
+# runs alone (--no-studies, ~5 s) against a reference of their own.
+"$rotbeam" suite --quick --jobs 1 --out "$work/ref" >/dev/null 2>&1 || fail "reference suite failed"
+total=$(ls "$work/ref/runs" | grep -c '\.json$')
+[ "$total" -ge 16 ] || fail "reference suite wrote $total runs"
+"$rotbeam" suite --quick --jobs 2 --out "$work/jobs2" >/dev/null 2>&1 || fail "--jobs 2 suite failed"
+same "$work/ref" "$work/jobs2" "the --jobs 2 suite"
+"$rotbeam" suite --quick --no-studies --jobs 1 --out "$work/ref-runs" >/dev/null 2>&1 ||
+    fail "reference suite (runs) failed"
+
+# Interrupted: SIGKILL and SIGTERM once a few runs are written, SIGINT once the studies write.
+interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE [FLAGS]
+    local signal=$1 when=$2 dir=$3 reference=$4 flags=${5:-}
+    "$rotbeam" suite --quick $flags --jobs 2 --out "$dir" >"$work/out.txt" 2>"$work/err.txt" &
+    local pid=$!
+    for _ in $(seq 1 3000); do
+        if [ "$when" = early ]; then
+            [ "$(ls "$dir/runs" 2>/dev/null | grep -c '\.json$')" -ge 3 ] && break
+        else
+            ls "$dir"/study-*.json >/dev/null 2>&1 && break
+        fi
+        kill -0 $pid 2>/dev/null || break
+        sleep 0.02
+    done
+    kill -s "$signal" $pid 2>/dev/null
+    wait $pid
+    local code=$?
+    if [ -f "$dir/index.md" ]; then
+        echo "note: the suite finished before $signal ($when)"
+        return
+    fi
+    case $signal in
+    KILL) [ $code -eq 137 ] || fail "SIGKILL: exit $code" ;;
+    INT | TERM)
+        local expected=$((128 + $(kill -l "$signal")))
+        [ $code -eq $expected ] || fail "SIG$signal: exit $code, expected $expected"
+        grep -q "stopped by SIG$signal" "$work/err.txt" || fail "SIG$signal: no line saying so"
+        ;;
+    esac
+    complete_files "$dir" "after SIG$signal ($when)"
+    local before finished
+    finished=$(ls "$dir/runs" | grep -c '\.json$')
+    before=$(cd "$dir/runs" && stat -c '%n %y' *.json | sort)
+    "$rotbeam" suite --quick $flags --jobs 2 --out "$dir" >/dev/null 2>&1 ||
+        fail "resume after SIG$signal failed"
+    while read -r name stamp; do
+        [ "$(stat -c '%y' "$dir/runs/$name")" = "$stamp" ] || fail "finished run redone: $name"
+    done <<<"$before"
+    same "$reference" "$dir" "the suite resumed after SIG$signal ($when, $finished of $total runs)"
+    echo "SIG$signal ($when): stopped with exit $code after $finished of $total runs, resumed"
+}
+interrupt KILL early "$work/kill" "$work/ref-runs" --no-studies
+interrupt TERM early "$work/term" "$work/ref-runs" --no-studies
+interrupt INT late "$work/int" "$work/ref"
+
+# A file size limit of 8 KiB: the run results (tens of KiB) cannot be written.
+(
+    ulimit -f 8
+    exec "$rotbeam" suite --quick --no-studies --jobs 2 --out "$work/full" >/dev/null 2>"$work/err.txt"
+)
+code=$?
+[ $code -eq 4 ] || fail "suite on a full disk: exit $code, expected 4"
+grep -q "$work/full/.*File too large\|$work/full/.*file size limit" "$work/err.txt" ||
+    fail "suite on a full disk: the message does not name the file: $(head -c 300 "$work/err.txt")"
+complete_files "$work/full" "suite on a full disk"
+"$rotbeam" suite --quick --no-studies --jobs 2 --out "$work/full" >/dev/null 2>&1 ||
+    fail "resume after a full disk failed"
+same "$work/ref-runs" "$work/full" "the suite resumed after a full disk"
+
+# `run`: a file size limit, then SIGINT and SIGTERM during a dynamic run; nothing is written.
+mkdir -p "$work/run"
+(
+    ulimit -f 8
+    exec "$rotbeam" run cantilever-moment --json "$work/run/r.json" --out "$work/run" \
+        >/dev/null 2>"$work/err.txt"
+)
+code=$?
+[ $code -eq 4 ] || fail "run on a full disk: exit $code, expected 4"
+grep -q "$work/run/r.json" "$work/err.txt" || fail "run on a full disk: file not named"
+[ -z "$(ls -A "$work/run")" ] || fail "run on a full disk left: $(ls -A "$work/run")"
+for signal in INT TERM; do
+    "$rotbeam" run joined-beam-dead --out "$work/run" >/dev/null 2>"$work/err.txt" &
+    pid=$!
+    sleep 0.5
+    kill -s $signal $pid
+    wait $pid
+    code=$?
+    expected=$((128 + $(kill -l $signal)))
+    if [ -n "$(ls -A "$work/run")" ] && [ $code -eq 0 ]; then
+        echo "note: the run finished before SIG$signal"
+    else
+        [ $code -eq $expected ] || fail "run, SIG$signal: exit $code, expected $expected"
+        [ -z "$(ls -A "$work/run")" ] || fail "run, SIG$signal left: $(ls -A "$work/run")"
+    fi
+done
+# And an uninterrupted run is the same twice (the JSON and the CSV history of a dynamic run).
+"$rotbeam" run joined-beam-dead --out "$work/run/a" >/dev/null 2>&1 || fail "run failed"
+"$rotbeam" run joined-beam-dead --out "$work/run/b" >/dev/null 2>&1 || fail "run failed"
+"$compare" "$work/run/a" "$work/run/b" >/dev/null || fail "two runs differ"
+cmp -s "$work/run/a/"*.csv "$work/run/b/"*.csv || fail "two runs' CSV histories differ"
 
 if [ $failures -ne 0 ]; then
     echo "$failures failure(s)"
     exit 1
 fi
-echo "suite resume: killed after $finished of $total runs, resumed, identical to the uninterrupted run"
+echo "suite resume: --jobs 1 = --jobs 2; stopped by SIGKILL/SIGTERM/SIGINT and by a file size" \
+    "limit, resumed to the same results; run leaves nothing when stopped"

@@ -1,0 +1,149 @@
+#include "core/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <set>
+#include <vector>
+
+#include "core/errors.hpp"
+
+namespace rotbeam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Temporaries are hidden files next to their target: ".NAME.rotbeam-tmp.PID.N".
+constexpr const char* kTemporaryMarker = ".rotbeam-tmp.";
+
+std::mutex& in_flight_mutex() {
+    static std::mutex m;
+    return m;
+}
+
+std::set<std::string>& in_flight() {
+    static std::set<std::string> paths;
+    return paths;
+}
+
+fs::path temporary_for(const fs::path& target) {
+    static std::atomic<unsigned long> counter{0};
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&.
+    std::string name = ".";
+    name += target.filename().string();
+    name += kTemporaryMarker;
+    name += std::to_string(static_cast<long>(::getpid()));
+    name += ".";
+    name += std::to_string(counter++);
+    return target.parent_path() / name;
+}
+
+std::string reason(int error) {
+    if (error == ENOSPC) return "no space left on the device";
+    if (error == EFBIG) return "file too large (file size limit, ulimit -f)";
+    return std::strerror(error);
+}
+
+// Writes all of `text` to `fd`, then fsync; returns 0 or the errno of the first failure.
+int write_all(int fd, const std::string& text) {
+    const char* p = text.data();
+    size_t left = text.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        p += n;
+        left -= static_cast<size_t>(n);
+    }
+    if (::fsync(fd) != 0) return errno;
+    return 0;
+}
+
+// Makes the rename itself durable. A directory that cannot be opened or synced (some file
+// systems refuse) does not make the file incomplete, so this is best effort.
+void sync_directory(const fs::path& directory) {
+    const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+class InFlight {
+  public:
+    explicit InFlight(const std::string& path) : path_(path) {
+        std::lock_guard<std::mutex> lock(in_flight_mutex());
+        in_flight().insert(path_);
+    }
+    ~InFlight() {
+        std::lock_guard<std::mutex> lock(in_flight_mutex());
+        in_flight().erase(path_);
+    }
+    InFlight(const InFlight&) = delete;
+    InFlight& operator=(const InFlight&) = delete;
+
+  private:
+    std::string path_;
+};
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+    const fs::path target(path);
+    if (target.has_parent_path()) {
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) throw OutputError(path + ": cannot create the directory: " + ec.message());
+    }
+    const fs::path temporary = temporary_for(target);
+    const InFlight guard(temporary.string());
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw OutputError(path + ": cannot write: " + reason(errno));
+    int error = write_all(fd, text);
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
+    if (error != 0) {
+        ::unlink(temporary.c_str());
+        throw OutputError(path + ": write failed, nothing written: " + reason(error));
+    }
+    sync_directory(target.parent_path());
+}
+
+void stop_writes_and_remove_temporaries() {
+    // Locked for good: a write that starts after this blocks until the process exits.
+    in_flight_mutex().lock();
+    for (const std::string& p : in_flight()) ::unlink(p.c_str());
+}
+
+int remove_stale_temporaries(const std::string& directory) {
+    std::vector<fs::path> stale;
+    std::error_code ec;
+    for (const auto& entry : fs::recursive_directory_iterator(directory, ec)) {
+        const std::string name = entry.path().filename().string();
+        const size_t at = name.find(kTemporaryMarker);
+        if (at == std::string::npos || name.front() != '.') continue;
+        const std::string rest = name.substr(at + std::strlen(kTemporaryMarker));
+        char* end = nullptr;
+        const long pid = std::strtol(rest.c_str(), &end, 10);
+        if (end == rest.c_str() || *end != '.') continue;
+        // A live process (this one, or another rotbeam writing into the same folder) keeps its
+        // temporaries.
+        if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+        stale.push_back(entry.path());
+    }
+    int removed = 0;
+    for (const fs::path& p : stale) removed += fs::remove(p, ec) ? 1 : 0;
+    return removed;
+}
+
+}  // namespace rotbeam

@@ -1,0 +1,29 @@
+// Output files that are never seen half-written (docs/durability.md).
+//
+// Every result, CSV, data and report file goes through write_file_atomically: the text is written
+// to a temporary file in the target's directory, flushed to the disk (fsync), checked for write
+// errors (a full disk, ENOSPC; a file size limit, EFBIG), and renamed over the target. A reader
+// therefore sees the old file or the complete new one, never a prefix. A failed write throws
+// OutputError naming the file and removes the temporary.
+//
+// A program stopped by a signal calls stop_writes_and_remove_temporaries() first: it removes the
+// temporaries of writes in flight in any thread and makes every later write wait forever, so
+// nothing partial is left behind when the process then exits.
+#pragma once
+
+#include <string>
+
+namespace rotbeam {
+
+// Writes `text` to `path` atomically (above). Creates the parent directories. Throws OutputError.
+void write_file_atomically(const std::string& path, const std::string& text);
+
+// Removes the temporaries of every write in flight and blocks all further writes (never
+// returns the lock). Only for a program about to exit.
+void stop_writes_and_remove_temporaries();
+
+// Removes temporaries left in `directory` and its subfolders by a rotbeam process that no longer
+// runs (one killed with SIGKILL in the middle of a write). Returns how many were removed.
+int remove_stale_temporaries(const std::string& directory);
+
+}  // namespace rotbeam

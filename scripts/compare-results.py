@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Are two rotbeam output folders the same result? (docs/durability.md)
+
+usage: compare-results.py DIR_A DIR_B
+
+"Identical" means: the two folders hold the same files (names, recursively; no temporary
+left by an interrupted write in either), every JSON file parses (none is truncated), and every
+JSON file is equal in both, number for number and string for string, after removing the fields
+below. They are the measured timings and what is computed from them; nothing else may differ
+between two runs, between `--jobs 1` and `--jobs 2`, or between a resumed and an uninterrupted
+suite. Files other than JSON (Markdown, HTML, data for the plots, PNG) carry the same timings
+in text and are only required to exist in both.
+
+Exit 0 when identical, 1 with one line per difference (at most 40) otherwise.
+"""
+import json
+import os
+import sys
+
+# The one list of what may differ. Each entry: a key, removed wherever it occurs in a JSON
+# document, and why it is not a result. These are every timing-dependent key `rotbeam suite` and
+# `rotbeam run` write; the bench and the standalone timed studies are not covered.
+EXCLUDED = {
+    # Measured times.
+    "wall_seconds": "wall time of a run (runs/*.json, `rotbeam run --json`)",
+    "seconds": "time to solution of a speed-study point, or its Pareto-front entry",
+    "seconds_all": "speed study: time of a run assembling every term",
+    "seconds_needed": "speed study: time of the same run assembling only the needed terms",
+    # Derived from the times.
+    "ratio": "speed study: seconds_all / seconds_needed",
+    "repeats": "speed study: how many repeats fit its time budget",
+    "front": "speed study: the Pareto front of time against error (which points, in what order)",
+}
+
+TEMPORARY_MARKER = ".rotbeam-tmp."
+
+
+def strip(value):
+    if isinstance(value, dict):
+        return {k: strip(v) for k, v in value.items() if k not in EXCLUDED}
+    if isinstance(value, list):
+        return [strip(v) for v in value]
+    return value
+
+
+def first_difference(a, b, where):
+    if type(a) is not type(b):
+        return f"{where}: {a!r} != {b!r}"
+    if isinstance(a, dict):
+        for k in sorted(set(a) | set(b)):
+            if k not in a or k not in b:
+                return f"{where}.{k}: present in one only"
+            d = first_difference(a[k], b[k], f"{where}.{k}")
+            if d:
+                return d
+        return None
+    if isinstance(a, list):
+        if len(a) != len(b):
+            return f"{where}: {len(a)} items != {len(b)}"
+        for i, (x, y) in enumerate(zip(a, b)):
+            d = first_difference(x, y, f"{where}[{i}]")
+            if d:
+                return d
+        return None
+    return None if a == b else f"{where}: {a!r} != {b!r}"
+
+
+def files(root):
+    found = set()
+    for directory, _, names in os.walk(root):
+        for n in names:
+            found.add(os.path.relpath(os.path.join(directory, n), root))
+    return found
+
+
+def load(path, problems):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        problems.append(f"{path}: not complete JSON ({e})")
+        return None
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__.strip().splitlines()[2], file=sys.stderr)
+        return 2
+    a_root, b_root = sys.argv[1], sys.argv[2]
+    a_files, b_files = files(a_root), files(b_root)
+    problems = []
+    for name in sorted(a_files | b_files):
+        if TEMPORARY_MARKER in name:
+            problems.append(f"{name}: temporary file left behind")
+        elif name not in a_files or name not in b_files:
+            problems.append(f"{name}: only in {a_root if name in a_files else b_root}")
+    compared = 0
+    for name in sorted(a_files & b_files):
+        if not name.endswith(".json") or TEMPORARY_MARKER in name:
+            continue
+        a = load(os.path.join(a_root, name), problems)
+        b = load(os.path.join(b_root, name), problems)
+        if a is None or b is None:
+            continue
+        compared += 1
+        d = first_difference(strip(a), strip(b), "")
+        if d:
+            problems.append(f"{name}: {d}")
+    for p in problems[:40]:
+        print(p)
+    if problems:
+        print(f"{len(problems)} difference(s) between {a_root} and {b_root}")
+        return 1
+    print(f"identical: {compared} JSON files, {len(a_files)} files "
+          f"(excluding {len(EXCLUDED)} timing fields)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
