@@ -50,7 +50,8 @@ Modes displacement_modes(int order) {
     form::DisplacementStatics<param::Quaternion> problem(model);
     const StaticOutcome eq =
         run_static(problem, {0.25, 0.5, 0.75, 1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE((eq.status == SolveStatus::converged));
+    // A solved static state: the tolerances met, or stalled at round-off with its error bound.
+    BOOST_TEST_REQUIRE(has_solution(eq.status));
     VecX r;
     SparseMatrix K;
     problem.evaluate(r, &K);
