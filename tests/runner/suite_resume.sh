@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `rotbeam suite` is restartable and deterministic (issue 11 point 1): a suite killed midway
+# `rotbeam suite` is restartable and deterministic: a suite killed midway
 # (SIGKILL, no chance to clean up) and rerun ends with the same results as an uninterrupted run,
 # every result file is complete JSON at every moment (atomic writes), finished runs are not
 # redone, and the results do not depend on --jobs. Usage: suite_resume.sh ROTBEAM
