@@ -50,7 +50,7 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
     const GeneralizedAlpha scheme = GeneralizedAlpha::from_rho_infinity(settings.rho_infinity);
     // The consistent acceleration belongs to the motion on (t_0, t_1]: loads are taken at the right
     // limit t_0 + 1e-6 h. For continuous time functions this changes v˙_0 by O(1e-6 h ḟ), far below
-    // the scheme's O(h²); for a load released at t_0 (benchmarks.md §8: a table dropping to 0
+    // the scheme's O(h²); for a load released at t_0 (docs/benchmarks.md §8: a table dropping to 0
     // within 1e-12 s) it gives the acceleration of the free motion, as a second-order start needs.
     constexpr double kRightLimit = 1e-6;
     problem.initialize_acceleration(settings.start_time + kRightLimit * h0);

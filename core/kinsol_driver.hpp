@@ -1,4 +1,4 @@
-// KINSOL (SUNDIALS) as an alternative driver for additive nonlinear systems (DESIGN.md §Analyses):
+// KINSOL (SUNDIALS) for additive nonlinear systems (docs/architecture.md, Analyses and drivers):
 // Newton with KINSOL's line search (KIN_LINESEARCH), the system's analytic sparse Jacobian handed
 // to KLU through a compressed-sparse-column SUNMatrix, unknowns and residuals scaled by
 // 1/increment_scale and 1/residual_scale.

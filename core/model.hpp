@@ -4,7 +4,7 @@
 // sections), constraints, loads, the analysis and the discretization/solver options. The case loader
 // (cases/loader) builds it from YAML and validates it; formulations read it and never change it.
 //
-// Conventions (DESIGN.md): section matrices are 6×6 in the order [F1, F2, F3, M1, M2, M3] against
+// Conventions (docs/architecture.md): sections are 6×6, order [F1, F2, F3, M1, M2, M3], against
 // [ε11, 2ε12, 2ε13, κ1, κ2, κ3], in material axes (e1 along the reference line tangent). The
 // reference frame R^r(s) = [e1 e2 e3] maps material to inertial components.
 //
@@ -161,7 +161,7 @@ struct DynamicSettings {
     double absolute_tolerance = 1e-6;
     Vec3 initial_velocity = Vec3::Zero();
     // "rest": start from the reference configuration at rest; "static": start at rest from the
-    // static equilibrium under the loads evaluated at t = 0 (a release, benchmarks.md §8).
+    // static equilibrium under the loads evaluated at t = 0 (a release, docs/benchmarks.md §8).
     std::string initial_state = "rest";
 };
 
@@ -224,7 +224,7 @@ struct ReferenceValue {
     std::vector<int> components;  // which components `value` lists (empty: all)
     double tolerance = 0.0;
     bool relative = false;  // tolerance relative to |value| (else absolute, case units)
-    bool gated = true;      // false: recorded, not gated (benchmarks.md §1)
+    bool gated = true;      // false: recorded, not gated (docs/benchmarks.md §1)
     std::string justification;
     std::string source;
     std::optional<int> published_iterations;  // the source's Newton iterations (reported only)

@@ -1,5 +1,5 @@
-// The result schema shared by `run`, `reference`, the suite and the benchmarks (DESIGN.md §Program
-// and results contract), and atomic writing of result files.
+// The result schema of `run`, `reference`, the suite and the benchmarks (docs/architecture.md, The
+// program and its results), and atomic writing of result files.
 //
 // A run result is one JSON object: case, rotation, formulation, elements, order, dofs, status
 // (converged | stalled-at-round-off | diverged | singular | error, docs/solver-convergence.md),

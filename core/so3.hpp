@@ -1,6 +1,6 @@
 // SO(3) helpers shared by every parameterization and formulation.
 //
-// Conventions (DESIGN.md §Conventions): a rotation matrix R maps material components to inertial
+// Conventions (docs/architecture.md): a rotation matrix R maps material components to inertial
 // components; a unit quaternion is stored scalar first, q = (w, x, y, z) = (cos φ/2, sin φ/2 n);
 // a rotation vector is ψ = φ n. skew(a) b = a × b, axial(skew(a)) = a.
 //

@@ -1,4 +1,4 @@
-// The concept every rotation parameterization satisfies (DESIGN.md §Parameterizations).
+// The concept every rotation parameterization satisfies (docs/parameterizations.md).
 //
 // A parameterization is a stateless struct with static functions. Notation: p are the parameters
 // (kSize = 3 or 4 of them), R(p) maps material to inertial components.

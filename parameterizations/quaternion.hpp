@@ -1,4 +1,4 @@
-// Quaternion parameterization of rotations (DESIGN.md §Conventions).
+// Quaternion parameterization of rotations (docs/architecture.md, Shared conventions).
 //
 // Definition: q = (w, v) = (cos φ/2, sin φ/2 n), scalar first, kSize = 4. q and −q are the same
 // rotation; there is no singular angle (singular_angle() = +∞).

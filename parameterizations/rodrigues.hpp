@@ -1,11 +1,11 @@
-// Rodrigues parameterization of rotations (DESIGN.md §Conventions; Hodges 2006, Yu & Blair 2012,
+// Rodrigues parameterization of rotations (docs/architecture.md; Hodges 2006, Yu & Blair 2012,
 // the GEBT convention; seed 002 Eq. 11 with generating function p(φ) = 2 tan(φ/2)).
 //
 // Definition: p = 2 tan(φ/2) n, kSize = 3. (Gibbs' vector tan(φ/2) n is p/2: no solution
 // changes, but the scale of H, norm thresholds and Newton increment norms do; every threshold
 // here is stated for p = 2 tan(φ/2) n.) With D = 1 + pᵀp/4, (1, p/2)/√D is the unit quaternion
 // (cos φ/2, sin φ/2 n): Rodrigues is the gnomonic projection of the quaternion sphere.
-// R maps material to inertial components (DESIGN.md gives Rᵀ, the GEBT C):
+// R maps material to inertial components (seed 002 writes Rᵀ, the GEBT C):
 //     R(p) = [(1 − pᵀp/4) I + p̃ + p pᵀ/2] / D                                        (R1)
 //     material H_m = (I − p̃/2)/D (GEBT's Q),  H_m⁻¹ = I + p̃/2 + p pᵀ/4    (Rᵀ δR = (H_m δp)~)
 //     spatial  H_s = (I + p̃/2)/D = R H_m,     H_s⁻¹ = I − p̃/2 + p pᵀ/4    (δR Rᵀ = (H_s δp)~)

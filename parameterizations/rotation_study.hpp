@@ -1,4 +1,4 @@
-// The rotation study behind `rotbeam study rotations` (issue 3, point 5): how far each
+// The rotation study behind `rotbeam study rotations`: how far each
 // parameterization rotates before it fails, and how it fails.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Rotation-vector (exponential-map) parameterization of rotations (seed 000's δψ increments;
-// DESIGN.md §Conventions).
+// docs/architecture.md, Shared conventions).
 //
 // Definition: ψ = φ n, kSize = 3; R(ψ) = exp(ψ̃) maps material to inertial components and is
 // defined for every finite ψ (any angle, not reduced):

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Compares two `rotbeam bench --history` files like for like (issue 13 item 5).
+"""Compares two `rotbeam bench --history` files like for like.
 
 usage: scripts/compare-bench.py OLD.json NEW.json [--time-ratio R] [--any-machine]
 

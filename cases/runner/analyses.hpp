@@ -1,8 +1,8 @@
-// The dynamic and modal analyses of each formulation (issues 6 and 9), called by run_case. Each
+// The dynamic and modal analyses of each formulation, called by run_case. Each
 // file that defines them holds that formulation's parameterization switch for its analyses (as
 // make_problem.cpp does for statics), so nothing below dispatches on the parameterization.
 //
-// Each function fills the result JSON of DESIGN.md's contract (run_case has written the header):
+// Each function fills the result JSON (docs/architecture.md) (run_case has written the header):
 //   `dofs`, `status` (converged | stalled-at-round-off | diverged | singular | error; modal also
 //   eigenpair-check-failed; mixed also kinematics-unresolved), `message`, `counters`;
 //   dynamic: `steps`, one per output time, built with step_json(model, nullopt, t, iterations, …)
@@ -26,11 +26,11 @@
 
 namespace rotbeam {
 
-// cases/runner/run_displacement_dynamics.cpp (issue 6)
+// cases/runner/run_displacement_dynamics.cpp
 void run_displacement_dynamic(const Model& model, bool trace, nlohmann::json& result);
 void run_displacement_modal(const Model& model, bool trace, nlohmann::json& result);
 
-// cases/runner/run_mixed_dynamics.cpp (issue 9)
+// cases/runner/run_mixed_dynamics.cpp
 void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result);
 void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result);
 

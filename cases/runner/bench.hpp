@@ -1,4 +1,4 @@
-// `rotbeam bench` (issue 13 item 1, static targets): for every parameterization × formulation, the
+// `rotbeam bench` (static targets): for every parameterization × formulation, the
 // cheapest discretization (elements, order, load sub-steps, found by a search over a small grid)
 // that reaches the target accuracy, timed as median whole-process and in-process time to solution
 // with the timing harness (timing.hpp), plus Newton iterations, unknowns and peak memory; the
@@ -20,7 +20,7 @@ struct BenchTarget {
     double load_factor = 0.0;
     double accuracy = 0.0;               // target error
     std::string measure;                 // how the error is scaled (for the table)
-    double target_seconds = 0.0;         // issue 13 item 2 (0: none)
+    double target_seconds = 0.0;         // wall-time target (0: none)
     std::vector<std::string> overrides;  // applied to the case (and to its reference)
 };
 

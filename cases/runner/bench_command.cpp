@@ -1,5 +1,5 @@
 // `rotbeam bench`: runs every target of bench.cpp for every combination, the start-up timing, and
-// prints the table against issue 13's targets. JSON to --json (default out/bench.json); with
+// prints the table against those targets. JSON to --json (default out/bench.json); with
 // --history a copy goes to reports/history/<date>-<machine>.json (committed, compared
 // like-for-like: the machine tag names host, CPU and core count).
 #include <unistd.h>
@@ -219,7 +219,7 @@ int command_bench(const Args& args) {
         "",
         0,
         0,
-        "Benchmark the static targets (issue 13): for every parameterization × formulation the "
+        "Benchmark the static targets: for every parameterization × formulation the "
         "cheapest discretization reaching the target accuracy (roll-up λ = 0.4, 1.6, 2.0 to "
         "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
         "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up; "

@@ -1,4 +1,4 @@
-// `rotbeam bench`'s joined-beam targets (issue 13 items 1–2; benchmarks.md §3):
+// `rotbeam bench`'s joined-beam targets (docs/benchmarks.md §3):
 // - joined-beam-modal: the five lowest frequencies of the undeformed joined beam to 1e-6 relative
 //   (largest over the modes) of the converged frequencies, which the bench computes first
 //   (displacement formulation, p-converged; docs/performance.md says why and how they agree with

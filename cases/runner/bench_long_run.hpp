@@ -1,5 +1,5 @@
-// `rotbeam bench`'s long-run target (issue 13 item 4: "cost per time step constant over a long
-// run"). The joined beam under its dead sine joint force (cases/joined-beam-dead.yaml, the paper's
+// `rotbeam bench`'s long-run target (the cost per time step stays constant over a long
+// run). The joined beam under its dead sine joint force (cases/joined-beam-dead.yaml, the paper's
 // mesh and Δt = 1 ms) integrated far past the case's 2 s — 20 000 fixed steps (--quick: 2 000) —
 // through the normal runner path (run_case: the result's history is built as `rotbeam run` builds
 // it), for the displacement formulation (generalized-α, ρ∞ = 0.9: with the case's ρ∞ = 1 its step

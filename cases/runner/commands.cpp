@@ -196,7 +196,7 @@ int command_run(const Args& args) {
         1,
         1,
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
-        "result (DESIGN.md contract). Exit 0 whatever the solver status, 2 on bad input.",
+        "result (docs/architecture.md). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
          {"formulation", "NAME", "displacement | mixed"},
          {"elements", "N", "elements of every member (members.*.elements)"},

@@ -1,4 +1,4 @@
-// The rotbeam program's commands (DESIGN.md §Program and results contract). Each returns the exit
+// The program's commands (docs/architecture.md, The program and its results). Each returns the exit
 // code: 0 ran (whatever the solver status), 1 a verify miss, 2 bad input (InputError, caught in
 // main with its one-line message).
 #pragma once

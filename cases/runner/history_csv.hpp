@@ -1,4 +1,4 @@
-// The CSV time history of a dynamic run (DESIGN.md §Program and results contract), built from
+// A dynamic run's CSV time history (docs/architecture.md, The program and its results), built from
 // the result JSON's `steps`: one row per output time; per named point the displacement, the
 // principal rotation vector and the unwrapped rotation angle; then, when the steps carry them,
 // each support's reaction (force and moment on the beam) and the kinetic and strain energy.

@@ -1,5 +1,5 @@
-// The joined beam's 0–2 s response (benchmarks.md §3, cases/joined-beam-dead.yaml) as the dynamic
-// speed-versus-accuracy study (issue 12 item 4, issue 9 item 7) and `rotbeam bench` (issue 13)
+// The joined beam's 0–2 s response (docs/benchmarks.md §3, cases/joined-beam-dead.yaml) as the
+// dynamic speed-versus-accuracy study and the joined-beam targets of `rotbeam bench`
 // use it: one integration setting (integrator, Δt or IDA tolerance) per run, the joint's
 // displacement history, and the self-converged references the errors are measured against.
 //

@@ -1,5 +1,5 @@
 // The one place where the runtime choice of parameterization and formulation is made
-// (DESIGN.md §Formulations): below this switch nothing dispatches on the parameterization.
+// (docs/architecture.md, Layers): below this switch nothing dispatches on the parameterization.
 #pragma once
 
 #include <memory>

@@ -280,7 +280,7 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     if (figures.empty()) md << "(no figures: gnuplot missing or no data)\n";
     for (const Figure& f : figures)
         md << "![" << f.caption << "](" << f.file << ")\n\n" << f.caption << "\n\n";
-    // The studies (issue 12), each a section written by its study function, when present.
+    // The static studies, each a section written by its study function, when present.
     for (const auto& entry : static_studies()) {
         std::ifstream study(fs::path(out_dir) / ("study-" + entry.first + ".md"));
         if (study) md << "\n" << study.rdbuf() << "\n";

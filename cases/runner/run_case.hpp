@@ -1,5 +1,5 @@
 // Running one case with one combination (parameterization × formulation × options) and producing
-// the result JSON of DESIGN.md's contract. Used by `run`, `verify` and `suite`.
+// the result JSON of docs/architecture.md. Used by `run`, `verify` and `suite`.
 #pragma once
 
 #include <nlohmann/json.hpp>

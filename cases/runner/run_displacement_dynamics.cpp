@@ -1,4 +1,4 @@
-// Dynamic and modal analyses of the displacement formulation (issue 6; analyses.hpp). This file
+// Dynamic and modal analyses of the displacement formulation (analyses.hpp). This file
 // holds the parameterization switch for them, as make_problem.cpp does for statics.
 #include <iostream>
 

@@ -1,4 +1,4 @@
-// Dynamic and modal analyses of the mixed formulation (issue 9; analyses.hpp). This file holds the
+// Dynamic and modal analyses of the mixed formulation (analyses.hpp). This file holds the
 // parameterization switch for them, as make_problem.cpp does for statics.
 #include <algorithm>
 #include <iostream>

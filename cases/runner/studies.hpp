@@ -1,4 +1,4 @@
-// The static studies of issue 12 (`rotbeam study NAME`, and the suite's report). Each study is one
+// The static studies (`rotbeam study NAME`, and the suite's report). Each study is one
 // function: it runs through run_case() (the code path of `rotbeam run`), writes
 // DIR/study-<name>.json (the data), DIR/study-<name>.md (tables, figures, what they show) and the
 // figures (reports/study_<name>.gp), and returns its JSON.

@@ -1,4 +1,4 @@
-// Issue 12 item 5, "model only what the scene requires": the time it saves, measured. Every
+// "Model only what the scene requires": the time it saves, measured. Every
 // analysis kind (static, modal, dynamic) and formulation is run twice on the same model — as the
 // scene requires (the default) and with solver.assemble_all_terms (inertia and damping at rest in
 // statics, damping of undamped sections, the load stiffness of dead loads, all with zero

@@ -1,4 +1,4 @@
-// `rotbeam study convergence` (issue 12 item 1, statics): h-refinement for every combination and
+// `rotbeam study convergence` (statics): h-refinement for every combination and
 // p-refinement for the displacement formulation on the roll-up at λ = 0.8 (exact, core/oracles/
 // rollup.hpp), the 45° bend at P = 600 and the precessing helix at κL = 2.5 (continuum reference);
 // observed orders (least squares and the last three points above the round-off floor) and

@@ -29,7 +29,7 @@ struct History {
 };
 
 // max over the samples of ‖u(t) − u_ref(t)‖ divided by max over t of ‖u_ref(t)‖ (the error measure
-// of issue 9 item 5 and issue 12 item 4). Samples are matched by time (|Δt| ≤ 1e-9 (1 + |t|));
+// of the joined-beam studies). Samples are matched by time (|Δt| ≤ 1e-9 (1 + |t|));
 // a sample of `u` without a matching reference sample makes the result NaN, so histories on
 // different output grids are never compared silently.
 double history_error(const History& u, const History& reference);

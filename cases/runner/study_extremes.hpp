@@ -1,4 +1,4 @@
-// The parts of `rotbeam study extremes` (issue 12 item 3), each writing its Markdown section and
+// The parts of `rotbeam study extremes`, each writing its Markdown section and
 // figure: study_extremes.cpp (slenderness, tiny loads), study_extremes_newton.cpp (one big load
 // step, refinement down to round-off).
 #pragma once

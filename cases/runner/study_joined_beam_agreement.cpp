@@ -1,6 +1,6 @@
-// `rotbeam study joined-beam-agreement` (issue 9 item 5): at converged Δt and mesh, the mixed
+// `rotbeam study joined-beam-agreement`: at converged Δt and mesh, the mixed
 // formulation's 0–2 s joined-beam response (dead and follower joint force) agrees with the
-// displacement formulation's. The error measure is the issue's: max over the output times of
+// displacement formulation's. The error measure is the shared one: max over the output times of
 // ‖u_mixed − u_disp‖ / max ‖u_disp‖ at the joint (history_error).
 //
 // Each response is time-converged: the displacement formulation's as a same-mesh reference
@@ -390,7 +390,7 @@ nlohmann::json study_joined_beam_agreement(const StudyOptions& o) {
 
     std::ostringstream md;
     md << "## Study: joined beam, agreement of the formulations at converged Δt and mesh\n\n"
-          "The joined beam (benchmarks.md §3) under the joint force 1e5 sin(20t) N, 0–"
+          "The joined beam (docs/benchmarks.md §3) under the joint force 1e5 sin(20t) N, 0–"
        << p.window.end_time << " s, outputs every " << p.window.output_interval * 1e3
        << " ms. Every response is Richardson-extrapolated in time (order 2) from its trapezoidal "
           "fixed step (generalized-α with ρ∞ = 1 for the displacement formulation) at Δt = "

@@ -1,4 +1,4 @@
-// `rotbeam study joined-beam-dynamics` (issue 12 item 4, issue 9 item 7): speed versus accuracy of
+// `rotbeam study joined-beam-dynamics`: speed versus accuracy of
 // the joined beam's 0–2 s response under the joint force 1e5 sin(20t) N, dead and follower
 // (joined_beam_dynamics.hpp; each load measured on its own, with its own references). Per
 // combination on the paper's mesh, every integrator setting (Δt of the fixed-step schemes, IDA

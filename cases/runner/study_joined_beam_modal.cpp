@@ -1,5 +1,5 @@
-// `rotbeam study joined-beam-modal` (issue 12 item 1, the joined-beam frequencies; benchmarks.md
-// §3, seed 002 Table III): h-refinement of the five lowest frequencies of the undeformed joined
+// `rotbeam study joined-beam-modal` (the joined-beam frequencies; docs/benchmarks.md §3, seed 002
+// Table III): h-refinement of the five lowest frequencies of the undeformed joined
 // beam for both formulations (displacement: order 1, 2 and 4, consistent mass; mixed: its
 // second-order elements with the element-midpoint inertia of seed 002) and p-refinement of the
 // displacement formulation on one element per member, for every parameterization whose modal
@@ -279,8 +279,8 @@ nlohmann::json study_joined_beam_modal(const StudyOptions& o) {
     }
     std::ostringstream md;
     md << "## Study: joined-beam frequencies\n\nThe five lowest frequencies of the undeformed "
-          "joined "
-          "beam (benchmarks.md §3) under h-refinement (displacement: order 1, 2, 4 with consistent "
+          "joined beam "
+          "(docs/benchmarks.md §3) under h-refinement (displacement: order 1, 2, 4 with consistent "
           "mass and the default stiffness quadrature; mixed: seed 002's element with midpoint "
           "inertia) and p-refinement (displacement, one element per member). Errors are the "
           "largest "

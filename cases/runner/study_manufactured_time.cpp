@@ -1,5 +1,5 @@
-// `rotbeam study manufactured-time` (issue 12 item 1, the manufactured solutions in time; issue 10
-// point 5): observed orders in time of every integrator and in space at a small step, against the
+// `rotbeam study manufactured-time` (the manufactured solutions
+// in time): observed orders in time of every integrator and in space at a small step, against the
 // manufactured motion (core/oracles/manufactured_motion.hpp; runs in manufactured_motion_runs.hpp).
 //  - Time, fixed steps: for each combination a sequence of steps Δt; the time error of a run is its
 //    difference to the run at Δt/2 on the same mesh (the space error cancels), the error against

@@ -1,4 +1,4 @@
-// `rotbeam study singularity` (issue 12 item 2, statics): every combination and interpolation
+// `rotbeam study singularity` (statics): every combination and interpolation
 // strategy on the roll-up to λ = 4 (two full turns; exact) and on the helices to κL = 4π
 // (continuum reference): the largest tip rotation reached, how the run stopped (diverged,
 // singular, or wrong branch = converged but off the answer), Newton iterations against λ, and the

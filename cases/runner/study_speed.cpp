@@ -1,4 +1,4 @@
-// `rotbeam study speed-accuracy` (issue 12 items 4 and 5, statics): error against in-process wall
+// `rotbeam study speed-accuracy` (statics): error against in-process wall
 // time (median of repeats, timing.hpp) across meshes and orders on the roll-up (λ = 0.8, exact)
 // and the 45° bend (P = 600, continuum reference) for every combination, the Pareto front across
 // combinations, which combination wins at which accuracy (in words), and the "model only what the

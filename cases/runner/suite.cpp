@@ -251,7 +251,7 @@ int command_suite(const Args& args) {
     }
     write_file_atomically((fs::path(out) / "rotation-study.json").string(),
                           param::rotation_study(721).dump(1) + "\n");
-    // The studies (issue 12) belong to the main job: on by default for the whole catalog, off
+    // The static studies belong to the main job: on by default for the whole catalog, off
     // for a --cases selection unless --studies asks for them.
     const bool studies = !a.has("no-studies") && (a.has("studies") || !a.has("cases"));
     if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);

@@ -1,4 +1,4 @@
-// The one timing harness (issue 11 item 2, issue 13 item 1): medians of repeated runs, in-process
+// The one timing harness: medians of repeated runs, in-process
 // time, whole-process time (the rotbeam executable itself run as a child through /proc/self/exe)
 // and peak memory (getrusage / wait4 of the child). Used by the studies and by `rotbeam bench`.
 //

@@ -290,7 +290,7 @@ std::string published_references_markdown(const std::vector<std::string>& cases)
           "`references`: Table I, Table II and the other 45° bend values, Table III), computed "
           "with every combination its applies_to selects, and every expected stop, as `rotbeam "
           "verify` does. `recorded` entries are published values that are not converged solutions "
-          "(benchmarks.md §1); `not reached` pairs end at an expected stop first.\n\n"
+          "(docs/benchmarks.md §1); `not reached` pairs end at an expected stop first.\n\n"
           "| case | reference | combination | published | computed | difference | tolerance | "
           "result |\n|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {

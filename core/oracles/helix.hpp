@@ -1,4 +1,4 @@
-// Exact helix of benchmarks.md §5 (derivation in docs/reference-solutions.md §2).
+// Exact helix of docs/benchmarks.md §5 (derivation in docs/reference-solutions.md §2).
 //
 // Straight cantilever along +x of length L, clamped at s = 0, isotropic in bending and torsion
 // (EI₂ = EI₃ = GJ = EI), tip moment M = κ EI n with |n| = 1, dead or follower. The internal force

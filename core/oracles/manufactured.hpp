@@ -1,4 +1,4 @@
-// A manufactured static solution for both formulations (issue 10 point 5): a prescribed
+// A manufactured static solution for both formulations: a prescribed
 // displacement u(s, λ) and rotation R(s, λ) of a straight rod whose rotation passes 2π about an
 // axis that varies along the rod, and the distributed force and moment that make it an exact
 // equilibrium of the continuum equations. Derivation in docs/reference-solutions.md

@@ -1,5 +1,5 @@
-// A manufactured solution in space and time for both formulations (issue 10 point 5, issue 12
-// point 1): a prescribed motion u(s, t), R(s, t) of a straight rod whose rotation passes 2π about
+// A manufactured solution in space and time for both formulations:
+// a prescribed motion u(s, t), R(s, t) of a straight rod whose rotation passes 2π about
 // an axis that varies along the rod and in time, and the distributed force and moment that make it
 // an exact motion of the continuum equations, inertia included. Derivation and measured orders in
 // docs/reference-solutions.md §Manufactured motion.

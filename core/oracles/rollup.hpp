@@ -1,4 +1,4 @@
-// Exact roll-up of a cantilever under a tip moment (benchmarks.md §1, seed 002 Example 1).
+// Exact roll-up of a cantilever under a tip moment (docs/benchmarks.md §1, seed 002 Example 1).
 //
 // Straight cantilever along +x of length L, clamped at s = 0, tip moment M = −λ (π EI / L) e_y.
 // The internal force is zero, so the bending moment is M everywhere and the curvature is the

@@ -1,5 +1,5 @@
 // Sectional damping forces of the displacement formulation (seed 000 Eq. 10, F^D2 per the errata
-// in benchmarks.md) and their tangent blocks, derived from the forces and checked by central
+// in docs/benchmarks.md) and their tangent blocks, derived from the forces and checked by central
 // differences (tests/displacement/test_damping.cpp), not transcribed from the damaged printed text.
 //
 //   ε˙ = u˙′ − ω̃ (R x⁰′),  κ˙ = ω̃ κ + ω′,  F^D1 = D [ε˙; κ˙] = [f; m],

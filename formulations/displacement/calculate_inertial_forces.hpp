@@ -12,7 +12,7 @@
 //   K^I = ∂F/∂(u, δθ) = [0, −(ω˙~ + ω̃ω̃) ã ; 0, ũ¨ ã + ρ ω˙~ − (ρ ω˙)~ + ω̃ ρ ω̃ − ω̃ (ρ ω)~].
 // The printed seed-000 blocks are written with the same structure; here every block was derived
 // from F^I directly and is checked against central differences
-// (tests/displacement/test_inertia.cpp) — finite differences are the arbiter (benchmarks.md
+// (tests/displacement/test_inertia.cpp) — finite differences are the arbiter (docs/benchmarks.md
 // §Errata). Header-only, fixed-size, no heap.
 #pragma once
 

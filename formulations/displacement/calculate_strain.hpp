@@ -1,7 +1,7 @@
 // Sectional strain of the displacement formulation (seed 000, "equivalent definition of strain").
 //
 //   ε = x^r′ + u′ − R x^r′                    (seed 000, the equation after Eq. 8)
-//   κ = axial(R′ Rᵀ)                          (seed 000 Eq. 7, corrected: benchmarks.md §Errata)
+//   κ = axial(R′ Rᵀ)                          (seed 000 Eq. 7, erratum: docs/benchmarks.md, Errata)
 //
 // R is the rotation relative to the reference configuration (R^c = R R^r), so both measures are
 // exactly zero in the reference configuration (u = 0, R = I) at every point, whatever the

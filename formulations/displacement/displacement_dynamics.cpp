@@ -1,4 +1,4 @@
-// Explicit instantiation of the displacement dynamics for every parameterization (STYLE.md).
+// Explicit instantiation of the displacement dynamics for every parameterization.
 #include "formulations/displacement/displacement_dynamics.hpp"
 
 #include "formulations/displacement/displacement_dynamics_assembly.hpp"

@@ -94,7 +94,7 @@ class DisplacementDynamics : public SecondOrderProblem {
     const Params& node_rotation(int node) const { return statics_.node_rotation(node); }
     bool damped() const { return damped_; }
     // ∫ [ε˙; κ˙]ᵀ D [ε˙; κ˙] ds with seed 000 Eq. 10's spatial rates: the power the damping law
-    // dissipates at the current state (its lack of objectivity: benchmarks.md Errata).
+    // dissipates at the current state (its lack of objectivity: docs/benchmarks.md, Errata).
     double damping_dissipation();
 
   private:

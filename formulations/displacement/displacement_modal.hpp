@@ -1,5 +1,5 @@
-// Modal analysis of the displacement formulation about its current (static) state (issue 6
-// point 3): the tangent stiffness K = ∂r/∂x through the retraction (the static Jacobian, with
+// Modal analysis of the displacement formulation about its current (static) state:
+// the tangent stiffness K = ∂r/∂x through the retraction (the static Jacobian, with
 // follower-load stiffness when there are follower loads) and the mass matrix M in the same
 // unknowns [δu; δψ] per node (δψ spatial, so ψ̇ is the spatial angular velocity ω):
 //   M_ab = Σ_q w_q N_a N_b [m I, m (Q η)~ᵀ; m (Q η)~, Q ρ Qᵀ],   Q = R(s_q) R^r(s_q),

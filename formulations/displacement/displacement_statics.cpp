@@ -1,4 +1,4 @@
-// Explicit instantiation of the displacement statics for every parameterization (STYLE.md: every
+// Explicit instantiation of the displacement statics for every parameterization (so every
 // combination compiles, compile time stays bounded).
 #include "formulations/displacement/displacement_statics.hpp"
 

@@ -296,7 +296,7 @@ std::string DisplacementStatics<P>::describe_state() const {
     // after a rescale).
     s << "largest nodal rotation " << largest_continued_angle(model_, rotation_stations())
       << " rad (" << P::kName << ")";
-    // Issue 5 point 3: with `direct` interpolation the nodal parameters are interpolated as they
+    // With `direct` interpolation the nodal parameters are interpolated as they
     // are, so rescaling one node (WM: complementary parameters; rotation vector: −2π) would put
     // it in another chart than its neighbours. It is not done; say so where it would have been.
     if constexpr (P::kSize == 3) {

@@ -1,5 +1,5 @@
 // The momentum terms of the mixed element (seed 002 Eqs. 45, 46, 49, 50 with the errata of
-// benchmarks.md) in closed form, and their derivatives with respect to the unknowns X and their
+// docs/benchmarks.md) in closed form and their derivatives with respect to the unknowns X and their
 // rates Ẋ. The static part of Eqs. 45–48 is mixed_element.hpp's; the dynamic element adds
 // these terms to it.
 //

@@ -1,6 +1,6 @@
 // The non-template parts of the mixed dynamics (pattern, section mass) and the explicit
-// instantiations for every three-parameter parameterization (the quaternion's mixed kinematics
-// are not written yet: issue 8).
+// instantiations for every three-parameter parameterization (the quaternion has its own four-
+// component class, mixed_quaternion_dynamics.hpp).
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"

@@ -12,7 +12,7 @@
 // Differential unknowns (rates appear in F): u, c, P, H of every element; algebraic: F, M and all
 // node unknowns. Loads and prescribed motion follow their time functions; tables and ramps (which
 // may jump) are evaluated at max(t, t⁺) with t⁺ = start + 1e-6 Δt, their right limit at the start
-// (a load released at t = 0, benchmarks.md §8, is off for the initial conditions and every step).
+// (a load released at t = 0, docs/benchmarks.md §8, is off from the initial conditions on).
 #pragma once
 
 #include <vector>

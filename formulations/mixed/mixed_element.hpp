@@ -1,8 +1,8 @@
 // The static element equations of the mixed formulation in closed form: seed 002 Eqs. (45)–(48)
-// without the momentum terms, with the errata of benchmarks.md (f_F^∓ = ∓… read f_F^± = ±u_i − …,
+// without momentum terms, with the errata of docs/benchmarks.md (f_F^∓ = ∓… read f_F^± = ±u_i − …,
 // f_M^± = ±c_i − …, consistent with Eqs. 33, 37), and their derivatives.
 //
-// Notation (DESIGN.md §Conventions): R = R(c) is the relative rotation (material → inertial, seed
+// Notation (docs/architecture.md): R = R(c) is the relative rotation (material → inertial, seed
 // 002's Cᵀ), A = R C^ab the total rotation of the element (seed 002's Cᵀ C^ab), H = H_m(c) the
 // material tangent (seed 002's Q, Eq. 24), H⁻¹ its inverse (Eq. 25). [γ; κ] = S [F; M] (Eq. 19
 // inverted: the compliance may have zero rows, rigid modes). e = e1 + γ.

@@ -14,7 +14,7 @@
 // reference, seed 002's c_a, Eq. 28), F_i, M_i (deformed-frame B components), and 12 equations:
 // f_F^−, f_M^− (Eqs. 33–34 / 41–42 with the start node's û, ĉ), f_F^+, f_M^+ (Eqs. 37–38).
 //
-// Initial curvature and twist enter through per-element frames C^ab (benchmarks.md §Errata: Eqs.
+// Initial curvature and twist enter via per-element frames C^ab (docs/benchmarks.md, Errata: Eqs.
 // 45–48 carry no k): each element is the straight chord between its end nodes on the exact
 // reference line, of length ΔL_i = |Δr|, with e1 along the chord and e2 the reference frame's e2 at
 // mid-length projected normal to it. Inside an element the reference triad is constant; the

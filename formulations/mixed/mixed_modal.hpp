@@ -1,4 +1,4 @@
-// Modal analysis of the mixed formulation about a static state (issue 9 point 4; seed 002 §IV.C:
+// Modal analysis of the mixed formulation about a static state (seed 002 §IV.C:
 // "GEBT calculates the steady state solution first, and the eigenvalue analysis is performed
 // corresponding to this state").
 //

@@ -1,6 +1,6 @@
 // The static element equations of the mixed formulation with four rotation unknowns (the
-// quaternion; issue 8 point 1): seed 002 Eqs. (45)–(47) as in mixed_element.hpp, and Eq. (48) in
-// four components with the right inverse of the material tangent (DESIGN.md §Conventions):
+// quaternion): seed 002 Eqs. (45)–(47) as in mixed_element.hpp, and Eq. (48) in
+// four components with the right inverse of the material tangent (docs/architecture.md):
 //
 //   f_M^± = ±q − (ΔL/2) H_m⁺(q) C^ab κ            (48), four rows per side
 //

@@ -1,4 +1,4 @@
-// Numbering of the mixed statics with four rotation unknowns (the quaternion; issue 8 point 1).
+// Numbering of the mixed statics with four rotation unknowns (the quaternion).
 // The nodes, elements, frames and loads are MixedLayout's (mixed_layout.hpp); only the count and
 // order of unknowns and equations change, so rows and columns get separate offsets.
 //

@@ -1,4 +1,4 @@
-// The mixed GEBT statics with four rotation unknowns (the quaternion; issue 8 point 1). Same
+// The mixed GEBT statics with four rotation unknowns (the quaternion). Same
 // model, frames, loads and equations as MixedStatics<P> (mixed_statics.hpp), with Eq. 48 in four
 // components (mixed_quaternion_element.hpp) and the numbering of mixed_quaternion_layout.hpp:
 // 13 unknowns and 14 rows per element, 7 unknowns and 6 rows per free node, 6 (+ ρ) per support.

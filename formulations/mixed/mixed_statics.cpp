@@ -1,5 +1,5 @@
 // Explicit instantiations of the mixed statics for every three-parameter parameterization: Wiener–
-// Milenković and Rodrigues (seed 002, Q⁻¹ of Eq. 25) and the rotation vector (issue 8: the material
+// Milenković and Rodrigues (seed 002, Q⁻¹ of Eq. 25) and the rotation vector (with the material
 // tangent inverse dexp⁻¹ of rotation_vector.hpp Eq. V4 in place of Q⁻¹ in Eq. 48).
 #include "formulations/mixed/mixed_statics_impl.hpp"
 #include "formulations/mixed/mixed_statics_rest_terms.hpp"

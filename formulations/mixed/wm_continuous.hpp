@@ -1,5 +1,5 @@
 // Wiener–Milenković parameters with GXBeam's continuous rescaling map, as a parameterization of
-// its own for the mixed statics (issue 8 point 3).
+// its own for the mixed statics.
 //
 // The unknown θ is unbounded; the rotation is that of the WM parameters (seed 002 Eq. 14)
 //     c(θ) = s θ,  s = 1 − 8m/|θ|,  m = round(|θ|/8)   (m = 0, c = θ for |θ| ≤ 4, i.e. φ ≤ π),

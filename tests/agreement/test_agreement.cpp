@@ -1,7 +1,7 @@
 // Both finite-element formulations converge to the independent continuum reference
 // (core/continuum: shooting on the Cosserat rod ODEs, rk8pd at 1e-13, ≲ 1e-10 relative) on the
-// 45° bend (benchmarks.md §2) and the precessing helix (§6). Issue 10 point 4, issue 7 point 7;
-// the numbers are tabulated in docs/agreement.md.
+// 45° bend (docs/benchmarks.md §2) and the precessing helix (§6); the numbers are tabulated in
+// docs/agreement.md.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <iomanip>

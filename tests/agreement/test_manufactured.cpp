@@ -1,4 +1,4 @@
-// Manufactured solution (issue 10 point 5; core/oracles/manufactured.hpp): a rod whose rotation
+// Manufactured solution (core/oracles/manufactured.hpp): a rod whose rotation
 // passes 2π about an axis that varies along it, loaded by the distributed force and moment that
 // make it exact. Both formulations are solved on it under h-refinement and their observed orders
 // measured against the exact u(s), R(s) at s = L/4, L/2, 3L/4 (docs/reference-solutions.md

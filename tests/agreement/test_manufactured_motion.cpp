@@ -1,4 +1,4 @@
-// The manufactured motion (issue 10 point 5, issue 12 point 1;
+// The manufactured motion (in space and time;
 // core/oracles/manufactured_motion.hpp): its analytic time derivatives and loads against
 // differences of the prescribed state, and the observed orders in time of every integrator
 // (displacement: Lie-group generalized-α; mixed: trapezoidal, IDA) and in space at a small step.

@@ -1,4 +1,4 @@
-// Case loader: the catalog loads and means what benchmarks.md says, --set overrides are applied
+// Loader: the catalog loads and means what docs/benchmarks.md says, --set overrides are applied
 // and validated like the file, describe_model names what `rotbeam check` must show.
 #include <algorithm>
 #include <boost/test/unit_test.hpp>

@@ -22,7 +22,7 @@ Model two_point_model(const Vec3& a, const Vec3& b) {
     return m;
 }
 
-// The 45° bend of benchmarks.md §2: radius 100, centre (0, 100, 0), tip at 45°.
+// The 45° bend of docs/benchmarks.md §2: radius 100, centre (0, 100, 0), tip at 45°.
 Model bend45() {
     Model m = two_point_model(Vec3::Zero(), Vec3(70.71068, 29.28932, 0.0));
     m.members[0].line.kind = LineKind::arc;

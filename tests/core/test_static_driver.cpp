@@ -170,7 +170,7 @@ BOOST_AUTO_TEST_CASE(a_tiny_load_is_solved_not_accepted_at_the_unloaded_state) {
     }
 }
 
-// Issue 13 item 3: the symbolic factorization is made once per pattern. Refactoring the same
+// The symbolic factorization is made once per pattern. Refactoring the same
 // pattern with new values must not analyse again (and must still solve the new matrix); a new
 // pattern must. For each solver kind.
 BOOST_AUTO_TEST_CASE(the_linear_solver_analyses_a_pattern_once_and_solves_each_new_matrix) {

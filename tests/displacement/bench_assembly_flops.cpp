@@ -1,5 +1,5 @@
-// The assembly against the machine's floating-point peak (issue 13 item 3: "the fraction of a
-// flop/bandwidth estimate the assembly reaches"). Times one residual + Jacobian evaluation —
+// The assembly against the machine's floating-point peak (the fraction of a
+// flop/bandwidth estimate the assembly reaches). Times one residual + Jacobian evaluation —
 // assembly only, no linear solve — of the roll-up's statics at a deformed state (λ = 0.5 reached
 // first): the displacement formulation on one element of order 14 and on 16 linear elements, and
 // the mixed formulation on 16 and 256 elements. Median thread CPU time of many evaluations.

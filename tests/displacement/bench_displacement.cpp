@@ -1,4 +1,4 @@
-// Cost of one Newton iteration of the displacement statics (issue 5 point 8, issue 13 item 4):
+// Cost of one Newton iteration of the displacement statics:
 // residual + Jacobian assembly, sparse LU factorization with the symbolic analysis reused, and
 // the solve (tests/scaling/per_iteration.hpp), on the roll-up at a deformed state (λ = 0.5 reached
 // first), for 16 … 8192 linear elements and 1 … 256 elements of order 8. Prints the median CPU

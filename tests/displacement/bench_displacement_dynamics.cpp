@@ -1,4 +1,4 @@
-// Cost and accuracy of the displacement dynamics (issue 6 point 7): the joined beam (benchmarks.md
+// Cost and accuracy of the displacement dynamics: the joined beam (docs/benchmarks.md
 // §3, cases/joined-beam-dead.yaml) over 0–2 s at the case's Δt = 1 ms, for every
 // parameterization, with the case's mesh (10 linear elements per member) and a p-refined one
 // (10 elements of order 3 per member), and the p-refined one at Δt = 0.25 ms. Accuracy: max over

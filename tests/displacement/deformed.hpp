@@ -1,4 +1,4 @@
-// The strongly deformed state on which the exact Jacobian is checked (issue 4 item 4): a curved
+// The strongly deformed state on which the exact Jacobian is checked: a curved
 // (quarter circle, radius 5, in a tilted plane) and twisted (0 → 1 rad) member, a fully populated
 // coupled 6×6 section, follower tip force and moment, a follower distributed force, a dead
 // distributed moment and gravity with an offset centre of mass, and a state whose tip rotation

@@ -1,4 +1,4 @@
-// Models shared by the displacement-formulation tests (benchmarks.md definitions).
+// Models shared by the displacement-formulation tests (docs/benchmarks.md definitions).
 #pragma once
 
 #include <cmath>
@@ -44,7 +44,7 @@ inline Model cantilever(const Vec3& tip, const Section& section, int elements, i
     return m;
 }
 
-// benchmarks.md §1: L = 12, E = 30e6, 1×1 square (EI = 2.5e6), ν = 0.3, shear factor 5/6;
+// docs/benchmarks.md §1: L = 12, E = 30e6, 1×1 square (EI = 2.5e6), ν = 0.3, shear factor 5/6;
 // tip moment −π EI / L e_y at load factor λ = 1.
 inline constexpr double kRollupL = 12.0;
 inline constexpr double kRollupEI = 2.5e6;
@@ -67,8 +67,8 @@ inline Vec3 rollup_exact_tip(double lambda) {
     return Vec3(rho * std::sin(lambda * kPi) - kRollupL, 0.0, rho * (1.0 - std::cos(lambda * kPi)));
 }
 
-// benchmarks.md §2: 45° arc of radius 100 in the x–y plane, centre (0, 100, 0), E = 1e7, ν = 0,
-// 1×1 square, J = 0.140577, shear factor 5/6, dead tip force P e_z (P = load factor).
+// docs/benchmarks.md §2: 45° arc of radius 100 in the x–y plane, centre (0, 100, 0), E = 1e7,
+// ν = 0, 1×1 square, J = 0.140577, shear factor 5/6, dead tip force P e_z (P = load factor).
 inline Model bend45(int elements, int order) {
     const double E = 1e7, G = 5e6, A = 1.0, I = 1.0 / 12.0;
     const double c = std::sqrt(0.5);

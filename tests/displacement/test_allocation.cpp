@@ -1,5 +1,5 @@
-// Residual + Jacobian evaluation allocates nothing after the first call (issue 5 item 8; STYLE.md
-// "no allocation inside the Newton loop"): a counting global operator new around evaluate().
+// Residual + Jacobian evaluation allocates nothing after the first call (the Newton loop must
+// not allocate): a counting global operator new around evaluate().
 #define BOOST_TEST_MODULE displacement_allocation
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(evaluate_and_retract_allocate_nothing_after_the_first_call)
     BOOST_TEST(allocations_in_repeated_evaluations<param::RotationVector>() == 0);
 }
 
-// The dynamics (issue 6 point 7): step start, residual + iteration matrix, retraction, checkpoints,
+// The dynamics: step start, residual + iteration matrix, retraction, checkpoints,
 // energy, reactions and step end allocate nothing after the first step, damped, at a moving state.
 template <class P>
 long allocations_in_dynamic_steps() {

@@ -1,5 +1,5 @@
-// Time integration of the displacement formulation (issue 6): observed order of the Lie-group
-// generalized-α on the free-vibration case (benchmarks.md §8), energy conservation with ρ∞ = 1
+// Time integration of the displacement formulation: observed order of the Lie-group
+// generalized-α on the free-vibration case (docs/benchmarks.md §8), energy conservation with ρ∞ = 1
 // and no damping (small amplitude: to round-off over 1000 steps; large amplitude: bounded, no
 // drift over 100 periods).
 #include <boost/mpl/list.hpp>

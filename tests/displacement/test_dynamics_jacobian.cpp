@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_matrix_matches_central_differences_at_a_
                       << c.inertial_terms << ", damping terms " << c.damping_terms << "\n";
             BOOST_TEST(worst < 1e-7);
             BOOST_TEST(c.inertial_terms > 0);
-            // Damping is assembled only when a section has damping (DESIGN.md quality bars).
+            // Damping is assembled only when a section has damping.
             BOOST_TEST((c.damping_terms > 0) == damping);
         }
     }

@@ -1,4 +1,4 @@
-// Modal analysis of the displacement formulation (issue 6 point 3): a straight cantilever
+// Modal analysis of the displacement formulation: a straight cantilever
 // converges to the Timoshenko clamped–free frequencies (core/oracles/timoshenko.hpp, shear and
 // rotary inertia included), for every mass rule, and a follower load makes K non-symmetric so the
 // QZ path is taken. The joined beam's Table III (ANSYS column, 10 linear elements, one-point

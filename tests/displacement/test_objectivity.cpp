@@ -1,11 +1,11 @@
-// Objectivity of the displacement formulation's rotation interpolation (issue 5 point 5, DESIGN.md
-// §Quality bars). A rigid rotation Q superposed on a deformed, unloaded configuration
+// Objectivity of the displacement formulation's rotation interpolation (docs/displacement-
+// formulation.md). A rigid rotation Q superposed on a deformed, unloaded configuration
 // (x → Q x, R_j → Q R_j) must rotate the internal-force residual with it, r → Q r, node by node:
 // the material strains (RR^r)ᵀε, (RR^r)ᵀκ and hence the material section forces are unchanged.
 // `relative` interpolation is objective (round-off); `direct` interpolates parameters that Q
 // changes non-linearly, so it is not — the test quantifies the violation against the rotation
 // span inside an element. The state is a precessing twist–bend field on the anisotropic section of
-// the precessing helix (benchmarks.md §6), so rotations at different sections do not commute.
+// the precessing helix (docs/benchmarks.md §6), so rotations at different sections do not commute.
 #include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -68,7 +68,7 @@ double objectivity_violation(const std::string& interpolation, double span) {
     return violation_at_current_state(problem);
 }
 
-// The solved precessing helix (benchmarks.md §6: dead tip moment, anisotropic section, κL = 2π in
+// Solved precessing helix (docs/benchmarks.md §6: dead tip moment, anisotropic section, κL = 2π in
 // 80 steps — rotations that do not commute), 4 elements of order 4; its nodal states are copied
 // into the same mesh without supports or loads, so the residual is the internal force alone.
 template <class P>
@@ -153,7 +153,7 @@ BOOST_AUTO_TEST_CASE(direct_quaternion_interpolation_is_objective) {
     }
 }
 
-// The same check on the solved precessing helix at κL = 2π (issue 5 point 5: rotations that do
+// The same check on the solved precessing helix at κL = 2π (rotations that do
 // not commute, from an equilibrium rather than a constructed field). At an equilibrium the
 // denominator max|r| is the balanced tip moment (10), while each element's contribution carries
 // the round-off of its axial force, ε·EA·L ≈ 2e-16·1e6·10 = 2e-9: the round-off floor is ~2e-10

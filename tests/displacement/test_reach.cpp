@@ -1,5 +1,5 @@
-// Reach (issue 5 point 6): the roll-up to λ = 4 (two full turns) with the `relative`
-// interpolation and nodal rescaling, every parameterization; exact oracle (benchmarks.md §1).
+// Reach: the roll-up to λ = 4 (two full turns) with the `relative`
+// interpolation and nodal rescaling, every parameterization; exact oracle (docs/benchmarks.md §1).
 #include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cstdio>
@@ -41,8 +41,8 @@ BOOST_AUTO_TEST_SUITE(displacement_reach)
 
 // Rescaling lets WM (singular at 2π) and the rotation vector (2π) pass two full turns; the
 // quaternion has no singularity. 16 × p4 has a discretization error 2.2e-7 of L at λ = 4
-// (measured with rotbeam run on cases/cantilever-moment-4.yaml), so the 1e-6 bound of issue 5
-// point 6 holds with a factor 4 margin and fails on any wrong branch (errors of order L).
+// (measured with rotbeam run on cases/cantilever-moment-4.yaml), so the 1e-6 bound this test
+// asserts holds with a factor 4 margin and fails on any wrong branch (errors of order L).
 using Rescalable =
     boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::RotationVector>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(relative_rescaled_rollup_reaches_two_full_turns_within_1e6, P,

@@ -1,4 +1,4 @@
-// Reach on the helices (issue 5 point 6): the catalog cases cases/helix.yaml (benchmarks.md §5,
+// Reach on the helices: the catalog cases cases/helix.yaml (docs/benchmarks.md §5,
 // exact oracle) and cases/helix-precessing.yaml (§6, continuum reference) followed to κL = 4π
 // along the catalog's load path with the runner's solver settings, every parameterization ×
 // interpolation. Each combination must either reach 4π with every reported step within 1e-6 L
@@ -28,7 +28,7 @@ namespace {
 using AllTypes = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
                                   param::RotationVector>;
 
-constexpr double kLength = 10.0;  // both helices: L = 10 (benchmarks.md §5, §6)
+constexpr double kLength = 10.0;  // both helices: L = 10 (docs/benchmarks.md §5, §6)
 
 Model catalog_case(const std::string& name, const std::string& interpolation) {
     Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/" + name + ".yaml");
@@ -80,7 +80,7 @@ void check(const std::string& case_name, const std::string& interpolation, const
                name << " " << interpolation << " " << case_name << ": " << r.outcome.message);
     BOOST_TEST(r.worst <= 1e-6, name << " " << interpolation << " " << case_name);
     // A stop of WM or the rotation vector with `direct` interpolation near 2π must say that the
-    // rescale it needed was refused (issue 5 point 3), not only that Newton failed.
+    // rescale it needed was refused, not only that Newton failed.
     if (!expected && name != "rodrigues") {
         BOOST_TEST(r.outcome.message.find("would split the chart") != std::string::npos,
                    r.outcome.message);

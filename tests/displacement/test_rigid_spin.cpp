@@ -1,6 +1,6 @@
 // Seed 000 Eq. 10 damps the spatial strain rates ε˙ = u˙′ − ω̃(R x⁰′), κ˙ = ω̃κ + ω′. Under a
 // rigid spin Ω superposed on a pre-strained state they are Ω × ε and Ω × κ, not zero, although
-// the material strains do not change (benchmarks.md Errata: report it rather than hide it).
+// the material strains do not change (docs/benchmarks.md, Errata: report it rather than hide it).
 // This test measures it on a cantilever pre-strained by a static tip force: the damping law's
 // dissipation ∫ėᵀDė, the spurious damping residual, and its power vᵀr_D, which the weak form
 // makes vanish: vᵀr_D = ∫ (u˙′ − ω × x′)·f + ω′·m = 0 for any rigid velocity field (summed over

@@ -1,4 +1,4 @@
-// Roll-up (benchmarks.md §1; seed 002 Example 1): tip displacement against the exact solution.
+// Roll-up (docs/benchmarks.md §1; seed 002 Example 1): tip displacement against the exact solution.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdio>
@@ -51,7 +51,7 @@ BOOST_AUTO_TEST_SUITE(displacement_rollup)
 
 const std::vector<double> kLambdas = {0.4, 0.8, 1.0, 1.2, 1.6, 2.0};
 
-// Issue 4 item 7: ‖Δu‖/L ≤ 1e-9 for λ = 0.4 … 2 (2 = the closed circle). Direct interpolation
+// Target: ‖Δu‖/L ≤ 1e-9 for λ = 0.4 … 2 (2 = the closed circle). Direct interpolation
 // aligns each element to its first node, so an element must hold less than π: 4 elements of
 // order 10 hold π/2 each at λ = 2.
 BOOST_AUTO_TEST_CASE(rollup_tip_error_below_1e9_up_to_full_circle) {
@@ -100,7 +100,7 @@ BOOST_AUTO_TEST_SUITE_END()
 
 BOOST_AUTO_TEST_SUITE(displacement_bend45)
 
-// Tip displacement of the 45° bend (benchmarks.md §2) at P = 300, 450, 600.
+// Tip displacement of the 45° bend (docs/benchmarks.md §2) at P = 300, 450, 600.
 std::vector<Vec3> bend_tip(int elements, int order) {
     Statics problem(test::bend45(elements, order));
     std::vector<Vec3> tips;
@@ -128,7 +128,7 @@ BOOST_AUTO_TEST_CASE(bend45_tip_converges_under_refinement) {
                     b[k][0], b[k][1], b[k][2]);
     }
     // Published (seed 002 Table II, 16 elements, other section constants): (−23.5, −13.4, 53.4);
-    // within the ~1–2 % that the section constants move it (benchmarks.md §2).
+    // within the ~1–2 % that the section constants move it (docs/benchmarks.md §2).
     BOOST_TEST(std::abs(b[2][2] - 53.4) < 0.02 * 53.4);
     BOOST_TEST(std::abs(b[2][0] + 23.5) < 0.02 * 23.5);
     BOOST_TEST(std::abs(b[2][1] + 13.4) < 0.03 * 13.4);

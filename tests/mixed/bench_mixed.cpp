@@ -1,4 +1,4 @@
-// Cost of one Newton iteration of the mixed statics (issue 8 point 6, issue 13 item 4): residual
+// Cost of one Newton iteration of the mixed statics: residual
 // + Jacobian assembly, sparse LU factorization with the symbolic analysis reused (the static
 // driver's SparseLUSolver), and the solve (tests/scaling/per_iteration.hpp), on the roll-up at a
 // deformed state (λ = 0.5 reached first), for 16 … 8192 elements and every parameterization and

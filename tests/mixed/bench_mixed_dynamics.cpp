@@ -1,10 +1,10 @@
-// Cost against accuracy of the mixed dynamics' two integrators on the joined beam (benchmarks.md
+// Cost vs accuracy of the mixed dynamics' two integrators on the joined beam (docs/benchmarks.md
 // §3: dead joint force 1e5 sin(20 t) N from rest, 10 WM elements per member, 486 unknowns) over
 // 0–T (T = 0.5 s by default, argv[1]): IDA (BDF ≤ 2) at several tolerances and the fixed-step
 // trapezoidal scheme at several Δt. Accuracy: the joint displacement at every 0.01 s against a
 // self-converged reference (Richardson extrapolation of the fixed-step runs at Δt = 1e-3/16 and
 // 1e-3/32, order 2), as max ‖Δu‖ over the outputs divided by the largest ‖u‖. Wall time per run.
-// A benchmark, not a test (issue 9 point 7): run it on an idle machine.
+// A benchmark, not a test: run it on an idle machine.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// A strongly deformed, moving test structure for the mixed dynamics (issue 9): the two-member
+// A strongly deformed, moving test structure for the mixed dynamics: the two-member
 // structure of the statics' Jacobian tests with 6×6 section masses (offsets, full inertia) and
 // time functions on its follower loads.
 #pragma once

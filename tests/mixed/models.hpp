@@ -1,5 +1,5 @@
-// Models of the benchmarks (benchmarks.md §1, §2) and of a strongly deformed test structure, built
-// in code for the mixed-formulation tests.
+// Models of the benchmarks (docs/benchmarks.md §1, §2) and of a strongly deformed test structure,
+// built in code for the mixed-formulation tests.
 #pragma once
 
 #include <cmath>
@@ -49,7 +49,7 @@ inline Model rollup_model(int elements) {
     return m;
 }
 
-// Exact tip displacement of the roll-up at λ (benchmarks.md §1).
+// Exact tip displacement of the roll-up at λ (docs/benchmarks.md §1).
 inline Vec3 rollup_exact_tip(double lambda) {
     const double rho = kRollupLength / (lambda * kPi);
     return Vec3(rho * std::sin(lambda * kPi) - kRollupLength, 0.0,

@@ -1,5 +1,5 @@
 // Accuracy of the mixed statics under mesh refinement: the roll-up against its exact solution
-// (benchmarks.md §1, observed order 2), the 45° bend (§2) converging to one answer, and the
+// (docs/benchmarks.md §1, observed order 2), the 45° bend (§2) converging to one answer, and the
 // largest load λ*(N) the N-element equations can carry (§1: ≈ λc (1 − 1.1/N)).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -136,8 +136,8 @@ void check_lambda_star(double lambda_c, double lambda_16, double k) {
         // basin shrinks, so the last accepted load may sit a few steps short: 1e-4 λc.
         BOOST_TEST(measured <= reduced + 1e-9);
         BOOST_TEST(reduced - measured < 1e-4 * lambda_c);
-        // The 1.1/N law is a fit (benchmarks.md §1): the coefficient N(1 − λ*/λc) is 1.01 at
-        // N = 16, 1.07 at 32, 1.10 at 64; λ*(16) is the value benchmarks.md quotes.
+        // The 1.1/N law is a fit (docs/benchmarks.md §1): the coefficient N(1 − λ*/λc) is 1.01 at
+        // N = 16, 1.07 at 32, 1.10 at 64; λ*(16) is the value docs/benchmarks.md quotes.
         BOOST_TEST(std::abs(n * (1.0 - measured / lambda_c) - 1.1) < 0.1);
         if (n == 16) BOOST_TEST(std::abs(measured - lambda_16) < 0.5e-3);
     }
@@ -167,7 +167,7 @@ BOOST_AUTO_TEST_CASE(bend_45_degree_tip_converges_under_refinement) {
     }
     // Differences between successive meshes fall by ≈ 4 (second order). The published tip
     // (−23.5, −13.4, 53.4) is rounded to 0.1 and computed with section constants the paper does
-    // not state; benchmarks.md §2: the choice moves the in-plane components by about 1 %. With
+    // not state; docs/benchmarks.md §2: the choice moves the in-plane components by about 1 %. With
     // GXBeam's constants (shear factor 1, J = 1/6) the converged tip is printed for comparison;
     // the gate is 2.5 % of |u| per component (u_y: 0.33 of 13.4 with this case's constants).
     for (std::size_t k = 2; k < tips.size(); ++k) {

@@ -124,7 +124,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(evaluation_allocates_nothing_after_first_call, P, 
     BOOST_TEST(dyn.counters().inertial_terms == 3L * nb.elements);
 }
 
-// The counters say which terms a scene needs (issue 12 item 5): a follower point load's stiffness
+// The counters say which terms a scene needs: a follower point load's stiffness
 // block is counted at every Jacobian, a dead one's never (they used to count 0 for both).
 BOOST_AUTO_TEST_CASE_TEMPLATE(follower_point_load_stiffness_is_counted, P, Parameterizations) {
     Model m = test::dynamic_test_model();

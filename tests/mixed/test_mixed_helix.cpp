@@ -1,6 +1,6 @@
-// Reach of the mixed statics on the helices of benchmarks.md §5 (isotropic, exact oracle) and §6
+// Mixed statics' reach on the helices of docs/benchmarks.md §5 (isotropic, exact oracle) and §6
 // (precessing: anisotropic section, the rotation axis varies along the beam; continuum
-// reference), κL to 4π at 256 elements, for every combination (issue 8 point 5).
+// reference), κL to 4π at 256 elements, for every combination.
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -124,8 +124,8 @@ BOOST_AUTO_TEST_CASE(helix_reach_of_every_combination_at_256_elements) {
 // but at 256 elements the error is 5.1e-4 (rotation vector), 5.4e-4 (quaternion), 5.5e-4 (WM),
 // 5.8e-4 (continuous WM): this is the second-order discretization error of the mixed element on
 // this case, not a wrong branch — halving the mesh multiplies it by 4 (asserted below for the
-// rotation vector; the same order 2.00 is measured in tests/agreement at κL = π). Issue 8's "1e-4
-// at 256 elements" therefore cannot hold here for any parameterization; ~560 elements would be
+// rotation vector; the same order 2.00 is measured in tests/agreement at κL = π). A 1e-4 target
+// at 256 elements therefore cannot hold here for any parameterization; ~560 elements would be
 // needed. Rodrigues stops truthfully before its singular angle π of the element rotation.
 BOOST_AUTO_TEST_CASE(precessing_helix_reach_of_every_combination_at_256_elements) {
     const std::vector<Vec3> ref = reference_tips(true);

@@ -1,4 +1,4 @@
-// Modal analysis of the mixed formulation (issue 9 point 4): the shift-invert Arnoldi iteration
+// Modal analysis of the mixed formulation: the shift-invert Arnoldi iteration
 // against a dense eigen-decomposition, independence of the parameterization at the undeformed
 // state, and the mesh convergence of a slender cantilever's bending frequencies to beam theory.
 #include <boost/test/unit_test.hpp>
@@ -24,7 +24,7 @@ using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues,
 
 namespace {
 
-// A rectangular isotropic section with its diagonal mass (benchmarks.md §3, §8).
+// A rectangular isotropic section with its diagonal mass (docs/benchmarks.md §3, §8).
 Section isotropic(double E, double nu, double b, double h, double J, double rho) {
     const double G = E / (2.0 * (1.0 + nu)), A = b * h, k = 5.0 / 6.0;
     const double I2 = b * h * h * h / 12.0, I3 = h * b * b * b / 12.0;
@@ -36,7 +36,7 @@ Section isotropic(double E, double nu, double b, double h, double J, double rho)
     return s;
 }
 
-// benchmarks.md §3: the joined beam, N elements per member.
+// docs/benchmarks.md §3: the joined beam, N elements per member.
 Model joined_beam(int n) {
     Model m;
     m.points = {{"root1", Vec3(0, -0.5, 0)}, {"root2", Vec3(0, 0.5, 0)}, {"joint", Vec3(1, 0, 0)}};
@@ -118,7 +118,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(arnoldi_matches_the_dense_decomposition_on_the_joi
     }
 }
 
-// A straight cantilever (benchmarks.md §8: L = 1, h = 0.01, E = 2.1e11, ν = 0.3, ρ = 7850): the
+// Straight cantilever (docs/benchmarks.md §8: L = 1, h = 0.01, E = 2.1e11, ν = 0.3, ρ = 7850): the
 // first two bending frequencies converge at order 2 to the Euler–Bernoulli values
 // (β L)² √(EI/ρA L⁴)/2π, β₁L = 1.87510407, β₂L = 4.69409113. Shear and rotary inertia (Timoshenko)
 // lower them by about ½(β r)²(1 + E/κG) ≈ 6e-5 (mode 1) and 4e-4 (mode 2), r = h/√12 the radius

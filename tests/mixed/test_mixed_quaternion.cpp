@@ -1,5 +1,5 @@
 // The mixed statics with four rotation unknowns (the quaternion; formulations/mixed/
-// mixed_quaternion_*.hpp, issue 8 point 1): the unknown count, exactness of the reference
+// mixed_quaternion_*.hpp): the unknown count, exactness of the reference
 // configuration, the analytic Jacobian against central differences at a strongly deformed state
 // off the unit sphere (one support, and two supports with the scale ρ), no heap allocation after
 // the first evaluation, and the norm conservation of the discrete Eq. 48.
@@ -54,7 +54,7 @@ VecX deformed_state(const Statics& problem) {
     return x;
 }
 
-// The joined beam of benchmarks.md §3 as a static case: two members from clamped roots
+// The joined beam of docs/benchmarks.md §3 as a static case: two members from clamped roots
 // (0, ∓0.5, 0) to a common joint (1, 0, 0) m, the 0.1 × 0.05 m aluminium section, a follower force
 // 1e5 N along e3 at the joint (a large deflection: 0.75 m at load factor 4).
 Model joined_beam_model(int elements) {

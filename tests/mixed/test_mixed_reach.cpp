@@ -1,5 +1,5 @@
-// Reach of the mixed statics on the roll-up of benchmarks.md §1 to λ = 4 (tip rotation 4π) at 256
-// elements, for every parameterization and option (issue 8): the rotation vector (dexp⁻¹ in place
+// Mixed statics' reach on the roll-up of docs/benchmarks.md §1 to λ = 4 (tip rotation 4π) at 256
+// elements, for every parameterization and option: the rotation vector (dexp⁻¹ in place
 // of Q⁻¹ in Eq. 48) with its second-order convergence, plain and continuous WM, Rodrigues and the
 // quaternion (four-component Eq. 48); where and why a continuation stops.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Seed 002 Example 1, Table I (benchmarks.md §1): the 16-element roll-up with Wiener–Milenković
+// Seed 002 Example 1, Table I (docs/benchmarks.md §1): 16-element roll-up with Wiener–Milenković
 // and Rodrigues parameters against the paper's GEBT columns, and the truthful stop of each
 // parameterization past the load the 16-element equations can carry (λ* ≈ 0.937 Rodrigues,
 // ≈ 1.874 WM).
@@ -22,7 +22,7 @@ struct TableRow {
     int iterations;
 };
 
-// Seed 002 Table I, GEBT columns (benchmarks.md §1); the gated rows only.
+// Seed 002 Table I, GEBT columns (docs/benchmarks.md §1); the gated rows only.
 const std::vector<TableRow> kWienerMilenkovic = {{0.4, -2.9161, 6.6004, 9},
                                                  {0.8, -9.1946, 8.6455, 14},
                                                  {1.0, -12.0062, 7.6466, 14},

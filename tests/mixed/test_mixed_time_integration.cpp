@@ -1,6 +1,6 @@
-// Time integration of the mixed dynamics (issue 9 points 2–3): consistent initial conditions from
+// Time integration of the mixed dynamics: consistent initial conditions from
 // a non-equilibrium start by IDACalcIC and by the shared Newton, the fixed-step (trapezoidal)
-// scheme's observed order on the free-vibration cantilever (benchmarks.md §8), and IDA against it.
+// scheme's order observed on the free-vibration cantilever (docs/benchmarks.md §8), IDA against it.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <iomanip>
@@ -25,7 +25,7 @@ using ThreeParameterTypes =
 
 namespace {
 
-// benchmarks.md §8 (cases/free-vibration.yaml): L = 1 m, h = 0.01 m, E = 2.1e11, ν = 0.3,
+// docs/benchmarks.md §8 (cases/free-vibration.yaml): L = 1 m, h = 0.01 m, E = 2.1e11, ν = 0.3,
 // ρ = 7850, tip force 1 N released at t = 0 (table 1 → 0 within 1e-12 s).
 Model free_vibration(int elements) {
     Model m;
@@ -78,7 +78,7 @@ VecX first_mode_state(form::MixedDynamics<P>& dyn, double amplitude) {
 }
 
 // Tip displacement u_z at ten output times to `end` of a fixed-step run from rest, either released
-// from the static tip-load deflection (benchmarks.md §8) or from the first mode's shape.
+// from the static tip-load deflection (docs/benchmarks.md §8) or from the first mode's shape.
 std::vector<double> trapezoidal_tip_history(double dt, double end, bool from_mode) {
     const Model model = free_vibration(8);
     form::MixedDynamics<param::WienerMilenkovic> dyn(model, end, 1e-6 * dt);
@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(fixed_step_scheme_converges_at_order_two_on_free_vibration)
     }
 }
 
-// The same cantilever released from its static tip-load deflection (benchmarks.md §8 as written):
+// Same cantilever released from its static tip-load deflection (docs/benchmarks.md §8 as written):
 // the release excites every mode, and the non-dissipative trapezoidal rule carries the
 // unresolved ones (ωΔt ≳ 1: the higher bending modes, the shear modes of amplitude
 // PL/κGA = 1.5e-7 m) undamped with a wrong phase. Their contribution does not converge until they
@@ -317,7 +317,7 @@ BOOST_AUTO_TEST_CASE(ida_reports_a_fatal_callback_error_as_a_status) {
     BOOST_TEST(out.last_time <= 0.6);
 }
 
-// Energy: the undamped cantilever (benchmarks.md §8 section, no load after the start) given a
+// Energy: the undamped cantilever (docs/benchmarks.md §8 section, no load after the start) given a
 // uniform initial velocity of 5 m/s across its axis (tip motion ≈ 0.1 m, rotations ≈ 0.15 rad:
 // nonlinear) keeps its total energy. The trapezoidal rule conserves quadratic invariants of
 // linear systems; for this nonlinear one the energy error is a discretization error that vanishes

@@ -1,4 +1,4 @@
-// Micro-benchmark of the parameterizations (issue 3, point 6): ns per call of R(p), compose,
+// Micro-benchmark of the parameterizations: ns per call of R(p), compose,
 // H_m(p) and ∂(H_m v)/∂p, median of repeats, and the ratio to the quaternion. Not a test: run
 // `bench_rotations [repeats]` on a quiet machine and read the table (docs/parameterizations.md).
 #include <algorithm>

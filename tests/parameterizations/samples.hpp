@@ -1,4 +1,4 @@
-// The shared hard sample set of issue 3 (point 3) and the helpers the parameterization tests
+// The shared hard sample set and the helpers the parameterization tests
 // share: which samples each parameterization's chart contains, distances to its singular set
 // (the tolerances grow like ε/δ), and fixed-size central differences.
 #pragma once

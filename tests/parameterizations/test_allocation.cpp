@@ -1,4 +1,4 @@
-// No heap allocation in R(p), compose, H(p) and ∂(H v)/∂p (issue 3, point 6): a counting
+// No heap allocation in R(p), compose, H(p) and ∂(H v)/∂p: a counting
 // replacement of the global operator new sees every allocation of the executable.
 #include <atomic>
 #include <boost/test/unit_test.hpp>

@@ -1,4 +1,4 @@
-// Algebraic identities of every parameterization on the shared hard sample set (issue 3, point 3).
+// Algebraic identities of every parameterization on the shared hard sample set.
 #include <boost/test/unit_test.hpp>
 
 #include "samples.hpp"
@@ -208,9 +208,9 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_matches_seed_002_as_printed) {
                8.0 * kEps * Q_inverse.norm());
 }
 
-BOOST_AUTO_TEST_CASE(rodrigues_matches_the_gebt_formulas_of_design_md) {
+BOOST_AUTO_TEST_CASE(rodrigues_matches_the_gebt_formulas) {
     // Rᵀ = [(1 − pᵀp/4) I − p̃ + p pᵀ/2]/(1 + pᵀp/4), Q = (I − p̃/2)/(1 + pᵀp/4),
-    // Q⁻¹ = I + p̃/2 + p pᵀ/4 (DESIGN.md §Conventions).
+    // Q⁻¹ = I + p̃/2 + p pᵀ/4 (docs/parameterizations.md).
     using Rod = param::Rodrigues;
     const Vec3 p = Rod::from_rotation_vector(2.2 * generic_axis());
     const double s = p.squaredNorm();
@@ -225,7 +225,7 @@ BOOST_AUTO_TEST_CASE(rodrigues_matches_the_gebt_formulas_of_design_md) {
 }
 
 BOOST_AUTO_TEST_CASE(wiener_milenkovic_rescale_uses_the_complementary_parameters) {
-    // Past π: c' = 4 tan((φ − 2π)/4) n (DESIGN.md), the same R.
+    // Past π: c' = 4 tan((φ − 2π)/4) n (docs/parameterizations.md), the same R.
     using WM = param::WienerMilenkovic;
     const double phi = 1.5 * kPi;
     const Vec3 c = WM::from_rotation_vector(phi * generic_axis());

@@ -1,4 +1,4 @@
-// Shape and content of the rotation study (issue 3, point 5).
+// Shape and content of the rotation study.
 #include <boost/test/unit_test.hpp>
 
 #include "parameterizations/rotation_study.hpp"

@@ -1,4 +1,4 @@
-// Defined behaviour at the singular set (issue 3, point 4): every function refuses non-finite
+// Defined behaviour at the singular set: every function refuses non-finite
 // input and inputs at or beyond the singular set with a SingularityError naming the
 // parameterization, the function and the angle; nothing returns NaN or Inf silently.
 #include <boost/test/unit_test.hpp>

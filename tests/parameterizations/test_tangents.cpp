@@ -1,4 +1,4 @@
-// Tangent operators of every parameterization on the shared hard sample set (issue 3, point 3):
+// Tangent operators of every parameterization on the shared hard sample set:
 // H H⁺ = I, both tangents against finite differences of R, the inverses against finite
 // differences along H⁺ w, the contracted derivatives against finite differences of H v and H⁺ w,
 // and the order check (halving the step cuts the linearization remainder ~4×).

@@ -1,4 +1,4 @@
-// Models of the continuum tests, built in code (benchmarks.md §1, §2, §5, §6 and the elastica).
+// The continuum tests' models, built in code (docs/benchmarks.md §1, §2, §5, §6 and the elastica).
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // The continuum solver against the exact solutions: roll-up, helix and the inextensible elastica
-// (issue 10 point 4: ≤ 1e-9 relative).
+// (to ≤ 1e-9 relative).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -14,7 +14,7 @@ using namespace rotbeam;
 namespace {
 
 // ODE tolerance 1e-13 on O(1) scaled states and a 1e-11 free-end residual give errors of a few
-// 1e-12 L here; 1e-9 is the accuracy the reference promises (issue 10), not a loosened bound.
+// 1e-12 L here; 1e-9 is the accuracy the reference promises, not a loosened bound.
 constexpr double kExact = 1e-9;
 
 }  // namespace
@@ -22,7 +22,7 @@ constexpr double kExact = 1e-9;
 BOOST_AUTO_TEST_SUITE(continuum_exact)
 
 BOOST_AUTO_TEST_CASE(rollup_matches_the_exact_circle_up_to_two_full_turns) {
-    // benchmarks.md §1: L = 12, EI = 2.5e6, M = −λ π EI/L e_y; λ to 4 (two turns).
+    // docs/benchmarks.md §1: L = 12, EI = 2.5e6, M = −λ π EI/L e_y; λ to 4 (two turns).
     const double L = 12.0, EI = 2.5e6, G = 30e6 / 2.6;
     const Mat6 C = test::diagonal_compliance(
         (Vec6() << 30e6, 5.0 / 6.0 * G, 5.0 / 6.0 * G, G * 0.1406, EI, EI).finished());
@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(rollup_matches_the_exact_circle_up_to_two_full_turns) {
 }
 
 BOOST_AUTO_TEST_CASE(helix_matches_the_exact_solution_to_kappa_L_4pi_dead_and_follower) {
-    // benchmarks.md §5: L = 10, EI₂ = EI₃ = GJ = 100, EA = GA = 1e4·EI/L², M = κ EI n.
+    // docs/benchmarks.md §5: L = 10, EI₂ = EI₃ = GJ = 100, EA = GA = 1e4·EI/L², M = κ EI n.
     const double L = 10.0, EI = 100.0;
     const Vec3 n(0.6, 0.0, 0.8);
     const Mat6 C = test::diagonal_compliance((Vec6() << 1e4, 1e4, 1e4, EI, EI, EI).finished());

@@ -61,7 +61,7 @@ BOOST_AUTO_TEST_CASE(arc_geometry_with_twist_satisfies_its_frame_equations) {
 }
 
 BOOST_AUTO_TEST_CASE(small_tip_force_gives_the_timoshenko_deflection) {
-    // benchmarks.md §7 section, L/h = 5 (shear matters: ~8 % of δ). At PL²/EI = 1e-7 the
+    // docs/benchmarks.md §7 section, L/h = 5 (shear matters: ~8 % of δ). At PL²/EI = 1e-7 the
     // geometric nonlinearity changes δ by O((PL²/EI)²) = 1e-14 relative.
     const double E = 2.1e11, G = E / 2.6, h = 0.2, L = 1.0, A = h * h, I = h * h * h * h / 12;
     const double kGA = 5.0 / 6.0 * G * A;
@@ -77,7 +77,7 @@ BOOST_AUTO_TEST_CASE(small_tip_force_gives_the_timoshenko_deflection) {
 }
 
 BOOST_AUTO_TEST_CASE(small_loads_on_the_fully_coupled_mh104_section_match_linear_theory) {
-    // The MH-104 blade stiffness of benchmarks.md §4 (all 36 entries non-zero), L = 60 m, loads
+    // MH-104 blade stiffness of docs/benchmarks.md §4 (all 36 entries non-zero), L = 60 m, loads
     // with PL²/EI ~ 5e-7: the deviation from the linear Cosserat solution is the geometric
     // nonlinearity, first order in the load — it halves when the loads are halved — and is
     // below 1e-6 relative.

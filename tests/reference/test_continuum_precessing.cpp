@@ -1,4 +1,4 @@
-// The precessing helix (benchmarks.md §6): no closed form, so the checks are path properties —
+// The precessing helix (docs/benchmarks.md §6): no closed form, so the checks are path properties —
 // continuity along 160 load steps, independence of the step size, and dead ≠ follower.
 #include <boost/test/unit_test.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The continuum solver on the cases without a closed form: the 45° bend (benchmarks.md §2,
+// The continuum solver on the cases without a closed form: the 45° bend (docs/benchmarks.md §2,
 // published values) and the precessing helix (§6, path continuity, dead ≠ follower); and twist
 // and curvature of the reference line checked through exact solutions that must not see them.
 #include <boost/test/unit_test.hpp>
@@ -13,7 +13,7 @@ using namespace rotbeam;
 
 namespace {
 
-// The Bathe–Bolourchi 45° bend; default section constants of benchmarks.md §2 (J of the square
+// The Bathe–Bolourchi 45° bend; default section constants of docs/benchmarks.md §2 (J of the square
 // 0.140577). J = 1/6 (the polar moment, GJ = EI) is the other choice found in the literature.
 Model bend_45(double J = 0.140577) {
     const double E = 1e7, G = 5e6, A = 1.0, I = 1.0 / 12.0, k = 5.0 / 6.0;
@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(bend_45_with_default_constants_agrees_with_table_II_within_
 }
 
 BOOST_AUTO_TEST_CASE(bend_45_with_gj_equal_ei_agrees_with_simo_vu_quoc_within_half_a_percent) {
-    // Simo & Vu-Quoc 1986 (8 elements) tip positions at P = 300, 450, 600 (benchmarks.md §2).
+    // Simo & Vu-Quoc 1986 (8 elements) tip positions at P = 300, 450, 600 (docs/benchmarks.md §2).
     // With the default J = 0.140577 the distance is 0.55 in (1.3 % of |u|) at P = 300; with
     // J = 1/6 (GJ = EI, as in the GJ = EI sources) it is 0.4 %: the torsion constant, not the
     // shear factor, is the section constant the tip is sensitive to.

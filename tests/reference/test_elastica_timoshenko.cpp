@@ -100,7 +100,7 @@ BOOST_AUTO_TEST_CASE(frequencies_reduce_to_euler_bernoulli_without_shear_and_rot
 }
 
 BOOST_AUTO_TEST_CASE(shear_and_rotary_inertia_lower_the_frequencies_of_a_deep_beam) {
-    // Square h × h steel-like section, L/h = 5, κ = 5/6, ν = 0.3 (benchmarks.md §7 section).
+    // Square h × h steel-like section, L/h = 5, κ = 5/6, ν = 0.3 (docs/benchmarks.md §7 section).
     const double E = 2.1e11, G = E / 2.6, h = 0.2, L = 1.0, rho = 7850.0;
     const double A = h * h, I = h * h * h * h / 12.0;
     const TimoshenkoBeam full{L, E * I, 5.0 / 6.0 * G * A, rho * A, rho * I};

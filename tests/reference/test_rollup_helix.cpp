@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(full_turns_end_on_the_axis_projection) {
 }
 
 BOOST_AUTO_TEST_CASE(axis_normal_to_the_beam_reduces_to_the_rollup) {
-    // n = −e_y is the roll-up with κ = λπ/L (benchmarks.md §1 ⊂ §5).
+    // n = −e_y is the roll-up with κ = λπ/L (docs/benchmarks.md §1 ⊂ §5).
     const double L = 12.0, lambda = 1.37;
     const HelixState h = helix_state(lambda * kPi / L, -Vec3::UnitY(), L);
     const RollupState r = rollup_tip(L, lambda);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/compare-bench.py (issue 13 item 5): a history file against itself has no flag (exit 0);
+# scripts/compare-bench.py: a history file against itself has no flag (exit 0);
 # a lost target, an error grown on the same discretization and a doubled time are each flagged
 # (exit 1); another machine's file is refused (exit 2, one line).
 src="$1"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `rotbeam study joined-beam-agreement --quick` (issue 9 item 5): the joined beam under the dead
+# `rotbeam study joined-beam-agreement --quick`: the joined beam under the dead
 # and the follower joint force, 0–0.2 s; the mixed formulation on 10, 20, 40, 80 elements per
 # member (IDA at 1e-7) against the displacement formulation with order-4 elements
 # (time-extrapolated), an independent reference. Asserts, for each load, what the full study's

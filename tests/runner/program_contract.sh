@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The rotbeam program's contract (DESIGN.md §Program and results contract), checked on the built
+# The rotbeam program's contract (docs/architecture.md, The program and its results), checked on the built
 # executable. Usage: program_contract.sh ROTBEAM SOURCE_DIR
 set -u
 rotbeam=$1
@@ -200,7 +200,7 @@ assert abs(tip["rotation_angle"] - 64 * math.atan(math.pi / 16)) < 1e-9, tip["ro
 assert abs(tip["rotation_angle"] - (4 * math.pi - (4 * math.pi) ** 3 / (48 * 256))) < 1e-2
 PY
 
-# A dynamic run (displacement, issue 6) writes `time` steps and a CSV history next to its JSON
+# A dynamic run (displacement formulation) writes `time` steps and a CSV history next to its JSON
 # with the points, the support reactions and the energies; the supports pull down while the
 # joint force pushes up (the rest of F_z is still inertia at t = 10 ms, a third of the 35 Hz
 # first period).

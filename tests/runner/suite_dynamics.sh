@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `rotbeam suite` plans the dynamic and modal catalog cases (issue 11): every formulation ×
+# `rotbeam suite` plans the dynamic and modal catalog cases: every formulation ×
 # parameterization of the joined beam's dead and follower runs with a time history where
 # available and a recorded refusal otherwise, Table III's variants (the published columns'
 # settings, the refined mesh), the report's Table III and Figs. 6–7 sections with their data and,

@@ -1,4 +1,4 @@
-// The measurement shared by the per-iteration scaling benchmarks (issue 13 item 4;
+// The measurement shared by the per-iteration scaling benchmarks (used by
 // tests/displacement/bench_displacement.cpp, tests/mixed/bench_mixed.cpp): one Newton iteration of
 // a static problem at a converged deformed state, timed as the driver performs it — residual +
 // Jacobian assembly (`evaluate`), factorization by the driver's own SparseLUSolver (Eigen SparseLU
@@ -141,7 +141,7 @@ inline void print_row(const Row& w, bool reset) {
     std::fflush(stdout);
 }
 
-// The issue's slope (all sizes swept) and the slope where fixed costs no longer dominate.
+// The slope over all sizes swept and the slope where fixed costs no longer dominate.
 inline void print_slopes(const std::vector<Row>& rows) {
     std::printf(
         "log-log slope of CPU time per iteration vs unknowns: %.3f over %d … %d "
