@@ -73,6 +73,27 @@ double worst_pair_error(const form::ModalSolution& s, const std::vector<double>&
     return worst;
 }
 
+// The lowest four modes of the 8 × p2 steel cantilever about its static equilibrium under a
+// follower tip force `axial` along the beam (negative: compressive), quaternion rotations.
+form::ModalSolution modes_under_follower_tip_force(double axial) {
+    Model model = steel_cantilever(8, 2, "consistent");
+    PointLoad f;
+    f.point = 1;
+    f.force = Vec3(axial, 0.0, 0.0);
+    f.frame = LoadFrame::follower;
+    model.point_loads = {f};
+    form::DisplacementStatics<param::Quaternion> problem(model);
+    const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
+    BOOST_TEST_REQUIRE(has_solution(eq.status));
+    VecX r;
+    SparseMatrix K;
+    problem.evaluate(r, &K);
+    const SparseMatrix M = form::assemble_mass_matrix(
+        model, form::build_mass_mesh(model),
+        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
+    return form::solve_modal(K, M, 4);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(displacement_modal)
@@ -131,22 +152,7 @@ BOOST_AUTO_TEST_CASE(every_mass_rule_converges_at_order_two_with_linear_elements
 // A follower tip force makes the tangent non-symmetric: the QZ solver is used, about the static
 // equilibrium under the load.
 BOOST_AUTO_TEST_CASE(follower_load_takes_the_non_symmetric_path) {
-    Model model = steel_cantilever(8, 2, "consistent");
-    PointLoad f;
-    f.point = 1;
-    f.force = Vec3(-50.0, 0.0, 0.0);
-    f.frame = LoadFrame::follower;
-    model.point_loads = {f};
-    form::DisplacementStatics<param::Quaternion> problem(model);
-    const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE(has_solution(eq.status));
-    VecX r;
-    SparseMatrix K;
-    problem.evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(
-        model, form::build_mass_mesh(model),
-        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
-    const form::ModalSolution s = form::solve_modal(K, M, 4);
+    const form::ModalSolution s = modes_under_follower_tip_force(-50.0);
     BOOST_TEST(!s.symmetric);
     BOOST_TEST(s.asymmetry > 1e-8);
     // Beck's column: a compressive follower force (here 50 N, ~2.5 % of the flutter load
@@ -245,22 +251,7 @@ BOOST_AUTO_TEST_CASE(joined_beam_frequencies_are_checked_and_converge_for_every_
 // a complex pair ω², reported once (one of each conjugate pair) with its growth rate, its checks
 // passed — a complex eigenvalue reported as such, not dropped and not turned into a real frequency.
 BOOST_AUTO_TEST_CASE(past_the_flutter_load_a_complex_pair_is_reported_with_its_growth_rate) {
-    Model model = steel_cantilever(8, 2, "consistent");
-    PointLoad f;
-    f.point = 1;
-    f.force = Vec3(-5000.0, 0.0, 0.0);
-    f.frame = LoadFrame::follower;
-    model.point_loads = {f};
-    form::DisplacementStatics<param::Quaternion> problem(model);
-    const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE((eq.status == SolveStatus::converged));
-    VecX r;
-    SparseMatrix K;
-    problem.evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(
-        model, form::build_mass_mesh(model),
-        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
-    const form::ModalSolution s = form::solve_modal(K, M, 4);
+    const form::ModalSolution s = modes_under_follower_tip_force(-5000.0);
     BOOST_TEST(!s.symmetric);
     BOOST_TEST(s.accepted());
     int complex_pairs = 0;
