@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Are two rotbeam output folders the same result? (docs/durability.md)
 
-usage: compare-results.py DIR_A DIR_B
+usage: compare-results.py [--relative TOL] DIR_A DIR_B
 
 "Identical" means: the two folders hold the same files (names, recursively; no temporary
 left by an interrupted write in either), every JSON file parses (none is truncated), and every
@@ -10,6 +10,13 @@ below. They are the measured timings and what is computed from them; nothing els
 between two runs, between `--jobs 1` and `--jobs 2`, or between a resumed and an uninterrupted
 suite. Files other than JSON (Markdown, HTML, data for the plots, PNG) carry the same timings
 in text and are only required to exist in both.
+
+With --relative TOL, floating-point numbers may differ by TOL relative to their scale: the larger
+of the two magnitudes, or, for a number inside a list, the largest magnitude in that list (a
+displacement component of 1e-17 beside components of order one is round-off of the same size).
+Integers and strings (statuses, iteration and step counts) must still be equal. This is the check
+that a restructuring changed no result beyond round-off; the largest relative difference found is
+printed.
 
 Exit 0 when identical, 1 with one line per difference (at most 40) otherwise.
 """
@@ -43,7 +50,29 @@ def strip(value):
     return value
 
 
-def first_difference(a, b, where):
+RELATIVE = None  # --relative TOL, or None for exact equality
+largest = [0.0, ""]  # the largest relative difference accepted under --relative, and where
+
+
+def is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def numbers_close(a, b, scale, where):
+    if RELATIVE is None or a == b:
+        return a == b
+    scale = max(scale, abs(a), abs(b))
+    relative = abs(a - b) / scale
+    if relative > RELATIVE:
+        return False
+    if relative > largest[0]:
+        largest[0], largest[1] = relative, where
+    return True
+
+
+def first_difference(a, b, where, scale=0.0):
+    if is_number(a) and is_number(b) and (isinstance(a, float) or isinstance(b, float)):
+        return None if numbers_close(a, b, scale, where) else f"{where}: {a!r} != {b!r}"
     if type(a) is not type(b):
         return f"{where}: {a!r} != {b!r}"
     if isinstance(a, dict):
@@ -57,8 +86,10 @@ def first_difference(a, b, where):
     if isinstance(a, list):
         if len(a) != len(b):
             return f"{where}: {len(a)} items != {len(b)}"
+        magnitudes = [abs(v) for v in a + b if is_number(v)]
+        list_scale = max(magnitudes, default=0.0)
         for i, (x, y) in enumerate(zip(a, b)):
-            d = first_difference(x, y, f"{where}[{i}]")
+            d = first_difference(x, y, f"{where}[{i}]", list_scale)
             if d:
                 return d
         return None
@@ -83,10 +114,15 @@ def load(path, problems):
 
 
 def main():
-    if len(sys.argv) != 3:
+    global RELATIVE
+    args = sys.argv[1:]
+    if len(args) == 4 and args[0] == "--relative":
+        RELATIVE = float(args[1])
+        args = args[2:]
+    if len(args) != 2:
         print(__doc__.strip().splitlines()[2], file=sys.stderr)
         return 2
-    a_root, b_root = sys.argv[1], sys.argv[2]
+    a_root, b_root = args
     a_files, b_files = files(a_root), files(b_root)
     problems = []
     for name in sorted(a_files | b_files):
@@ -111,8 +147,11 @@ def main():
     if problems:
         print(f"{len(problems)} difference(s) between {a_root} and {b_root}")
         return 1
+    within = "" if RELATIVE is None else (
+        f"; within {RELATIVE:g} relative, largest difference {largest[0]:.3g}"
+        + (f" at {largest[1]}" if largest[1] else ""))
     print(f"identical: {compared} JSON files, {len(a_files)} files "
-          f"(excluding {len(EXCLUDED)} timing fields)")
+          f"(excluding {len(EXCLUDED)} timing fields){within}")
     return 0
 
 
