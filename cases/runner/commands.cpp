@@ -12,9 +12,7 @@
 #include "continuum_json.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
-#include "estimates/estimate.hpp"
 #include "history_csv.hpp"
-#include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "run_case.hpp"
@@ -120,28 +118,6 @@ void print_modes(const nlohmann::json& r, std::ostream& os) {
         }
     }
     os.precision(precision);
-}
-
-// A mode's `stations` of every mode, for pairing modes across meshes by shape.
-std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
-    std::vector<std::vector<double>> stations;
-    for (const auto& m : modes) {
-        stations.push_back(m.value("stations", std::vector<double>()));
-    }
-    return stations;
-}
-
-// The run's error estimate from companion runs of the same request (docs/error-estimates.md).
-void add_run_estimate(const RunRequest& request, nlohmann::json& result) {
-    estimate::add_estimate(
-        request.model, result,
-        [&](const Model& companion) {
-            return run_case(
-                RunRequest{request.case_path, companion, false, request.time_limit_seconds});
-        },
-        [](const nlohmann::json& modes, const nlohmann::json& companion) {
-            return match_modes(mode_stations(modes), mode_stations(companion), kMatchMac);
-        });
 }
 
 // One line under a point (or a mode) with its estimated discretization error.
@@ -307,7 +283,7 @@ int command_run(const Args& args) {
     if (estimate == "on") {
         add_run_estimate(request, result);
     } else {
-        result["estimate"] = estimate::estimate_off();
+        result["estimate"] = estimate_off();
     }
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
