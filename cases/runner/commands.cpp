@@ -262,8 +262,8 @@ int command_run(const Args& args) {
          {"time-limit", "SECONDS",
           "stop the run after this wall-clock time with the status time-limit"},
          {"estimate", "on|off",
-          "estimate the discretization error with companion runs (default on; "
-          "docs/error-estimates.md)"}}};
+          "estimate the discretization error with companion runs (default: the case's "
+          "analysis.estimate, on; docs/error-estimates.md)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -274,7 +274,9 @@ int command_run(const Args& args) {
     // check, verify and the suite (case_loader.hpp).
     const Model model = load_with_options(path, a, CaseParts::case_file);
     const double limit = a.positive_number("run", "time-limit", kMaxTimeLimit).value_or(0.0);
-    const std::string estimate = a.value("estimate").value_or("on");
+    // --estimate overrides the case's analysis.estimate.
+    const std::string estimate =
+        a.value("estimate").value_or(model.analysis.estimate ? "on" : "off");
     if (estimate != "on" && estimate != "off") {
         throw InputError("run: --estimate: expected on or off, got '" + estimate + "'");
     }
