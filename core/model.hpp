@@ -175,6 +175,9 @@ struct Analysis {
     StaticSettings statics;
     DynamicSettings dynamics;
     ModalSettings modal;
+    // `rotbeam run` estimates the discretization error (docs/error-estimates.md) unless false;
+    // `run --estimate on|off` overrides it.
+    bool estimate = true;
 };
 
 enum class Quadrature { automatic, reduced, full, gll };

@@ -26,10 +26,15 @@ rotbeam=$(realpath "${1:-build/release/cases/runner/rotbeam}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+# The solve alone: a program that estimates the discretization error by default (companion runs,
+# docs/error-estimates.md) is measured with the estimate off, so counts compare with older builds.
+no_estimate=()
+if "$rotbeam" run --help | grep -q -- '--estimate'; then no_estimate=(--estimate off); fi
+
 count() {  # count NAME ARGS...: the instructions of `rotbeam ARGS... --quiet`
   local name=$1
   shift
-  valgrind --tool=callgrind --callgrind-out-file="$work/out" "$rotbeam" "$@" --quiet \
+  valgrind --tool=callgrind --callgrind-out-file="$work/out" "$rotbeam" "$@" "${no_estimate[@]}" --quiet \
     >/dev/null 2>"$work/log" || { echo "callgrind-bench: $name failed" >&2; cat "$work/log" >&2; exit 1; }
   echo "$name $(sed -n 's/^summary: *//p' "$work/out")"
 }

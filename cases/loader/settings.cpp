@@ -33,7 +33,8 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"relative_tolerance", {"dynamic"}},
     {"absolute_tolerance", {"dynamic"}},
     {"modes", {"modal"}},
-    {"about_static_state", {"modal"}}};
+    {"about_static_state", {"modal"}},
+    {"estimate", {"static", "dynamic", "modal"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
     if (n["load_factors"] || required) {
@@ -138,6 +139,7 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
         }
     }
     Analysis& a = model.analysis;
+    if (n["estimate"]) a.estimate = r.boolean(n["estimate"], "analysis.estimate");
     if (type == "static") {
         a.kind = AnalysisKind::static_;
         read_static(r, n, a.statics, true);

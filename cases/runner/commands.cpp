@@ -72,6 +72,15 @@ Model load_with_options(const std::string& path, const ParsedArguments& a,
     return load_case(path, overrides_from(a), parts);
 }
 
+// "± 3.1e-09" and, when the estimate is not reliable, why.
+std::string plus_minus(const nlohmann::json& q) {
+    std::ostringstream s;
+    s << std::setprecision(2) << "± " << q["error"].get<double>();
+    if (!q["reliable"].get<bool>())
+        s << " (not reliable: " << q["reason"].get<std::string>() << ")";
+    return s.str();
+}
+
 // A modal run's modes: frequency (or why it is not reported), growth rate and the checks.
 void print_modes(const nlohmann::json& r, std::ostream& os) {
     if (!r.contains("modes")) return;
@@ -97,8 +106,45 @@ void print_modes(const nlohmann::json& r, std::ostream& os) {
             os << ", mass participation " << c["mass_participation"].get<double>();
         if (c.contains("failed")) os << "  REJECTED (" << c["failed"].get<std::string>() << ")";
         os << std::defaultfloat << "\n";
+        if (m.contains("estimate")) {
+            const auto& e = m["estimate"];
+            os << "          ";
+            if (e.contains("frequency")) {
+                os << plus_minus(e["frequency"]) << " Hz ("
+                   << r["estimate"]["method"].get<std::string>() << " estimate)\n";
+            } else {
+                os << "no estimate: " << e.value("reason", std::string()) << "\n";
+            }
+        }
     }
     os.precision(precision);
+}
+
+// One line under a point (or a mode) with its estimated discretization error.
+void print_point_estimate(const nlohmann::json& e, const std::string& method, std::ostream& os) {
+    os << "             ";
+    if (!e.contains("displacement")) {
+        os << "no estimate: " << e.value("reason", std::string()) << "\n";
+        return;
+    }
+    os << "|u| " << plus_minus(e["displacement"]) << "  angle " << plus_minus(e["rotation"])
+       << " rad (" << method << " estimate)\n";
+}
+
+// The estimate's method, companions and cost, or why there is none.
+void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
+    os << "estimate: " << e["status"].get<std::string>();
+    if (e.contains("method") && !e["companions"].empty()) {
+        os << " (" << e["method"].get<std::string>() << "; companions";
+        for (const auto& c : e["companions"]) {
+            os << " " << c["label"].get<std::string>() << ": " << c["status"].get<std::string>();
+        }
+        os << std::setprecision(3) << "; " << e["wall_seconds"].get<double>() << " s";
+        if (e.value("unreliable", 0) > 0) os << "; " << e["unreliable"] << " not reliable";
+        os << ")";
+    }
+    if (e.contains("reason")) os << " — " << e["reason"].get<std::string>();
+    os << "\n";
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
@@ -126,9 +172,15 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
             os << "    " << std::left << std::setw(8) << name << std::right << " u = ["
                << u[0].get<double>() << ", " << u[1].get<double>() << ", " << u[2].get<double>()
                << "]  angle = " << p["rotation_angle"].get<double>() << " rad\n";
+            if (step.contains("estimate")) {
+                const auto& e = step["estimate"];
+                print_point_estimate(e.contains(name) ? e[name] : e,
+                                     r["estimate"]["method"].get<std::string>(), os);
+            }
         }
     }
     print_modes(r, os);
+    if (r.contains("estimate")) print_estimate_summary(r["estimate"], os);
     os << "wall time: " << r["wall_seconds"].get<double>() << " s\n";
 }
 
@@ -208,7 +260,10 @@ int command_run(const Args& args) {
          {"quiet", "", "print nothing on success"},
          {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
          {"time-limit", "SECONDS",
-          "stop the run after this wall-clock time with the status time-limit"}}};
+          "stop the run after this wall-clock time with the status time-limit"},
+         {"estimate", "on|off",
+          "estimate the discretization error with companion runs (default: the case's "
+          "analysis.estimate, on; docs/error-estimates.md)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -219,7 +274,19 @@ int command_run(const Args& args) {
     // check, verify and the suite (case_loader.hpp).
     const Model model = load_with_options(path, a, CaseParts::case_file);
     const double limit = a.positive_number("run", "time-limit", kMaxTimeLimit).value_or(0.0);
-    const nlohmann::json result = run_case(RunRequest{path, model, a.has("trace-newton"), limit});
+    // --estimate overrides the case's analysis.estimate.
+    const std::string estimate =
+        a.value("estimate").value_or(model.analysis.estimate ? "on" : "off");
+    if (estimate != "on" && estimate != "off") {
+        throw InputError("run: --estimate: expected on or off, got '" + estimate + "'");
+    }
+    const RunRequest request{path, model, a.has("trace-newton"), limit};
+    nlohmann::json result = run_case(request);
+    if (estimate == "on") {
+        add_run_estimate(request, result);
+    } else {
+        result["estimate"] = estimate_off();
+    }
     write_outputs(a, result);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;

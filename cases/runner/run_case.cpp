@@ -14,7 +14,9 @@
 #include "core/static_driver.hpp"
 #include "core/time_limit.hpp"
 #include "core/version.hpp"
+#include "estimates/estimate.hpp"
 #include "make_problem.hpp"
+#include "mode_matching.hpp"
 
 namespace rotbeam {
 
@@ -206,6 +208,31 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every mode's `stations`, for pairing modes across meshes by shape.
+std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
+    std::vector<std::vector<double>> stations;
+    for (const auto& m : modes) stations.push_back(m.value("stations", std::vector<double>()));
+    return stations;
+}
+
+}  // namespace
+
+void add_run_estimate(const RunRequest& request, nlohmann::json& result) {
+    estimate::add_estimate(
+        request.model, result,
+        [&](const Model& companion) {
+            return run_case(
+                RunRequest{request.case_path, companion, false, request.time_limit_seconds});
+        },
+        [](const nlohmann::json& modes, const nlohmann::json& companion) {
+            return match_modes(mode_stations(modes), mode_stations(companion), kMatchMac);
+        });
+}
+
+nlohmann::json estimate_off() { return estimate::estimate_off(); }
 
 bool static_state_usable(const StaticOutcome& out, nlohmann::json& result) {
     if (out.status == SolveStatus::stalled_at_round_off) {

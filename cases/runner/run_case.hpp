@@ -20,9 +20,15 @@ struct RunRequest {
 
 // Runs the analysis. Never throws for numerical failure: the status says it (`converged`,
 // `diverged`, `singular`, `error`, or `kinematics-unresolved` when the mixed kinematic check
-// stops a solved run, core/kinematic_check.hpp). Throws InputError only for input the formulation refuses
-// (e.g. a rigid section in the displacement formulation).
+// stops a solved run, core/kinematic_check.hpp). Throws InputError only for input the formulation
+// refuses (e.g. a rigid section in the displacement formulation).
 nlohmann::json run_case(const RunRequest& request);
+
+// Adds the result's error estimate (docs/error-estimates.md, estimates/estimate.hpp): companion
+// runs of the same request, modes paired across meshes by shape.
+void add_run_estimate(const RunRequest& request, nlohmann::json& result);
+// The `estimate` of a run with the estimate switched off.
+nlohmann::json estimate_off();
 
 // "displacement", "mixed": what the program offers.
 std::vector<std::string> formulation_names();

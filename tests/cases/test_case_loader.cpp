@@ -260,6 +260,18 @@ BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
                "x.yaml:8: members.beam.elements: must be a positive integer, got '-2'");
 }
 
+// analysis.estimate (docs/error-estimates.md): on unless the case says false, for every analysis
+// type; anything but a boolean is refused, naming the key.
+BOOST_AUTO_TEST_CASE(the_error_estimate_is_on_unless_the_case_switches_it_off) {
+    const std::string path = case_path("cantilever-moment");
+    BOOST_TEST(load_case(path).analysis.estimate);
+    BOOST_TEST(!load_case(path, {"analysis.estimate=false"}).analysis.estimate);
+    BOOST_TEST(
+        !load_case(case_path("free-vibration"), {"analysis.estimate=false"}).analysis.estimate);
+    const std::string bad = input_error([&] { load_case(path, {"analysis.estimate=sometimes"}); });
+    BOOST_TEST(bad.find("analysis.estimate") != std::string::npos, bad);
+}
+
 // A catalog case keeps its published references beside it (cases/references/NAME.yaml): the case
 // file alone (CaseParts::case_file, what `rotbeam run` reads) is the same model without them, and
 // a message about a reference names the references file and its line.

@@ -34,6 +34,9 @@ expect_input_error "zero elements" run cantilever-moment --elements 0
 expect_input_error "missing case" run no-such-case.yaml
 expect_input_error "unknown parameterization" run cantilever-moment --rotation euler-angles --json "$work/r.json"
 [ ! -e "$work/r.json" ] || fail "a result file was written for bad input"
+expect_input_error "bad --estimate" run cantilever-moment --estimate maybe --json "$work/r.json"
+grep -q -- "--estimate" "$work/err" || fail "bad --estimate not named: $(cat "$work/err")"
+[ ! -e "$work/r.json" ] || fail "a result file was written for a bad --estimate"
 expect_input_error "unknown study" study nothing
 
 # Every command-line value goes through the validation of the case file, with the same limits
@@ -156,6 +159,21 @@ for s in r["steps"]:
 p = r["steps"][-1]["points"]["tip"]
 assert len(p["displacement"]) == 3 and len(p["rotation_matrix"]) == 3 and len(p["rotation_vector"]) == 3
 assert "rotation_angle" in p and "load_factor" in r["steps"][-1] and "newton_iterations" in r["steps"][-1]
+# The error estimate (docs/error-estimates.md): on by default, p+1 for the displacement
+# formulation, every step's points estimated, its cost recorded.
+e = r["estimate"]
+assert e["status"] == "estimated" and e["method"] == "p+1", e
+assert e["companions"][0]["order"] == r["order"] + 1 and e["wall_seconds"] > 0, e
+for s in r["steps"]:
+    q = s["estimate"]["tip"]["displacement"]
+    assert q["error"] >= 0 and q["reliable"] in (True, False), q
+PY
+"$rotbeam" run cantilever-moment --quiet --estimate off --json "$work/off.json" || fail "run --estimate off failed"
+python3 - "$work/off.json" <<'PY' || fail "run --estimate off still estimates"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["estimate"] == {"status": "off"}, r["estimate"]
+assert all("estimate" not in s for s in r["steps"])
 PY
 
 # KINSOL drives the additive (mixed) formulation through the same load stepping, and is refused

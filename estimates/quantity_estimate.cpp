@@ -1,0 +1,68 @@
+#include "estimates/quantity_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rotbeam::estimate {
+
+namespace {
+
+// Richardson's factor: e_h = e₁ / (1 − 2^−r).
+double richardson(double e1, double order) { return e1 / (1.0 - std::exp2(-order)); }
+
+}  // namespace
+
+QuantityEstimate p_refinement(double difference) {
+    return {difference, true, std::nullopt,
+            "assumes spectral convergence (e_{p+1} much smaller than e_p), not checked by one "
+            "companion"};
+}
+
+QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor) {
+    QuantityEstimate e;
+    if (e1 <= floor && e2 <= floor) {
+        e.error = std::max(e1, e2);
+        e.reason = "unchanged under refinement to within the round-off floor";
+        return e;
+    }
+    std::ostringstream why;
+    why.precision(3);
+    if (!(e2 < e1) || e2 <= floor) {
+        // e₂ ≥ e₁: not converging monotonically; e₂ at the floor while e₁ is not: the order is
+        // undefined (the h/2 and h/4 values agree to round-off, the h value does not).
+        e.error = richardson(e1, theoretical_order);
+        e.reliable = false;
+        if (e2 > floor) {
+            e.observed_order = std::log2(e1 / e2);
+            why << "not monotone: |q_h/2 - q_h/4| = " << e2 << " >= |q_h - q_h/2| = " << e1;
+        } else {
+            why << "order undefined: the h/2 and h/4 companions agree to round-off, the run "
+                   "differs by "
+                << e1;
+        }
+        e.reason = why.str();
+        return e;
+    }
+    const double r = std::log2(e1 / e2);
+    e.observed_order = r;
+    if (std::abs(r - theoretical_order) <= kOrderWindow) {
+        e.error = richardson(e1, r);
+        return e;
+    }
+    e.error = richardson(e1, theoretical_order);
+    e.reliable = false;
+    why << "observed order " << r << " outside " << theoretical_order << " +- " << kOrderWindow
+        << ": not in the asymptotic range (extrapolated with the theoretical order)";
+    e.reason = why.str();
+    return e;
+}
+
+nlohmann::json to_json(const QuantityEstimate& e) {
+    nlohmann::json j = {{"error", e.error}, {"reliable", e.reliable}};
+    if (e.observed_order) j["observed_order"] = *e.observed_order;
+    if (!e.reason.empty()) j["reason"] = e.reason;
+    return j;
+}
+
+}  // namespace rotbeam::estimate

@@ -1,0 +1,45 @@
+// The estimate of one reported quantity's discretization error from its companions
+// (docs/error-estimates.md). Two methods:
+//
+// - p+1 (displacement formulation): the same mesh at order p+1. Under spectral convergence
+//   e_{p+1} ≪ e_p, so |q_p − q_{p+1}| = |e_p − e_{p+1}| estimates e_p = |q_p − q|. One companion
+//   cannot see a p-sequence that is not yet decaying (locking on a coarse mesh): the estimate says
+//   that it rests on this assumption.
+// - h/2, h/4 (mixed formulation): the mesh with every member's elements doubled and quadrupled.
+//   With q_h − q ≈ C h^r, e₁ = |q_h − q_{h/2}| and e₂ = |q_{h/2} − q_{h/4}| give the observed order
+//   r = log₂(e₁/e₂) and Richardson's estimate e_h = e₁ / (1 − 2^−r). It is `reliable` only when the
+//   sequence is monotone (e₂ < e₁) and r lies within kOrderWindow of the theoretical order;
+//   otherwise the estimate is still given (with the theoretical order) and says why it is not.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+namespace rotbeam::estimate {
+
+// Observed orders further than this from the theoretical one are not asymptotic. Within the
+// window the Richardson factor 1/(1 − 2^−r) for a theoretical order 2 lies between 1.55 (r = 1.5)
+// and 1.22 (r = 2.5) against 1.33: a sequence whose order is off by more has not settled, and
+// its extrapolation is not to be trusted.
+inline constexpr double kOrderWindow = 0.5;
+
+struct QuantityEstimate {
+    double error = 0.0;                    // the estimated |q − q_exact|
+    bool reliable = true;                  // false: the value is indicative only (`reason`)
+    std::optional<double> observed_order;  // h/2, h/4 only (absent when undefined)
+    std::string reason;                    // why it is not reliable, or what it assumes
+};
+
+// |q_p − q_{p+1}|: `difference`.
+QuantityEstimate p_refinement(double difference);
+
+// From e₁ = |q_h − q_{h/2}|, e₂ = |q_{h/2} − q_{h/4}|. Both at or below `floor` (round-off of
+// the solves): the quantity does not change under refinement (a clamped point, a value fixed by
+// symmetry); the estimate is max(e₁, e₂), reliable.
+QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor);
+
+// {"error", "reliable", "observed_order" (when defined), "reason" (when not empty)}.
+nlohmann::json to_json(const QuantityEstimate& e);
+
+}  // namespace rotbeam::estimate

@@ -1,0 +1,172 @@
+// The estimate of one quantity from its companions (estimates/quantity_estimate.hpp) and the
+// bookkeeping of add_estimate (estimates/estimate.hpp) on synthetic companion results: every
+// way an estimate can be missing or unreliable says so.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "estimates/companions.hpp"
+#include "estimates/estimate.hpp"
+#include "estimates/quantity_estimate.hpp"
+
+namespace rotbeam::estimate {
+
+namespace {
+
+using json = nlohmann::json;
+
+// A sequence q_h = q + C h^r sampled at h, h/2, h/4: (e₁, e₂, true error of q_h).
+struct Sequence {
+    double e1, e2, true_error;
+};
+Sequence power_law(double C, double h, double r) {
+    const auto q = [&](double hh) { return C * std::pow(hh, r); };
+    return {std::abs(q(h) - q(h / 2)), std::abs(q(h / 2) - q(h / 4)), std::abs(q(h))};
+}
+
+// A static result with one step and one point "tip" displaced by `u` along x, unrotated.
+json static_result(const std::string& status, const std::vector<double>& tip_x) {
+    json steps = json::array();
+    double lambda = 0.5;
+    for (const double u : tip_x) {
+        steps.push_back({{"load_factor", lambda},
+                         {"points",
+                          {{"tip",
+                            {{"displacement", {u, 0.0, 0.0}},
+                             {"rotation_matrix", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}}}}});
+        lambda += 0.5;
+    }
+    return {{"status", status}, {"message", ""}, {"steps", steps}};
+}
+
+Model two_point_model(const std::string& formulation) {
+    Model m;
+    m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(2.0, 0.0, 0.0)}};
+    Member beam;
+    beam.name = "beam";
+    beam.elements = 4;
+    m.members = {beam};
+    m.discretization.formulation = formulation;
+    m.discretization.order = 3;
+    return m;
+}
+
+const ModePairing kNoModes = [](const json&, const json&) { return std::vector<int>(); };
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(richardson_recovers_the_error_of_an_exact_power_law) {
+    for (const double r : {1.6, 2.0, 2.4}) {
+        const Sequence s = power_law(0.3, 0.25, r);
+        const QuantityEstimate e = h_refinement(s.e1, s.e2, 2.0, 1e-14);
+        BOOST_TEST(e.reliable);
+        BOOST_TEST(*e.observed_order == r, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(e.error == s.true_error, boost::test_tools::tolerance(1e-12));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(an_order_outside_the_window_is_estimated_but_not_reliable) {
+    const Sequence s = power_law(0.3, 0.25, 1.0);  // first order where second is expected
+    const QuantityEstimate e = h_refinement(s.e1, s.e2, 2.0, 1e-14);
+    BOOST_TEST(!e.reliable);
+    BOOST_TEST(*e.observed_order == 1.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(e.error == s.e1 / 0.75, boost::test_tools::tolerance(1e-12));  // theoretical order
+    BOOST_TEST(e.reason.find("observed order") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_non_monotone_sequence_is_not_reliable) {
+    const QuantityEstimate e = h_refinement(1e-4, 3e-4, 2.0, 1e-14);
+    BOOST_TEST(!e.reliable);
+    BOOST_TEST(e.reason.find("not monotone") != std::string::npos);
+    BOOST_TEST(std::isfinite(e.error));
+    BOOST_TEST(e.error > 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(companions_agreeing_to_round_off_make_the_order_undefined) {
+    const QuantityEstimate e = h_refinement(1e-5, 0.0, 2.0, 1e-12);
+    BOOST_TEST(!e.reliable);
+    BOOST_TEST(!e.observed_order.has_value());
+    BOOST_TEST(e.reason.find("order undefined") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_quantity_unchanged_by_refinement_is_estimated_at_the_floor) {
+    const QuantityEstimate e = h_refinement(0.0, 0.0, 2.0, 1e-12);
+    BOOST_TEST(e.reliable);
+    BOOST_TEST(e.error == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(p_refinement_is_the_difference_and_states_its_assumption) {
+    const QuantityEstimate e = p_refinement(2.5e-7);
+    BOOST_TEST(e.error == 2.5e-7);
+    BOOST_TEST(e.reliable);
+    BOOST_TEST(e.reason.find("spectral") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_plan_chooses_the_method_per_formulation) {
+    const CompanionPlan p = plan_companions(two_point_model("displacement"));
+    BOOST_TEST(p.method == "p+1");
+    BOOST_TEST_REQUIRE(p.companions.size() == 1u);
+    BOOST_TEST(p.companions[0].model.discretization.order == 4);
+    BOOST_TEST(p.companions[0].model.members[0].elements == 4);
+    const CompanionPlan h = plan_companions(two_point_model("mixed"));
+    BOOST_TEST(h.method == "h/2,h/4");
+    BOOST_TEST_REQUIRE(h.companions.size() == 2u);
+    BOOST_TEST(h.companions[0].model.members[0].elements == 8);
+    BOOST_TEST(h.companions[1].model.members[0].elements == 16);
+    Model dynamic = two_point_model("displacement");
+    dynamic.analysis.kind = AnalysisKind::dynamic;
+    BOOST_TEST(!plan_companions(dynamic).refusal.empty());
+    BOOST_TEST(plan_companions(dynamic).companions.empty());
+}
+
+BOOST_AUTO_TEST_CASE(an_untrustworthy_run_gets_no_companions_and_says_why) {
+    json result = static_result("diverged", {0.1});
+    int calls = 0;
+    add_estimate(
+        two_point_model("mixed"), result,
+        [&](const Model&) {
+            ++calls;
+            return json();
+        },
+        kNoModes);
+    BOOST_TEST(calls == 0);
+    BOOST_TEST(result["estimate"]["status"] == "not-estimated");
+    BOOST_TEST(result["estimate"]["reason"].get<std::string>().find("diverged") !=
+               std::string::npos);
+    BOOST_TEST(!result["steps"][0].contains("estimate"));
+}
+
+BOOST_AUTO_TEST_CASE(a_companion_that_stops_early_leaves_the_later_steps_without_estimate) {
+    // Mixed: the run at h, companions at h/2 (both steps) and h/4 (diverged after the first).
+    json result = static_result("converged", {1.0 + 0.16, 2.0 + 0.16});
+    const std::vector<json> companions = {static_result("converged", {1.04, 2.04}),
+                                          static_result("diverged", {1.01})};
+    std::size_t next = 0;
+    add_estimate(
+        two_point_model("mixed"), result, [&](const Model&) { return companions.at(next++); },
+        kNoModes);
+    BOOST_TEST(next == 2u);
+    const json& first = result["steps"][0]["estimate"]["tip"]["displacement"];
+    BOOST_TEST(first["reliable"].get<bool>());
+    BOOST_TEST(first["observed_order"].get<double>() == 2.0, boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(first["error"].get<double>() == 0.16, boost::test_tools::tolerance(1e-9));
+    const json& second = result["steps"][1]["estimate"];
+    BOOST_TEST(second["status"] == "not-estimated");
+    BOOST_TEST(second["reason"].get<std::string>().find("4x elements") != std::string::npos);
+    BOOST_TEST(result["estimate"]["status"] == "partial");
+    BOOST_TEST(result["estimate"]["missing"].get<int>() == 1);
+    BOOST_TEST(result["estimate"]["companions"].size() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(a_companion_the_formulation_refuses_gives_no_estimate_and_says_why) {
+    json result = static_result("converged", {0.5});
+    add_estimate(
+        two_point_model("displacement"), result,
+        [](const Model&) -> json { throw InputError("refused: no such combination"); }, kNoModes);
+    BOOST_TEST(result["estimate"]["status"] == "not-estimated");
+    BOOST_TEST(result["estimate"]["companions"][0]["status"] == "error");
+    BOOST_TEST(result["steps"][0]["estimate"]["reason"].get<std::string>().find("refused") !=
+               std::string::npos);
+}
+
+}  // namespace rotbeam::estimate
