@@ -30,7 +30,7 @@ class DaeSystem {
     // The split used for consistent initial conditions at state x (IDACalcIC's id and
     // consistent_initial_conditions): X is solved where 0, Ẋ where 1. The same as differential()
     // unless a differential direction is not a component (the quaternion's tangential directions:
-    // mixed_quaternion_dynamics.hpp), where a chart chosen at x makes that system regular.
+    // formulations/mixed/mixed_dynamics.hpp), where a chart chosen at x makes that system regular.
     virtual VecX initial_condition_differential(const VecX& /*x*/) const { return differential(); }
     // After consistent initial conditions: sets the rates of directions F does not see (the
     // quaternion's radial rate) to their natural value. Nothing for most systems.

@@ -193,7 +193,8 @@ struct Discretization {
     bool rescale = true;
     std::string mass_rule = "consistent";      // consistent | midpoint | lumped
     // Mixed formulation with Wiener–Milenković: `plain` (seed 002 as published; singular at
-    // φ = 2π) or `continuous` (GXBeam's continuous rescaling map, wm_continuous.hpp).
+    // φ = 2π) or `continuous` (GXBeam's continuous rescaling map,
+    // parameterizations/wiener_milenkovic_continuous.hpp).
     std::string wm_map = "plain";
 };
 

@@ -12,8 +12,8 @@
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/mixed/mixed_dynamics_of.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/registry.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 
 namespace rotbeam::cli {
 
@@ -102,42 +102,19 @@ void fill_mixed_state(const form::MixedLayout& layout, const oracle::Manufacture
     }
 }
 
-// The exact differential state (u, c, P, H; node û, ĉ) and a starting guess of everything else.
-// Three parameters: MixedDynamicNumbering; the quaternion: its own element block
-// (MixedQuaternionDynamicBlock) and 7 node unknowns û, q̂ (the free rod has no support, so no
-// reactions or ρ; its norm row holds no unknown).
+// The exact differential state (u, c, P, H; node û, ĉ) and a starting guess of everything else
+// (MixedNumbering: the free rod has no support, so no reactions or ρ; the quaternion's norm row
+// holds no unknown).
 template <class P, class Dyn>
 void mixed_initial_state(const Dyn& dyn, const oracle::ManufacturedMotion& mm, VecX& x,
                          VecX& xdot) {
     x = VecX::Zero(dyn.size());
     xdot = VecX::Zero(dyn.size());
-    constexpr bool quaternion = P::kSize == 4;
-    const form::MixedLayout* layout = nullptr;
-    if constexpr (quaternion) {
-        layout = &dyn.layout().base;
-    } else {
-        layout = &dyn.layout();
-    }
-    auto node_column = [&](int n) {
-        if constexpr (quaternion)
-            return dyn.node_column(n);
-        else
-            return dyn.numbering().node_offset(n);
-    };
-    auto element_column = [&](int e) {
-        if constexpr (quaternion)
-            return dyn.element_column(e);
-        else
-            return dyn.numbering().element_offset(e);
-    };
-    using QB = form::MixedQuaternionDynamicBlock;
-    const int ou = quaternion ? QB::u : 0, oc = quaternion ? QB::q : 3;
-    const int oF = quaternion ? QB::F : 3 + P::kSize, oP = quaternion ? QB::P : 9 + P::kSize;
-    if constexpr (!quaternion) {
-        const form::MixedDynamicNumbering& nb = dyn.numbering();
-        ROTBEAM_VERIFY(nb.u() == ou && nb.c() == oc && nb.F() == oF && nb.P() == oP,
-                       "mixed dynamic numbering changed");
-    }
+    const form::MixedLayout* layout = &dyn.layout();
+    auto node_column = [&](int n) { return dyn.node_column(n); };
+    auto element_column = [&](int e) { return dyn.element_column(e); };
+    const form::MixedNumbering& nb = dyn.numbering();
+    const int ou = nb.u(), oc = nb.c(), oF = nb.F(), oP = nb.P();
     fill_mixed_state(
         *layout, mm,
         [&](int e, double s) {

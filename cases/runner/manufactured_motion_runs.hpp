@@ -10,11 +10,11 @@
 //    velocity [u̇; ω]; the integrator then solves the consistent acceleration M v˙₀ = −r
 //    (run_generalized_alpha), which differs from the exact v˙ by the space error only;
 //  - mixed (MixedDynamicsOf<P>: three parameters or the quaternion, whose free rod carries one
-//    norm row, mixed_quaternion_layout.hpp): the differential unknowns u, c (on the continuous
-//    branch of the rotation vector, so a chart past π sees no jump along the rod), P, H = M*[Rᵀu̇;
-//    Rᵀω] at the element mid-points and the node û, ĉ exactly; F, M and the rates (u̇, ċ = H_m⁻¹Ω,
-//    Ṗ, Ḣ) exactly as the starting guess of the drivers' consistent initialization, which keeps the
-//    differential unknowns and solves the rest from F(t₀, X, Ẋ) = 0.
+//    norm row, formulations/mixed/mixed_layout.hpp): the differential unknowns u, c (on the
+//    continuous branch of the rotation vector, so a chart past π sees no jump along the rod), P, H
+//    = M*[Rᵀu̇; Rᵀω] at the element mid-points and the node û, ĉ exactly; F, M and the rates (u̇, ċ =
+//    H_m⁻¹Ω, Ṗ, Ḣ) exactly as the starting guess of the drivers' consistent initialization, which
+//    keeps the differential unknowns and solves the rest from F(t₀, X, Ẋ) = 0.
 // Errors are measured at the named points root, q1, mid, q3, tip at ten output times.
 #pragma once
 

@@ -16,10 +16,10 @@
 #include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 
 namespace rotbeam {
 
@@ -72,9 +72,6 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     return static_state_usable(out, result);
 }
 
-const form::MixedLayout& base_layout(const form::MixedLayout& l) { return l; }
-const form::MixedLayout& base_layout(const form::MixedQuaternionLayout& l) { return l.base; }
-
 // Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
 // the largest free-node component, real part, largest component 1; rotations as spatial rotation
 // increments H_s(ĉ₀) δĉ (3 × 3, or 3 × 4 for the quaternion's q̂).
@@ -104,7 +101,7 @@ nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn
         points[model.points[i].name] = {{"displacement", vec3(d)}, {"rotation", vec3(r)}};
     }
     std::vector<NodeDisplacement> nodes;
-    const form::MixedLayout& layout = base_layout(dyn.layout());
+    const form::MixedLayout& layout = dyn.layout();
     for (int n = 0; n < dyn.node_count(); ++n) {
         Vec3 d = Vec3::Zero();
         if (!dyn.supported(n) && std::abs(peak) > 0.0) {

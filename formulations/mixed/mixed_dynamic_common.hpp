@@ -1,7 +1,7 @@
-// What the mixed dynamics of three parameters (mixed_dynamics.hpp) and of the quaternion
-// (mixed_quaternion_dynamics.hpp) share beyond the element (mixed_dynamic_element.hpp): loads in
-// time, the inverted section masses (seed 002 Eq. 18) and the scales of the momentum unknowns and
-// rows. Independent of the parameterization.
+// The parts of the mixed dynamics (mixed_dynamics.hpp) that do not depend on the parameterization,
+// beyond the element (mixed_dynamic_element.hpp): loads in time, the section masses and their
+// inverses (seed 002 Eq. 18) and the scales of the momentum unknowns and rows. Also used by the
+// statics' solver.assemble_all_terms (mixed_statics_rest_terms.hpp).
 #pragma once
 
 #include <vector>
@@ -38,5 +38,12 @@ struct MixedMassInverses {
     double inertia_scale = 0.0;
 };
 MixedMassInverses mixed_mass_inverses(const Model& model, const MixedLayout& layout);
+
+// The section mass I (material axes) of an element, by discretization.mass_rule: `midpoint` the
+// mid-length value (seed 002's GEBT), `consistent` the average over the element (the consistent
+// mass of the element's constant momenta; equal to midpoint for a section constant along the
+// element, every shipped case), `lumped` refused (no nodal masses). Linear between stations.
+// Throws InputError when the member's sections carry no mass.
+Mat6 mixed_element_mass(const Model& model, const MixedElement& element);
 
 }  // namespace rotbeam::form

@@ -1,43 +1,13 @@
-// The non-template parts of the mixed dynamics (pattern, section mass) and the explicit
-// instantiations for every three-parameter parameterization (the quaternion has its own four-
-// component class, mixed_quaternion_dynamics.hpp).
+// The non-template parts of the mixed dynamics (section mass, loads in time) and the explicit
+// instantiations for every parameterization.
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics_impl.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
-#include "parameterizations/rodrigues.hpp"
-#include "parameterizations/rotation_vector.hpp"
-#include "parameterizations/wiener_milenkovic.hpp"
+#include "parameterizations/registry.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 
 namespace rotbeam::form {
-
-SparseMatrix mixed_dynamic_pattern(const MixedLayout& layout, const MixedDynamicNumbering& nb) {
-    using Triplet = Eigen::Triplet<double, int>;
-    std::vector<Triplet> t;
-    auto block = [&t](int r0, int c0, int rows, int cols) {
-        for (int j = 0; j < cols; ++j) {
-            for (int i = 0; i < rows; ++i) t.emplace_back(r0 + i, c0 + j, 0.0);
-        }
-    };
-    const int eb = nb.element_block();
-    for (int n = 0; n < nb.nodes; ++n) block(nb.node_offset(n), nb.node_offset(n), 6, 6);
-    for (int e = 0; e < nb.elements; ++e) {
-        const MixedElement& el = layout.elements[static_cast<std::size_t>(e)];
-        const int o = nb.element_offset(e);
-        const int a = nb.node_offset(el.start_node);
-        const int b = nb.node_offset(el.end_node);
-        block(a, o + nb.c(), 6, eb - nb.c());  // f_u, f_ψ against c, F, M, P, H (and rates)
-        block(b, o + nb.c(), 6, eb - nb.c());
-        block(o, o, eb, eb);    // kinematic and momentum rows against the element's unknowns
-        block(o, a, 6, 6);      // −û_a, −ĉ_a
-        block(o + 6, b, 6, 6);  // +û_b, +ĉ_b
-    }
-    SparseMatrix J(nb.size(), nb.size());
-    J.setFromTriplets(t.begin(), t.end());  // duplicates are summed (all zero)
-    J.makeCompressed();
-    return J;
-}
 
 namespace {
 
@@ -146,9 +116,9 @@ MixedMassInverses mixed_mass_inverses(const Model& model, const MixedLayout& lay
     return out;
 }
 
-template class MixedDynamics<param::WienerMilenkovic>;
-template class MixedDynamics<param::Rodrigues>;
-template class MixedDynamics<param::RotationVector>;
+#define ROTBEAM_MIXED_DYNAMICS_INSTANTIATE(P) template class MixedDynamics<param::P>;
+ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_MIXED_DYNAMICS_INSTANTIATE)
+#undef ROTBEAM_MIXED_DYNAMICS_INSTANTIATE
 template class MixedDynamics<param::WienerMilenkovicContinuous>;
 
 }  // namespace rotbeam::form

@@ -1,55 +1,61 @@
 // The mixed GEBT formulation for dynamics (seed 002 Eqs. 16–56): the residual F(t, X, Ẋ) of Eq. 56
-// with the momenta P, H of every element and its two Jacobians ∂F/∂X, ∂F/∂Ẋ, generic over a
-// three-parameter rotation parameterization. Theory note: docs/mixed-dynamics.md.
+// with the momenta P, H of every element and its two Jacobians ∂F/∂X, ∂F/∂Ẋ, one class for every
+// parameterization. Theory notes: docs/mixed-dynamics.md; the quaternion's design and index
+// argument docs/mixed-formulation.md ("Dynamics") and docs/mixed-dynamics.md ("The quaternion").
 //
-// Unknowns (18N + 6M, seed 002 after Eq. 56): per node the statics' six (û, ĉ, or the reactions of
-// a supported node); per element u, c, F, M, P, H. The element block is 3 + k + 12 long for k
-// rotation parameters (k = 3 here; the quaternion's k = 4 changes only the block length and the
-// kinematic rows, MixedDynamicNumbering is written for it). Equations: the statics' node
-// equilibrium rows with the momentum terms of Eqs. 45–46 added (mixed_dynamic_element.hpp), the
-// kinematic rows of Eqs. 47–48 unchanged, and f_P, f_H (Eqs. 49–50) per element.
+// Unknowns and equations (MixedNumbering, mixed_layout.hpp, with `dynamic`): per node the statics'
+// unknowns (û, ĉ, or the reactions of a supported node, and ρ) and six equilibrium rows with the
+// momentum terms of Eqs. 45–46 added (mixed_dynamic_element.hpp); per element u, c, F, M, P, H
+// (15 + K) and the kinematic rows of Eqs. 47–48 unchanged plus f_P, f_H (Eqs. 49–50): 12 + 2K.
+// Three parameters: 18N + 6M unknowns, seed 002 after Eq. 56. The quaternion: Eq. 50 reads
+// f_H = Ω − C^ba H_m(q) q̇, so q̇ enters only through H_m(q) q̇ (and the overbar terms of Eqs.
+// 45–46, −R (·)~ H_m q̇), and its radial part (H_m q = 0) enters nowhere. The norm is kept as in
+// statics by the Cayley relations of the kinematic rows from the support at every instant; a free
+// tree (no support, e.g. the manufactured motion's flying rod) gets the parameterization's
+// constraint row ½(|q̂_0|² − 1) = 0 at node 0 (param::ParameterConstraint), algebraic.
 //
 // Differential unknowns (rates appear in F): u, c, P, H of every element; algebraic: F, M and all
-// node unknowns. Loads and prescribed motion follow their time functions; tables and ramps (which
-// may jump) are evaluated at max(t, t⁺) with t⁺ = start + 1e-6 Δt, their right limit at the start
-// (a load released at t = 0, docs/benchmarks.md §8, is off from the initial conditions on).
+// node unknowns. With a redundant parameter (the quaternion) the radial direction of c is
+// algebraic too, and IDA's `id` is per component, not per direction, so two vectors are given:
+//  - differential(): all K components of every element c are 1. IDA uses it (with
+//    IDASetSuppressAlg) only to leave the algebraic unknowns out of its error test; the radial
+//    direction then stays in the test, which is valid for an index-1 algebraic direction (it is a
+//    smooth function of the differential state, |q_i| = cos(δ_i/4)) and costs nothing;
+//  - initial_condition_differential(x): the consistent-initialization chart. The parameterization's
+//    algebraic_component of each element c is algebraic (solved in X, its rate held), the others
+//    differential (their rates solved); afterwards complete_initial_rates() removes the radial
+//    part of ċ (which F does not see). Without a redundant parameter both are differential().
+//
+// Loads and prescribed motion follow their time functions; tables and ramps (which may jump) are
+// evaluated at max(t, t⁺) with t⁺ = start + 1e-6 Δt, their right limit at the start (a load
+// released at t = 0, docs/benchmarks.md §8, is off from the initial conditions on).
 #pragma once
 
 #include <vector>
 
 #include "core/dae_system.hpp"
 #include "core/model.hpp"
+#include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamic_element.hpp"
 #include "formulations/mixed/mixed_element.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
+#include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/concept.hpp"
+#include "parameterizations/parameter_constraint.hpp"
 
 namespace rotbeam::form {
-
-// Offsets of the dynamic unknowns: nodes first (6 each, as in statics), then elements.
-struct MixedDynamicNumbering {
-    int nodes = 0;
-    int elements = 0;
-    int rotation_size = 3;
-    int element_block() const { return 3 + rotation_size + 12; }  // u, c, F, M, P, H
-    int size() const { return 6 * nodes + element_block() * elements; }
-    int node_offset(int n) const { return 6 * n; }
-    int element_offset(int e) const { return 6 * nodes + element_block() * e; }
-    // Within an element block.
-    int u() const { return 0; }
-    int c() const { return 3; }
-    int F() const { return 3 + rotation_size; }
-    int M() const { return 6 + rotation_size; }
-    int P() const { return 9 + rotation_size; }
-    int H() const { return 12 + rotation_size; }
-};
 
 template <param::RotationParameterization P>
 class MixedDynamics : public DaeSystem {
   public:
+    static constexpr int K = P::kSize;
+    static constexpr int kConstraintRows = param::ParameterConstraint<P>::kRows;
+    using Params = param::Params<K>;
+
     // `time_scale` sets the velocity scale length / time_scale of the f_P, f_H rows and of P, H
     // (the end time of a dynamic run, 1 otherwise). Throws InputError when a section has no mass
-    // matrix or a singular one (Eq. 18 is inverted).
+    // matrix or a singular one (Eq. 18 is inverted), carries damping, or (with a redundant
+    // parameter) the structure is not a tree held by its supports or a single free tree.
     MixedDynamics(const Model& model, double time_scale, double load_time_floor = 0.0);
 
     int size() const override { return numbering_.size(); }
@@ -57,6 +63,8 @@ class MixedDynamics : public DaeSystem {
                   SparseMatrix* J_xdot) override;
     const SparseMatrix& pattern() const override { return pattern_; }
     const VecX& differential() const override { return differential_; }
+    VecX initial_condition_differential(const VecX& x) const override;
+    void complete_initial_rates(const VecX& x, VecX& xdot) const override;
     const VecX& residual_scale() const override { return residual_scale_; }
     const VecX& state_scale() const override { return state_scale_; }
     const VecX& increment_scale() const override { return increment_scale_; }
@@ -64,11 +72,13 @@ class MixedDynamics : public DaeSystem {
     std::string describe_state(const VecX& x) const override;
 
     const MixedLayout& layout() const { return layout_; }
-    const MixedDynamicNumbering& numbering() const { return numbering_; }
-    // The accessors MixedQuaternionDynamics has too (the runner is generic over both).
-    int node_count() const { return numbering_.nodes; }
-    bool supported(int node) const { return layout_.supported(node); }
-    int node_column(int node) const { return numbering_.node_offset(node); }
+    const MixedNumbering& numbering() const { return numbering_; }
+    int node_count() const { return numbering_.node_count(); }
+    int element_count() const { return numbering_.element_count; }
+    bool supported(int node) const { return numbering_.supported(node); }
+    int node_column(int node) const { return numbering_.node_column(node); }
+    int element_column(int e) const { return numbering_.element_column(e); }
+    int element_row(int e) const { return numbering_.element_row(e); }
     void set_load_time_floor(double t) { load_time_floor_ = t; }
 
     // The dynamic state at rest with the statics' unknowns (MixedStatics<P>::state_vector()).
@@ -81,18 +91,22 @@ class MixedDynamics : public DaeSystem {
     // As MixedStatics<P>::rotation_stations, in state x at time t.
     std::vector<StaticProblem::RotationStation> rotation_stations(const VecX& x, double t) const;
     double max_rotation_angle(const VecX& x) const;
+    // max | |q| − 1 | at the nodes (conserved by the Cayley relations) and in the elements
+    // (cos(δ/4) by construction), in state x at time t.
+    QuaternionNormDrift norm_drift(const VecX& x, double t) const requires(kConstraintRows > 0);
 
   private:
-    void node_motion(const VecX& x, double t, int node, Vec3& u_hat, Vec3& c_hat) const;
-    MixedElement loaded_element(int e, double t) const;
-    double time_value(const TimeFunction& f, double t) const;
+    Params given_rotation(int node, double t) const;
+    void node_motion(const VecX& x, double t, int node, Vec3& u_hat, Params& c_hat) const;
     void assemble_element(int e, double t, const VecX& x, const VecX& xdot, VecX& residual,
                           SparseMatrix* J_x, SparseMatrix* J_xdot);
+    void add_node_terms(int e, double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
     void add_point_loads(double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
+    void build_scales(double time_scale, double mass_scale, double inertia_scale);
 
     Model model_;
     MixedLayout layout_;  // built without distributed loads: f_dead holds gravity only
-    MixedDynamicNumbering numbering_;
+    MixedNumbering numbering_;
     std::vector<Mat6> mass_inverse_;
     SparseMatrix pattern_;
     VecX differential_;
@@ -101,18 +115,8 @@ class MixedDynamics : public DaeSystem {
     VecX increment_scale_;
     double load_time_floor_ = 0.0;
     AssemblyCounters counters_;
-    MixedElementResult static_result_;
-    MixedInertiaResult<> inertia_result_;
+    MixedElementResult<K> static_result_;
+    MixedInertiaResult<K> inertia_result_;
 };
-
-// The fixed sparsity pattern of ∂F/∂X and ∂F/∂Ẋ (all structural entries of both).
-SparseMatrix mixed_dynamic_pattern(const MixedLayout& layout, const MixedDynamicNumbering& n);
-
-// The section mass I (material axes) of an element, by discretization.mass_rule: `midpoint` the
-// mid-length value (seed 002's GEBT), `consistent` the average over the element (the consistent
-// mass of the element's constant momenta; equal to midpoint for a section constant along the
-// element, every shipped case), `lumped` refused (no nodal masses). Linear between stations.
-// Throws InputError when the member's sections carry no mass.
-Mat6 mixed_element_mass(const Model& model, const MixedElement& element);
 
 }  // namespace rotbeam::form

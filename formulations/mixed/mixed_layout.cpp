@@ -156,32 +156,75 @@ MixedLayout build_mixed_layout(const Model& model) {
     return layout;
 }
 
-void mixed_scales(const MixedLayout& layout, VecX& residual_scale, VecX& increment_scale) {
+MixedNumbering number_mixed_unknowns(const MixedLayout& layout, int rotation_size,
+                                     int constraint_rows, bool dynamic, bool allow_free) {
+    MixedNumbering q;
+    q.rotation_size = rotation_size;
+    q.constraint_rows = constraint_rows;
+    q.dynamic = dynamic;
+    q.element_count = layout.element_count();
+    const int nodes = static_cast<int>(layout.nodes.size());
+    for (int n = 0; n < nodes; ++n) q.node_supported.push_back(layout.supported(n));
+    for (int n = 0; n < nodes; ++n) {
+        if (layout.supported(n)) {
+            q.first_support = n;
+            break;
+        }
+    }
+    for (int n = 0; n < nodes; ++n) {
+        q.node_columns.push_back(q.node_unknowns);
+        q.node_sizes.push_back(!layout.supported(n) ? 3 + rotation_size : q.has_scale(n) ? 7 : 6);
+        q.node_unknowns += q.node_sizes.back();
+    }
+    if (constraint_rows == 0) return q;  // 6 per node, as many rows as unknowns per element
+    // Columns − rows = nodes − 1 − elements (header): zero exactly for one tree, with at least one
+    // support (without one every node has 7 unknowns and the count is one short of square).
+    const int rows = 6 * nodes + q.element_rows() * q.element_count;
+    // A free tree is one row short: the constraint row (header) closes it.
+    q.free_norm = allow_free && q.first_support < 0 && rows + 1 == q.size();
+    if (!q.free_norm && (q.first_support < 0 || rows != q.size())) {
+        throw InputError(
+            "the mixed formulation with the quaternion needs a structure without closed loops "
+            "held by at least one support (" +
+            std::to_string(nodes) + " nodes, " + std::to_string(q.element_count) +
+            " elements): four-component kinematics close a loop with one redundant row");
+    }
+    return q;
+}
+
+void mixed_scales(const MixedLayout& layout, const MixedNumbering& nb, VecX& residual_scale,
+                  VecX& increment_scale) {
     const double Ls = layout.length_scale;
     const double Fs = layout.force_scale;
-    residual_scale.resize(layout.size());
-    increment_scale.resize(layout.size());
-    for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
-        const int o = layout.node_offset(n);
-        residual_scale.segment<3>(o).setConstant(Fs);
-        residual_scale.segment<3>(o + 3).setConstant(Fs * Ls);
-        increment_scale.segment<3>(o).setConstant(layout.supported(n) ? Fs : Ls);
-        increment_scale.segment<3>(o + 3).setConstant(layout.supported(n) ? Fs * Ls : 1.0);
+    const int K = nb.rotation_size;
+    residual_scale.resize(nb.size());
+    increment_scale.resize(nb.size());
+    for (int n = 0; n < nb.node_count(); ++n) {
+        const int r = nb.node_row(n);
+        residual_scale.segment<3>(r).setConstant(Fs);
+        residual_scale.segment<3>(r + 3).setConstant(Fs * Ls);
+        const int c = nb.node_column(n);
+        const bool s = nb.supported(n);
+        increment_scale.segment<3>(c).setConstant(s ? Fs : Ls);
+        increment_scale.segment<3>(c + 3).setConstant(s ? Fs * Ls : 1.0);
+        const int rest = nb.node_sizes[static_cast<std::size_t>(n)] - 6;
+        if (rest > 0) increment_scale.segment(c + 6, rest).setConstant(1.0);  // q̂_3 or ρ
     }
-    for (int e = 0; e < layout.element_count(); ++e) {
-        const int o = layout.element_offset(e);
-        for (int half = 0; half < 2; ++half) {
-            residual_scale.segment<3>(o + 6 * half).setConstant(Ls);
-            residual_scale.segment<3>(o + 6 * half + 3).setConstant(1.0);
-        }
-        increment_scale.segment<3>(o).setConstant(Ls);
-        increment_scale.segment<3>(o + 3).setConstant(1.0);
-        increment_scale.segment<3>(o + 6).setConstant(Fs);
-        increment_scale.segment<3>(o + 9).setConstant(Fs * Ls);
+    for (int e = 0; e < nb.element_count; ++e) {
+        const int r = nb.element_row(e);
+        residual_scale.segment<3>(r).setConstant(Ls);           // f_F^−
+        residual_scale.segment(r + 3, K).setConstant(1.0);      // f_M^−
+        residual_scale.segment<3>(r + 3 + K).setConstant(Ls);   // f_F^+
+        residual_scale.segment(r + 6 + K, K).setConstant(1.0);  // f_M^+
+        const int c = nb.element_column(e);
+        increment_scale.segment<3>(c).setConstant(Ls);
+        increment_scale.segment(c + 3, K).setConstant(1.0);
+        increment_scale.segment<3>(c + 3 + K).setConstant(Fs);
+        increment_scale.segment<3>(c + 6 + K).setConstant(Fs * Ls);
     }
 }
 
-SparseMatrix mixed_pattern(const MixedLayout& layout) {
+SparseMatrix mixed_pattern(const MixedLayout& layout, const MixedNumbering& nb) {
     using Triplet = Eigen::Triplet<double, int>;
     std::vector<Triplet> t;
     auto block = [&t](int r0, int c0, int rows, int cols) {
@@ -189,22 +232,34 @@ SparseMatrix mixed_pattern(const MixedLayout& layout) {
             for (int i = 0; i < rows; ++i) t.emplace_back(r0 + i, c0 + j, 0.0);
         }
     };
-    for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
-        const int o = layout.node_offset(n);
-        block(o, o, 6, 6);  // reactions and follower point-load stiffness
+    const int K = nb.rotation_size;
+    for (int n = 0; n < nb.node_count(); ++n) {
+        // Reactions (supported) or the follower point-load stiffness against ĉ (free).
+        block(nb.node_row(n), nb.node_column(n), 6, nb.supported(n) ? 6 : 3 + K);
     }
-    for (int e = 0; e < layout.element_count(); ++e) {
+    for (int e = 0; e < nb.element_count; ++e) {
         const MixedElement& el = layout.elements[static_cast<std::size_t>(e)];
-        const int o = layout.element_offset(e);
-        const int a = layout.node_offset(el.start_node);
-        const int b = layout.node_offset(el.end_node);
-        block(a, o + 3, 6, 9);  // f_u^−, f_ψ^− against c, F, M
-        block(b, o + 3, 6, 9);
-        block(o, o, 12, 12);    // kinematic rows against u, c, F, M
-        block(o, a, 6, 6);      // −û_a, −ĉ_a
-        block(o + 6, b, 6, 6);  // +û_b, +ĉ_b
+        const int r = nb.element_row(e);
+        const int c = nb.element_column(e);
+        // f_u^∓, f_ψ^∓ against c, F, M (and P, H and the rates in dynamics).
+        block(nb.node_row(el.start_node), c + 3, 6, nb.element_unknowns() - 3);
+        block(nb.node_row(el.end_node), c + 3, 6, nb.element_unknowns() - 3);
+        block(r, c, nb.element_rows(), nb.element_unknowns());  // the element's own rows
+        const int ends[2] = {el.start_node, el.end_node};
+        for (int side = 0; side < 2; ++side) {
+            const int n = ends[side];
+            const int rn = r + (3 + K) * side;
+            // ∓û, ∓ĉ. Without a redundant parameter the block is reserved at a support too (zero
+            // there, where û, ĉ are given): that has always been the three-parameter pattern, and
+            // the pattern decides the sparse LU's fill-reducing ordering, hence the round-off.
+            if (!nb.supported(n) || nb.constraint_rows == 0)
+                block(rn, nb.node_column(n), 3 + K, 3 + K);
+            if (nb.has_scale(n)) block(rn + 3, nb.node_column(n) + 6, K, 1);  // ∓ρ ĉ_given
+        }
     }
-    SparseMatrix J(layout.size(), layout.size());
+    const int n = nb.size();
+    if (nb.free_norm) block(n - 1, nb.node_column(0) + 3, 1, K);  // the constraint row, q̂_0
+    SparseMatrix J(n, n);
     J.setFromTriplets(t.begin(), t.end());  // duplicates are summed (all zero)
     J.makeCompressed();
     return J;

@@ -1,10 +1,9 @@
 // The manufactured load fields (Model::load_fields) on one mixed element: f̄^∓ = ∫ N∓ f ds,
 // m̄^∓ = ∫ N∓ μ ds over the element with the linear end functions N∓ = (1 ∓ ξ)/2 — for a load
 // constant along the element these are seed 002's h f, h m (Eqs. 51–54), which is how the element
-// carries a constant load. The loads are dead (no Jacobian term). Used by both mixed statics
+// carries a constant load. The loads are dead (no Jacobian term). Used by the mixed statics
 // and the mixed dynamics (at λ = 1 and the step's time). The element is the chord of a
-// straight member here, so the arc length at ξ is s_mid + hξ. Shared by both mixed statics
-// classes (three parameters and the quaternion).
+// straight member here, so the arc length at ξ is s_mid + hξ.
 #pragma once
 
 #include <vector>
@@ -40,8 +39,8 @@ inline int add_mixed_load_fields(const std::vector<LoadField>& fields, const Mix
     return applied;
 }
 
-// The rule both classes integrate the fields with: 4 Gauss points, exact to degree 7 (the
-// element is second order; the integration error is far below its own).
+// The rule the statics and the dynamics integrate the fields with: 4 Gauss points, exact to degree
+// 7 (the element is second order; the integration error is far below its own).
 inline const QuadratureRule& mixed_load_field_rule() {
     static const QuadratureRule rule = gauss_legendre(4);
     return rule;

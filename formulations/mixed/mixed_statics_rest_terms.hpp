@@ -10,8 +10,8 @@
 #include <Eigen/LU>
 
 #include "core/errors.hpp"
+#include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamic_element.hpp"
-#include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 
 namespace rotbeam::form {
@@ -35,17 +35,18 @@ template <param::RotationParameterization P>
 void MixedStatics<P>::assemble_rest_terms(int e, int a, int b, VecX& residual,
                                           SparseMatrix* jacobian) {
     const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
-    const Vec3 c = x_.template segment<3>(layout_.element_offset(e) + 3);
+    const int column = numbering_.element_column(e) + 3;
+    const Params c = x_.template segment<K>(column);
     const Vec3 momentum = Vec3::Zero(), angular_momentum = Vec3::Zero();
-    MixedInertiaResult q;
+    MixedInertiaResult<K> q;
     mixed_element_inertia<P>(el, rest_mass_inverse_[static_cast<std::size_t>(e)], c, momentum,
-                             angular_momentum, MixedElementRates{}, jacobian != nullptr, q);
+                             angular_momentum, MixedElementRates<K>{}, jacobian != nullptr, q);
     ++counters_.inertial_terms;
     for (const int node : {a, b}) {
         residual.segment<3>(node) += q.fu;
         residual.segment<3>(node + 3) += q.fpsi;
         if (jacobian != nullptr) {
-            add_block(*jacobian, node, layout_.element_offset(e) + 3, q.J_x.block<6, 3>(0, 0));
+            add_mixed_block(*jacobian, node, column, q.J_x.template block<6, K>(0, 0));
         }
     }
 }

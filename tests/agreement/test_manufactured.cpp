@@ -14,7 +14,7 @@
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 
 using namespace rotbeam;
 

@@ -16,11 +16,11 @@
 
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 #include "tests/mixed/models.hpp"
 #include "tests/scaling/per_iteration.hpp"
 

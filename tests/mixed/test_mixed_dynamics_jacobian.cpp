@@ -7,10 +7,10 @@
 
 #include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 
@@ -33,15 +33,15 @@ void moving_state(const form::MixedDynamics<P>& dyn, VecX& x, VecX& xdot) {
         x[i] = 0.5 * std::sin(0.37 * i + 0.2);
         xdot[i] = 0.7 * std::cos(0.53 * i + 0.1);
     }
-    const form::MixedDynamicNumbering& nb = dyn.numbering();
+    const form::MixedNumbering& nb = dyn.numbering();
     auto set_rotation = [&](int offset, int k) {
         const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
         x.segment<3>(offset) = P::from_rotation_vector((base + 0.5 * std::sin(1.3 * k)) * axis);
     };
-    for (int node = 0; node < nb.nodes; ++node) {
-        if (!dyn.layout().supported(node)) set_rotation(nb.node_offset(node) + 3, node);
+    for (int node = 0; node < nb.node_count(); ++node) {
+        if (!dyn.layout().supported(node)) set_rotation(nb.node_column(node) + 3, node);
     }
-    for (int e = 0; e < nb.elements; ++e) set_rotation(nb.element_offset(e) + nb.c(), e + 7);
+    for (int e = 0; e < nb.element_count; ++e) set_rotation(nb.element_column(e) + nb.c(), e + 7);
 }
 
 }  // namespace
@@ -97,12 +97,13 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(at_rest_the_momentum_rows_vanish, P, Parameterizat
     form::MixedDynamics<P> dyn(test::dynamic_test_model(), 1.0);
     VecX x, xd;
     moving_state(dyn, x, xd);
-    const form::MixedDynamicNumbering& nb = dyn.numbering();
-    for (int e = 0; e < nb.elements; ++e) x.segment<6>(nb.element_offset(e) + nb.P()).setZero();
+    const form::MixedNumbering& nb = dyn.numbering();
+    for (int e = 0; e < nb.element_count; ++e)
+        x.segment<6>(nb.element_column(e) + nb.P()).setZero();
     VecX r;
     dyn.evaluate(0.2, x, VecX::Zero(dyn.size()), r, nullptr, nullptr);
-    for (int e = 0; e < nb.elements; ++e) {
-        BOOST_TEST(r.segment<6>(nb.element_offset(e) + nb.P()).cwiseAbs().maxCoeff() == 0.0);
+    for (int e = 0; e < nb.element_count; ++e) {
+        BOOST_TEST(r.segment<6>(nb.element_column(e) + nb.P()).cwiseAbs().maxCoeff() == 0.0);
     }
 }
 
@@ -118,10 +119,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(evaluation_allocates_nothing_after_first_call, P, 
     dyn.evaluate(0.3, x, xd, r, nullptr, nullptr);
     BOOST_TEST(test::allocation_count() - before == 0);
     BOOST_TEST(Jx.outerIndexPtr() == outer);
-    const form::MixedDynamicNumbering& nb = dyn.numbering();
+    const form::MixedNumbering& nb = dyn.numbering();
     // 18 unknowns per element, 6 per node (seed 002 after Eq. 56: 18N + 6M).
-    BOOST_TEST(dyn.size() == 18 * nb.elements + 6 * nb.nodes);
-    BOOST_TEST(dyn.counters().inertial_terms == 3L * nb.elements);
+    BOOST_TEST(dyn.size() == 18 * nb.element_count + 6 * nb.node_count());
+    BOOST_TEST(dyn.counters().inertial_terms == 3L * nb.element_count);
 }
 
 // The counters say which terms a scene needs: a follower point load's stiffness

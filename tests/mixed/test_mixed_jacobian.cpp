@@ -6,10 +6,10 @@
 
 #include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/deformed_model.hpp"
 #include "tests/mixed/models.hpp"
@@ -26,16 +26,16 @@ template <class P>
 VecX deformed_state(const form::MixedStatics<P>& problem, double base_angle = 2.1) {
     VecX x(problem.size());
     for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 0.5 * std::sin(0.37 * i + 0.2);
-    const form::MixedLayout& layout = problem.layout();
+    const form::MixedNumbering& layout = problem.numbering();
     auto set_rotation = [&](int offset, int k) {
         const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
         x.segment<3>(offset) =
             P::from_rotation_vector((base_angle + 0.5 * std::sin(1.3 * k)) * axis);
     };
-    for (int n = 0; n < static_cast<int>(layout.nodes.size()); ++n) {
-        if (!layout.supported(n)) set_rotation(layout.node_offset(n) + 3, n);
+    for (int n = 0; n < layout.node_count(); ++n) {
+        if (!layout.supported(n)) set_rotation(layout.node_column(n) + 3, n);
     }
-    for (int e = 0; e < layout.element_count(); ++e) set_rotation(layout.element_offset(e) + 3, e);
+    for (int e = 0; e < layout.element_count; ++e) set_rotation(layout.element_column(e) + 3, e);
     return x;
 }
 
@@ -84,9 +84,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_at_deformed_s
     BOOST_TEST(J_an.cwiseAbs().maxCoeff() > 1.0);  // the comparison is not vacuous
 }
 
-// GXBeam's continuous WM map (wm_continuous.hpp) past π, where the chain rule through
-// c = (1 − 8m/|θ|)θ is active: rotations 4.0–5.0 rad (|θ| in 4.9–7.2) and 6.5–7.5 rad (past 2π,
-// |θ| in 8.4–11). The FD step ≈ 6e-6·|θ| ≲ 7e-5 leaves a truncation error ≲ 1e-8 for third
+// GXBeam's continuous WM map (wiener_milenkovic_continuous.hpp) past π, where the chain rule
+// through c = (1 − 8m/|θ|)θ is active: rotations 4.0–5.0 rad (|θ| in 4.9–7.2) and 6.5–7.5 rad (past
+// 2π, |θ| in 8.4–11). The FD step ≈ 6e-6·|θ| ≲ 7e-5 leaves a truncation error ≲ 1e-8 for third
 // derivatives ≲ 10 (the map adds 1/|θ| factors ≤ 0.25); tolerance 1e-6 as above.
 BOOST_AUTO_TEST_CASE(continuous_wm_jacobian_matches_central_differences_past_pi_and_2pi) {
     using P = param::WienerMilenkovicContinuous;

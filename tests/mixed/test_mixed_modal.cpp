@@ -9,13 +9,12 @@
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
-#include "formulations/mixed/mixed_quaternion_dynamics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
-#include "formulations/mixed/wm_continuous.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "parameterizations/wiener_milenkovic_continuous.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -60,7 +59,7 @@ form::DaeModalSolution modes_of(const Model& model, int count, bool dense = fals
 // The quaternion's A, B about a static state of its statics (the reference one by default).
 void quaternion_operators(const Model& model, const VecX& static_state, SparseMatrix& A,
                           SparseMatrix& B) {
-    form::MixedQuaternionDynamics<param::Quaternion> dyn(model, 1.0);
+    form::MixedDynamics<param::Quaternion> dyn(model, 1.0);
     const VecX x0 = dyn.from_static_state(static_state);
     VecX r;
     dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
@@ -80,8 +79,7 @@ BOOST_AUTO_TEST_SUITE(mixed_modal)
 BOOST_AUTO_TEST_CASE(quaternion_modes_of_the_joined_beam_equal_the_three_parameter_ones) {
     const Model model = joined_beam(10);
     SparseMatrix A, B;
-    quaternion_operators(
-        model, form::MixedQuaternionStatics<param::Quaternion>(model).state_vector(), A, B);
+    quaternion_operators(model, form::MixedStatics<param::Quaternion>(model).state_vector(), A, B);
     const form::DaeModalSolution q = form::solve_dae_modal(A, B, 8);
     const form::DaeModalSolution qd = form::solve_dae_modal_dense(A, B, 8);
     const form::DaeModalSolution w = modes_of<param::WienerMilenkovic>(model, 8);
@@ -204,7 +202,7 @@ BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
     // The quaternion about its own static state: a different discretization of Eq. 48 (the
     // midpoint rule in four components), so close to WM's but not equal (the statics' tips differ
     // by O(ΔL²) at this deflection): within 1e-3, and Arnoldi = dense on its operator.
-    form::MixedQuaternionStatics<param::Quaternion> qs(model);
+    form::MixedStatics<param::Quaternion> qs(model);
     qs.set_load_factor(1.0);
     BOOST_REQUIRE(solve_newton(qs, NewtonSettings{}).converged);
     SparseMatrix Aq, Bq;
@@ -257,11 +255,10 @@ BOOST_AUTO_TEST_CASE(initial_condition_matrix_loses_six_ranks_on_the_closed_loop
     for (const bool loop : {false, true}) {
         const Model model = loop ? joined_beam(3) : cantilever;
         form::MixedDynamics<param::WienerMilenkovic> wm(model, 1.0);
-        form::MixedQuaternionDynamics<param::Quaternion> q(model, 1.0);
+        form::MixedDynamics<param::Quaternion> q(model, 1.0);
         const Eigen::VectorXd s_wm = initial_condition_singular_values(wm, VecX::Zero(wm.size()));
         const Eigen::VectorXd s_q = initial_condition_singular_values(
-            q, q.from_static_state(
-                   form::MixedQuaternionStatics<param::Quaternion>(model).state_vector()));
+            q, q.from_static_state(form::MixedStatics<param::Quaternion>(model).state_vector()));
         for (const Eigen::VectorXd* s : {&s_wm, &s_q}) {
             const Eigen::Index n = s->size();
             BOOST_TEST_MESSAGE((s == &s_wm ? "WM" : "quaternion")

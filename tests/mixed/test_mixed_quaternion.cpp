@@ -1,14 +1,13 @@
 // The mixed statics with four rotation unknowns (the quaternion; formulations/mixed/
-// mixed_quaternion_*.hpp): the unknown count, exactness of the reference
-// configuration, the analytic Jacobian against central differences at a strongly deformed state
-// off the unit sphere (one support, and two supports with the scale ρ), no heap allocation after
-// the first evaluation, and the norm conservation of the discrete Eq. 48.
+// mixed_statics.hpp with MixedNumbering's redundant parameter): the unknown count, exactness of the
+// reference configuration, the analytic Jacobian against central differences at a strongly deformed
+// state off the unit sphere (one support, and two supports with the scale ρ), no heap allocation
+// after the first evaluation, and the norm conservation of the discrete Eq. 48.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "core/finite_difference.hpp"
 #include "core/static_driver.hpp"
-#include "formulations/mixed/mixed_quaternion_statics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rotation_vector.hpp"
@@ -18,7 +17,7 @@
 
 using namespace rotbeam;
 using Q = param::Quaternion;
-using Statics = form::MixedQuaternionStatics<Q>;
+using Statics = form::MixedStatics<Q>;
 
 namespace {
 
@@ -37,18 +36,18 @@ Model two_support_model() {
 VecX deformed_state(const Statics& problem) {
     VecX x(problem.size());
     for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 0.5 * std::sin(0.37 * i + 0.2);
-    const form::MixedQuaternionLayout& layout = problem.layout();
+    const form::MixedNumbering& layout = problem.numbering();
     auto set_rotation = [&](int column, int k) {
         const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
         const double scale = 1.0 + 0.2 * std::sin(2.1 * k + 0.4);
         x.segment<4>(column) =
             scale * Q::from_rotation_vector((2.1 + 0.5 * std::sin(1.3 * k)) * axis);
     };
-    for (int n = 0; n < static_cast<int>(layout.base.nodes.size()); ++n) {
+    for (int n = 0; n < layout.node_count(); ++n) {
         if (!layout.supported(n)) set_rotation(layout.node_column(n) + 3, n);
         if (layout.has_scale(n)) x[layout.node_column(n) + 6] = -0.9;
     }
-    for (int e = 0; e < layout.base.element_count(); ++e) {
+    for (int e = 0; e < layout.element_count; ++e) {
         set_rotation(layout.element_column(e) + 3, e + 7);
     }
     return x;
@@ -113,15 +112,15 @@ double jacobian_error(const Model& model) {
 BOOST_AUTO_TEST_SUITE(mixed_quaternion_statics)
 
 // Per element u, q, F, M = 13 unknowns, per free node û, q̂ = 7, per support 6 reactions (+ ρ
-// after the first); rows 14 per element, 6 per node: square (mixed_quaternion_layout.hpp).
+// after the first); rows 14 per element, 6 per node: square (mixed_layout.hpp).
 BOOST_AUTO_TEST_CASE(unknown_count_is_square_for_one_and_two_supports) {
     for (const int n : {1, 16, 256}) {
         const Statics rollup(test::rollup_model(n));
         BOOST_TEST(rollup.size() == 13 * n + 7 * n + 6);  // N elements, N free nodes, one clamp
     }
     const Statics one(test::deformed_test_model());
-    const int e = one.layout().base.element_count();
-    const int nodes = static_cast<int>(one.layout().base.nodes.size());
+    const int e = one.numbering().element_count;
+    const int nodes = one.numbering().node_count();
     BOOST_TEST(e == 6);
     BOOST_TEST(one.size() == 13 * e + 7 * (nodes - 1) + 6);
     BOOST_TEST(one.size() == 14 * e + 6 * nodes);
@@ -215,7 +214,7 @@ BOOST_AUTO_TEST_CASE(two_clamps_solve_with_unit_scale_and_second_order_agreement
         form::MixedStatics<param::RotationVector> rotation_vector(joined_beam_model(n));
         const Vec3 uq = joined_beam_joint(quaternion);
         const Vec3 ur = joined_beam_joint(rotation_vector);
-        const form::MixedQuaternionLayout& layout = quaternion.layout();
+        const form::MixedNumbering& layout = quaternion.numbering();
         const double rho = quaternion.state_vector()[layout.node_column(1) + 6];
         BOOST_TEST_REQUIRE(layout.has_scale(1));
         BOOST_TEST(std::abs(rho - 1.0) < 1e-12);

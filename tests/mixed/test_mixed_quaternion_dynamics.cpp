@@ -1,4 +1,4 @@
-// The mixed dynamics with the quaternion (formulations/mixed/mixed_quaternion_dynamics.*): the
+// The mixed dynamics with the quaternion (formulations/mixed/mixed_dynamics.hpp): the
 // unknown count, ∂F/∂X and ∂F/∂Ẋ against central differences at a deformed, moving state off the
 // unit sphere (one support, and a second, prescribed and moving support with the scale ρ), the
 // radial rate entering nowhere, no allocation after the first evaluation, consistent initial
@@ -9,16 +9,15 @@
 
 #include "core/dae_driver.hpp"
 #include "core/finite_difference.hpp"
-#include "formulations/mixed/mixed_quaternion_dynamics.hpp"
-#include "formulations/mixed/mixed_quaternion_statics.hpp"
+#include "formulations/mixed/mixed_dynamics.hpp"
+#include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 
 using namespace rotbeam;
 using Q = param::Quaternion;
-using Dynamics = form::MixedQuaternionDynamics<Q>;
-using Block = form::MixedQuaternionDynamicBlock;
+using Dynamics = form::MixedDynamics<Q>;
 
 namespace {
 
@@ -54,7 +53,7 @@ void moving_state(const Dynamics& dyn, VecX& x, VecX& xdot) {
     };
     for (int n = 0; n < dyn.node_count(); ++n) {
         if (!dyn.supported(n)) set_rotation(dyn.node_column(n) + 3, n);
-        if (dyn.layout().has_scale(n)) x[dyn.node_column(n) + 6] = -0.9;
+        if (dyn.numbering().has_scale(n)) x[dyn.node_column(n) + 6] = -0.9;
     }
     for (int e = 0; e < dyn.element_count(); ++e) set_rotation(dyn.element_column(e) + 3, e + 7);
 }
@@ -89,7 +88,7 @@ std::pair<double, double> jacobian_errors(Dynamics& dyn, const VecX& x0, const V
         if (dyn.differential()[j] == 0.0) BOOST_TEST(Jd.col(j).cwiseAbs().maxCoeff() == 0.0);
     }
     for (int e = 0; e < dyn.element_count(); ++e) {
-        const int c = dyn.element_column(e) + Block::q;
+        const int c = dyn.element_column(e) + dyn.numbering().c();
         const VecX radial = Jd.middleCols<4>(c) * x0.segment<4>(c);
         BOOST_TEST(radial.cwiseAbs().maxCoeff() < 1e-14 * Jd.middleCols<4>(c).norm());
     }
@@ -132,7 +131,7 @@ BOOST_AUTO_TEST_CASE(jacobians_match_central_differences_at_moving_deformed_stat
         BOOST_TEST(ex < 1e-6);
         BOOST_TEST(exd < 1e-6);
         BOOST_TEST(dyn.max_rotation_angle(x0) > 2.0);
-        BOOST_TEST(dyn.layout().has_scale(2) == two_supports);  // the tip's ρ column
+        BOOST_TEST(dyn.numbering().has_scale(2) == two_supports);  // the tip's ρ column
     }
 }
 
@@ -140,7 +139,7 @@ BOOST_AUTO_TEST_CASE(jacobians_match_central_differences_at_moving_deformed_stat
 // statics' at the same state: a static equilibrium is a dynamic one.
 BOOST_AUTO_TEST_CASE(at_rest_the_residual_is_the_static_one) {
     const Model model = test::dynamic_test_model();
-    form::MixedQuaternionStatics<Q> statics(model);
+    form::MixedStatics<Q> statics(model);
     Dynamics dyn(model, 1.0);
     VecX xs(statics.size());
     for (int i = 0; i < statics.size(); ++i) xs[i] = 0.5 * std::sin(0.37 * i + 0.2);
@@ -154,10 +153,10 @@ BOOST_AUTO_TEST_CASE(at_rest_the_residual_is_the_static_one) {
     BOOST_TEST((rd.head(node_rows) - rs.head(node_rows)).cwiseAbs().maxCoeff() < 1e-12);
     for (int e = 0; e < dyn.element_count(); ++e) {
         const int r = dyn.element_row(e);
-        BOOST_TEST((rd.segment<14>(r) - rs.segment<14>(statics.layout().element_row(e)))
+        BOOST_TEST((rd.segment<14>(r) - rs.segment<14>(statics.numbering().element_row(e)))
                        .cwiseAbs()
                        .maxCoeff() < 1e-12);
-        BOOST_TEST(rd.segment<6>(r + Block::fP).cwiseAbs().maxCoeff() == 0.0);
+        BOOST_TEST(rd.segment<6>(r + dyn.numbering().fP()).cwiseAbs().maxCoeff() == 0.0);
     }
 }
 
@@ -202,7 +201,7 @@ BOOST_AUTO_TEST_CASE(follower_point_load_stiffness_is_counted) {
 BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
     const Model model = test::dynamic_test_model();
     Dynamics dyn(model, 1.0);
-    VecX x0 = dyn.from_static_state(form::MixedQuaternionStatics<Q>(model).state_vector());
+    VecX x0 = dyn.from_static_state(form::MixedStatics<Q>(model).state_vector());
     dyn.set_translational_momenta(x0, Vec3(0.3, -0.2, 0.5));
     const VecX xd0 = VecX::Zero(dyn.size());
     const double t0 = 0.4;
@@ -239,7 +238,7 @@ BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
     const double dxd = (xd_ic - xdn).cwiseAbs().maxCoeff() / xdn.cwiseAbs().maxCoeff();
     double kept = 0.0, tangent = 0.0;
     for (int e = 0; e < dyn.element_count(); ++e) {
-        const int c = dyn.element_column(e) + Block::q;
+        const int c = dyn.element_column(e) + dyn.numbering().c();
         kept = std::max(kept, (x_ic.segment<4>(c) - x0.segment<4>(c)).cwiseAbs().maxCoeff());
         tangent = std::max(tangent, std::abs(x_ic.segment<4>(c).dot(xd_ic.segment<4>(c))));
     }
@@ -263,7 +262,7 @@ BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
 BOOST_AUTO_TEST_CASE(fixed_step_run_keeps_the_node_norms_at_round_off) {
     Model model = test::dynamic_test_model();
     Dynamics dyn(model, 0.5);
-    VecX x = dyn.from_static_state(form::MixedQuaternionStatics<Q>(model).state_vector());
+    VecX x = dyn.from_static_state(form::MixedStatics<Q>(model).state_vector());
     dyn.set_translational_momenta(x, Vec3(0.0, 0.0, 6.0));
     VecX xd = VecX::Zero(dyn.size());
     DaeSettings s;
@@ -276,8 +275,7 @@ BOOST_AUTO_TEST_CASE(fixed_step_run_keeps_the_node_norms_at_round_off) {
             nodes = std::max(nodes, dyn.norm_drift(xs, t).nodes);
             angle = std::max(angle, dyn.max_rotation_angle(xs));
             for (int e = 0; e < dyn.element_count(); ++e) {
-                const form::MixedElement& el =
-                    dyn.layout().base.elements[static_cast<std::size_t>(e)];
+                const form::MixedElement& el = dyn.layout().elements[static_cast<std::size_t>(e)];
                 auto node_q = [&](int n) -> Vec4 {
                     return dyn.supported(n) ? Vec4(Q::identity())
                                             : Vec4(xs.segment<4>(dyn.node_column(n) + 3));

@@ -72,8 +72,9 @@ VecX first_mode_state(form::MixedDynamics<P>& dyn, double amplitude) {
     const form::DaeModalSolution m = form::solve_dae_modal(A, B, 1);
     const form::VecXc phi = m.shapes[0] / m.shapes[0][6 * 1 + 2];  // tip node (point 1), u_z
     VecX x = amplitude * phi.real();
-    const form::MixedDynamicNumbering& nb = dyn.numbering();
-    for (int e = 0; e < nb.elements; ++e) x.segment<6>(nb.element_offset(e) + nb.P()).setZero();
+    const form::MixedNumbering& nb = dyn.numbering();
+    for (int e = 0; e < nb.element_count; ++e)
+        x.segment<6>(nb.element_column(e) + nb.P()).setZero();
     return x;
 }
 
@@ -162,11 +163,11 @@ DaeSettings toy_settings() {
 // per element (constant momenta and resultants per element: exact for the discrete element).
 template <class P>
 double total_energy(const Model& model, const form::MixedDynamics<P>& dyn, const VecX& x) {
-    const form::MixedDynamicNumbering& nb = dyn.numbering();
+    const form::MixedNumbering& nb = dyn.numbering();
     double energy = 0.0;
-    for (int e = 0; e < nb.elements; ++e) {
+    for (int e = 0; e < nb.element_count; ++e) {
         const form::MixedElement& el = dyn.layout().elements[static_cast<std::size_t>(e)];
-        const int o = nb.element_offset(e);
+        const int o = nb.element_column(e);
         const Vec6 momenta = x.segment<6>(o + nb.P());
         const Vec6 resultants = x.segment<6>(o + nb.F());
         const Mat6 I = form::mixed_element_mass(model, el);

@@ -48,6 +48,7 @@ cantilever-moment displacement quaternion - inertial_terms
 cantilever-moment displacement rodrigues analysis.load_factors=[0.8] damping_terms
 bend-45 displacement wiener-milenkovic - follower_stiffness
 cantilever-moment mixed wiener-milenkovic analysis.load_factors=[0.8] inertial_terms
+cantilever-moment mixed quaternion analysis.load_factors=[0.8] inertial_terms
 bend-45 mixed rotation-vector - inertial_terms
 joined-beam displacement rotation-vector - inertial_terms
 joined-beam mixed wiener-milenkovic - -

@@ -1,5 +1,6 @@
 // Wiener–Milenković parameters with GXBeam's continuous rescaling map, as a parameterization of
-// its own for the mixed statics.
+// its own (used by the mixed formulation, selected by discretization.wm_map: continuous; it is not
+// in the registry's list, which names the four parameterizations of every formulation).
 //
 // The unknown θ is unbounded; the rotation is that of the WM parameters (seed 002 Eq. 14)
 //     c(θ) = s θ,  s = 1 − 8m/|θ|,  m = round(|θ|/8)   (m = 0, c = θ for |θ| ≤ 4, i.e. φ ≤ π),
@@ -33,9 +34,9 @@ struct WienerMilenkovicContinuous {
     static constexpr bool kCanRescale = false;  // the map itself replaces rescaling
 
     struct Map {
-        double r = 0.0;   // |θ|
-        double m = 0.0;   // full turns
-        double s = 1.0;   // c = s θ
+        double r = 0.0;  // |θ|
+        double m = 0.0;  // full turns
+        double s = 1.0;  // c = s θ
         Vec3 c = Vec3::Zero();
         Mat3 J = Mat3::Identity();
     };
