@@ -18,7 +18,7 @@ namespace {
 template <class P>
 constexpr bool kMixedAvailable =
     std::is_same_v<P, param::WienerMilenkovic> || std::is_same_v<P, param::Rodrigues> ||
-    std::is_same_v<P, param::RotationVector>;
+    std::is_same_v<P, param::RotationVector> || std::is_same_v<P, param::EulerAngles>;
 
 }  // namespace
 
@@ -50,7 +50,8 @@ std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
                         "discretization.rotation: the mixed formulation is not "
                         "available with '" +
                         d.rotation +
-                        "' (quaternion | wiener-milenkovic | rodrigues | rotation-vector)");
+                        "' (quaternion | wiener-milenkovic | rodrigues | rotation-vector | "
+                        "euler-angles)");
                 }
             }
             throw InputError("discretization.formulation: unknown formulation '" + d.formulation +

@@ -6,6 +6,7 @@
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics_impl.hpp"
 #include "formulations/mixed/wm_continuous.hpp"
+#include "parameterizations/euler_angles.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -149,6 +150,7 @@ MixedMassInverses mixed_mass_inverses(const Model& model, const MixedLayout& lay
 template class MixedDynamics<param::WienerMilenkovic>;
 template class MixedDynamics<param::Rodrigues>;
 template class MixedDynamics<param::RotationVector>;
+template class MixedDynamics<param::EulerAngles>;
 template class MixedDynamics<param::WienerMilenkovicContinuous>;
 
 }  // namespace rotbeam::form
