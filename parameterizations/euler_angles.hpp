@@ -30,8 +30,9 @@
 // (a1 + π + 2πk1, π − a2 + 2πk2, a3 + π + 2πk3) (R3(π) R2(π − a2) R1(π) = R2(a2)); rescale returns
 // the one nearest the reference. angle(p) is the principal rotation angle of R(p) in [0, π]:
 // Euler angles carry no count of full turns.
-// compose and inverse go through the matrix (there is no closed-form Euler composition) and
-// return the principal parameters of from_matrix: a2 ∈ [−π/2, π/2], a1, a3 ∈ (−π, π].
+// compose and inverse go through the matrix (there is no closed-form Euler composition): compose
+// returns the parameters nearest a + b, inverse those nearest −p; from_matrix and
+// from_rotation_vector return the principal ones, a2 ∈ [−π/2, π/2], a1, a3 ∈ (−π, π].
 #pragma once
 
 #include <cmath>
@@ -113,16 +114,18 @@ struct EulerAngles {
         return principal(R);
     }
 
-    // R(compose(a, b)) = R(a) R(b), principal parameters.
+    // R(compose(a, b)) = R(a) R(b), the parameters nearest a + b (as the rotation vector's
+    // compose), so that an update compose(δ, p) by a small δ never jumps branch or full turn.
     static P compose(const P& a, const P& b) {
         checked(a, "compose");
         checked(b, "compose");
-        return principal(matrix(a) * matrix(b));
+        return nearest(principal(matrix(a) * matrix(b)), a + b);
     }
 
+    // The parameters of R(p)ᵀ nearest −p (−p itself when p turns about one axis only).
     static P inverse(const P& p) {
         checked(p, "inverse");
-        return principal(matrix(p).transpose());
+        return nearest(principal(matrix(p).transpose()), -p);
     }
 
     // (E2).
@@ -221,20 +224,24 @@ struct EulerAngles {
     static double singular_angle() { return 0.5 * kPi; }
 
     // The representative of R(p) nearest `reference` among the two branches shifted by 2π per
-    // component (header comment).
-    static P rescale(const P& p, const P& reference) {
-        checked(p, "rescale");
-        checked(reference, "rescale");
-        const auto nearest = [&](const P& q) {
+    // component (header comment). Unchecked: callers check their input.
+    static P nearest(const P& p, const P& reference) {
+        const auto shifted = [&](const P& q) {
             P out;
             for (int i = 0; i < 3; ++i) {
                 out[i] = q[i] + 2.0 * kPi * std::round((reference[i] - q[i]) / (2.0 * kPi));
             }
             return out;
         };
-        const P a = nearest(p);
-        const P b = nearest(P(p[0] + kPi, kPi - p[1], p[2] + kPi));
+        const P a = shifted(p);
+        const P b = shifted(P(p[0] + kPi, kPi - p[1], p[2] + kPi));
         return (b - reference).squaredNorm() < (a - reference).squaredNorm() ? b : a;
+    }
+
+    static P rescale(const P& p, const P& reference) {
+        checked(p, "rescale");
+        checked(reference, "rescale");
+        return nearest(p, reference);
     }
 
     static P from_rotation_vector(const Vec3& psi) {
