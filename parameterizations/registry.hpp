@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "parameterizations/concept.hpp"
+#include "parameterizations/euler_angles.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
@@ -28,11 +29,12 @@ struct TypeList {
     static constexpr bool kContains = (std::is_same_v<T, Ts> || ...);
 };
 
-using AllParameterizations = TypeList<Quaternion, WienerMilenkovic, Rodrigues, RotationVector>;
+using AllParameterizations =
+    TypeList<Quaternion, WienerMilenkovic, Rodrigues, RotationVector, EulerAngles>;
 
 // X(Type) for every parameterization, e.g. `#define INSTANTIATE(P) template class Beam<param::P>;`
 #define ROTBEAM_FOR_EACH_PARAMETERIZATION(X) \
-    X(Quaternion) X(WienerMilenkovic) X(Rodrigues) X(RotationVector)
+    X(Quaternion) X(WienerMilenkovic) X(Rodrigues) X(RotationVector) X(EulerAngles)
 
 namespace detail {
 // Both expand to an operator and its operand, to be chained after a first term (`0 +1 +1`);

@@ -10,7 +10,7 @@ namespace rotbeam::cases {
 
 const std::vector<std::string> kFormulations = {"displacement", "mixed"};
 const std::vector<std::string> kRotations = {"quaternion", "wiener-milenkovic", "rodrigues",
-                                             "rotation-vector"};
+                                             "rotation-vector", "euler-angles"};
 const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll"};
 const std::vector<std::string> kInterpolations = {"relative", "direct"};
 const std::vector<std::string> kUpdates = {"multiplicative", "additive"};

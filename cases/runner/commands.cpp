@@ -249,7 +249,8 @@ int command_run(const Args& args) {
         1,
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
         "result (docs/architecture.md). Exit 0 whatever the solver status, 2 on bad input.",
-        {{"rotation", "NAME", "quaternion | wiener-milenkovic | rodrigues | rotation-vector"},
+        {{"rotation", "NAME",
+          "quaternion | wiener-milenkovic | rodrigues | rotation-vector | euler-angles"},
          {"formulation", "NAME", "displacement | mixed"},
          {"elements", "N", "elements of every member (members.*.elements)"},
          {"order", "P", "element order (displacement formulation)"},

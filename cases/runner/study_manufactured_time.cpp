@@ -35,7 +35,8 @@ std::vector<TimeSeries> time_series(bool quick) {
     const std::vector<double> dm =
         quick ? std::vector<double>{0.05, 0.025} : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
     std::vector<TimeSeries> out;
-    for (const char* r : {"quaternion", "wiener-milenkovic", "rodrigues", "rotation-vector"}) {
+    for (const char* r :
+         {"quaternion", "wiener-milenkovic", "rodrigues", "rotation-vector", "euler-angles"}) {
         for (double rho : {0.5, 1.0}) {
             MotionRunSpec s;
             s.rotation = r;
@@ -51,7 +52,8 @@ std::vector<TimeSeries> time_series(bool quick) {
                                                           {"wiener-milenkovic", "plain"},
                                                           {"wiener-milenkovic", "continuous"},
                                                           {"rodrigues", "plain"},
-                                                          {"rotation-vector", "plain"}}) {
+                                                          {"rotation-vector", "plain"},
+                                                          {"euler-angles", "plain"}}) {
         MotionRunSpec s;
         s.formulation = "mixed";
         s.rotation = r;

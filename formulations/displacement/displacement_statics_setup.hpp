@@ -73,7 +73,7 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     if (additive_ && P::kSize != 3) {
         throw InputError(
             "discretization.update: additive needs a three-parameter rotation "
-            "(wiener-milenkovic | rodrigues | rotation-vector), not '" +
+            "(wiener-milenkovic | rodrigues | rotation-vector | euler-angles), not '" +
             std::string(P::kName) + "'");
     }
     const size_t nn = static_cast<size_t>(mesh_.order) + 1;

@@ -53,7 +53,7 @@ double max_column_error(D& d) {
 }
 
 using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                                   param::RotationVector>;
+                                   param::RotationVector, param::EulerAngles>;
 
 }  // namespace
 

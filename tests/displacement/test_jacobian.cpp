@@ -9,6 +9,7 @@
 #include <boost/mpl/list.hpp>
 
 #include "formulations/displacement/displacement_statics.hpp"
+#include "parameterizations/euler_angles.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -92,7 +93,7 @@ BOOST_AUTO_TEST_CASE(jacobian_matches_central_differences_through_retraction_fol
 
 // Every parameterization × {relative, direct} at the curved, twisted, follower-loaded state.
 using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                                   param::RotationVector>;
+                                   param::RotationVector, param::EulerAngles>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_every_parameterization_and_interpolation,
                               P, AllParams) {
     for (const char* interpolation : {"relative", "direct"}) {
@@ -107,7 +108,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_every_paramet
 // increment then sets the parameters themselves, so the rotations are smaller for Rodrigues
 // (1.8 rad) and WM (2.3 rad) than for the rotation vector (2.6 rad).
 using ThreeParams = boost::mpl::list<param::WienerMilenkovic, param::Rodrigues,
-                                     param::RotationVector>;
+                                     param::RotationVector, param::EulerAngles>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(additive_update_jacobian_matches_central_differences, P,
                               ThreeParams) {
     for (const char* interpolation : {"relative", "direct"}) {

@@ -106,7 +106,7 @@ BOOST_AUTO_TEST_SUITE_END()
 // The direct interpolation's nodal maps A_j (δψ) and K_j (δκ), for every parameterization,
 // against central differences through the nodal retraction p_j ← exp(δψ_j) ⊗ p_j.
 using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                                   param::RotationVector>;
+                                   param::RotationVector, param::EulerAngles>;
 
 BOOST_AUTO_TEST_SUITE(displacement_interpolation)
 

@@ -7,6 +7,7 @@
 
 #include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
+#include "parameterizations/euler_angles.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -15,8 +16,9 @@
 #include "tests/mixed/dynamic_models.hpp"
 
 using namespace rotbeam;
-using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues,
-                                     param::RotationVector, param::WienerMilenkovicContinuous>;
+using Parameterizations =
+    std::tuple<param::WienerMilenkovic, param::Rodrigues, param::RotationVector,
+               param::WienerMilenkovicContinuous, param::EulerAngles>;
 
 namespace {
 

@@ -6,6 +6,7 @@
 
 #include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
+#include "parameterizations/euler_angles.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
@@ -15,8 +16,8 @@
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
-using Parameterizations =
-    std::tuple<param::WienerMilenkovic, param::Rodrigues, param::RotationVector>;
+using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues,
+                                     param::RotationVector, param::EulerAngles>;
 
 namespace {
 

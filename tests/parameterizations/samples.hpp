@@ -15,8 +15,9 @@
 
 namespace rotbeam::test {
 
-using AllParameterizationTypes = boost::mpl::list<param::Quaternion, param::WienerMilenkovic,
-                                                  param::Rodrigues, param::RotationVector>;
+using AllParameterizationTypes =
+    boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
+                     param::RotationVector, param::EulerAngles>;
 
 inline constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -49,22 +50,25 @@ inline double distance_to_full_turns(double phi) {
 }
 
 // Whether from_rotation_vector(φ n) lies in P's chart (WM and Rodrigues end at their singular
-// angle; the quaternion and the rotation vector take any angle).
+// angle; the quaternion, the rotation vector and the Euler angles take any angle).
 template <class P>
 bool chart_contains(double phi) {
     if constexpr (std::is_same_v<P, param::RotationVector> ||
-                  std::is_same_v<P, param::Quaternion>) {
+                  std::is_same_v<P, param::Quaternion> || std::is_same_v<P, param::EulerAngles>) {
         return true;
     } else {
         return phi < P::singular_angle();
     }
 }
 
-// Distance δ (rad) to where P's tangent operators are singular.
+// Distance δ (rad) to where P's tangent operators are singular, for the rotation φ about the
+// generic axis (the Euler angles' singular set is gimbal lock, not an angle).
 template <class P>
 double tangent_distance(double phi) {
     if constexpr (std::is_same_v<P, param::Quaternion>) {
         return std::numeric_limits<double>::infinity();
+    } else if constexpr (std::is_same_v<P, param::EulerAngles>) {
+        return P::gimbal_distance(P::from_rotation_vector(phi * generic_axis()));
     } else if constexpr (std::is_same_v<P, param::RotationVector>) {
         return distance_to_full_turns(phi);
     } else {
@@ -73,10 +77,11 @@ double tangent_distance(double phi) {
 }
 
 // Distance δ (rad) to where P's conversion to a rotation vector is ill-conditioned: the
-// quaternion's axis is lost at 2πk (v → 0 with w → −1), WM and Rodrigues at their singular angle.
+// quaternion's axis is lost at 2πk (v → 0 with w → −1), WM and Rodrigues at their singular angle;
+// the Euler angles return the principal rotation vector of R, whose axis is lost at 2πk too.
 template <class P>
 double conversion_distance(double phi) {
-    if constexpr (std::is_same_v<P, param::Quaternion>) {
+    if constexpr (std::is_same_v<P, param::Quaternion> || std::is_same_v<P, param::EulerAngles>) {
         return distance_to_full_turns(phi);
     } else if constexpr (std::is_same_v<P, param::RotationVector>) {
         return std::numeric_limits<double>::infinity();
@@ -86,13 +91,16 @@ double conversion_distance(double phi) {
 }
 
 // The length over which P's functions of p vary: the parameter norm (at least 1) for R and H of
-// every chart (WM, Rodrigues and the quaternion are rational in p, the rotation vector's R and H
-// are entire); for the rotation vector's H⁻¹ ~ 1/δ also the distance δ to the singularity at 2πk.
+// every chart (WM, Rodrigues and the quaternion are rational in p, the rotation vector's and the
+// Euler angles' R and H are entire); for the rotation vector's H⁻¹ ~ 1/δ also the distance δ to
+// the singularity at 2πk, for the Euler angles' H⁻¹ ~ 1/cos a2 the distance to gimbal lock.
 template <class P>
 double variation_length(const typename P::P& p, bool of_inverse) {
     const double length = std::max(1.0, p.norm());
     if constexpr (std::is_same_v<P, param::RotationVector>) {
         return of_inverse ? std::min(length, distance_to_full_turns(p.norm())) : length;
+    } else if constexpr (std::is_same_v<P, param::EulerAngles>) {
+        return of_inverse ? std::min(length, P::gimbal_distance(p)) : length;
     } else {
         return length;
     }

@@ -149,6 +149,15 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(small_angle_matrix_and_tangent_are_accurate_to_1e1
     BOOST_TEST((R.diagonal() - Vec3::Ones()).norm() <= 2.0 * kEps);
     const param::Tangent<P::kSize> Hs = P::spatial_tangent(p);
     const param::Tangent<P::kSize> Hm = P::material_tangent(p);
+    if constexpr (std::is_same_v<P, param::EulerAngles>) {
+        // Euler angles have no series branch, and their H is not I ± ψ̃/2 to first order: with
+        // p = (a1, a2, a3), H_s = I + [0 −a3 0; a3 0 0; −a2 0 0] + O(φ²) and
+        // H_m = I + [0 0 −a2; 0 0 a1; 0 −a1 0] + O(φ²) (euler_angles.hpp, E2 and E3), whose
+        // skew parts are (0, a2/2, a3) and (−a1, −a2/2, 0), to 1e-15 relative at φ = 1e-9.
+        BOOST_TEST((so3::axial(Hs) - Vec3(0.0, 0.5 * p[1], p[2])).norm() <= 1e-15 * psi.norm());
+        BOOST_TEST((so3::axial(Hm) - Vec3(-p[0], -0.5 * p[1], 0.0)).norm() <= 1e-15 * psi.norm());
+        return;
+    }
     Mat3 Bs, Bm;  // the 3×3 block that multiplies the vector part
     if constexpr (P::kSize == 4) {
         // q = (cos φ/2, sin φ/2 n): H = 2 E(q), block = I ± ψ̃ (1 + O(φ²)), column 0 = −ψ.

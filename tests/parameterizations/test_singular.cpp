@@ -127,6 +127,53 @@ BOOST_AUTO_TEST_CASE(rotation_vector_tangents_refuse_full_turns_but_its_matrix_d
     BOOST_TEST(RV::spatial_tangent_inverse(3.0 * kPi * n).allFinite());
 }
 
+BOOST_AUTO_TEST_CASE(euler_angles_tangents_refuse_gimbal_lock_but_their_matrix_does_not) {
+    using E = param::EulerAngles;
+    for (double a2 : {0.5 * kPi, -0.5 * kPi, 1.5 * kPi}) {
+        const Vec3 p(0.3, a2, -0.2);
+        BOOST_TEST_CONTEXT("at a2 = " << a2) {
+            const Mat3 R = E::matrix(p);
+            BOOST_TEST((R.transpose() * R - Mat3::Identity()).norm() <= 8.0 * kEps);
+            // At lock only a1 ∓ a3 is determined; from_matrix picks a split with the same R.
+            BOOST_TEST((E::matrix(E::from_matrix(R)) - R).norm() <= 8.0 * kEps);
+            const double phi = refusal_angle<E>([&] { E::spatial_tangent(p); }, "spatial_tangent");
+            BOOST_TEST(phi == so3::rotation_angle(R), boost::test_tools::tolerance(1e-14));
+            BOOST_CHECK_THROW(E::material_tangent(p), SingularityError);
+            BOOST_CHECK_THROW(E::spatial_tangent_inverse(p), SingularityError);
+            BOOST_CHECK_THROW(E::material_tangent_inverse(p), SingularityError);
+            BOOST_CHECK_THROW(E::spatial_tangent_derivative(p, p), SingularityError);
+            BOOST_CHECK_THROW(E::material_tangent_derivative(p, p), SingularityError);
+            BOOST_CHECK_THROW(E::spatial_tangent_inverse_derivative(p, p), SingularityError);
+            BOOST_CHECK_THROW(E::material_tangent_inverse_derivative(p, p), SingularityError);
+            BOOST_TEST(E::gimbal_distance(p) <= 2.0 * kEps * std::abs(a2));
+        }
+    }
+    // On the roll-up (a bend about the middle axis y) lock is a quarter turn: singular_angle().
+    const Vec3 quarter = E::from_rotation_vector(Vec3(0.0, 0.5 * kPi, 0.0));
+    BOOST_TEST(E::gimbal_distance(quarter) <= 1e-15);
+    BOOST_TEST(E::singular_angle() == 0.5 * kPi);
+    BOOST_CHECK_THROW(E::material_tangent_inverse(quarter), SingularityError);
+    // A quarter turn about x or z is nowhere near lock.
+    BOOST_TEST(E::gimbal_distance(E::from_rotation_vector(Vec3(0.5 * kPi, 0.0, 0.0))) == 0.5 * kPi);
+    BOOST_TEST(E::gimbal_distance(E::from_rotation_vector(Vec3(0.0, 0.0, 0.5 * kPi))) == 0.5 * kPi);
+    // The guard is 1e-12 rad of the middle angle.
+    BOOST_TEST(E::material_tangent_inverse(Vec3(0.3, 0.5 * kPi - 2e-12, -0.2)).allFinite());
+    BOOST_CHECK_THROW(E::material_tangent_inverse(Vec3(0.3, 0.5 * kPi - 0.5e-12, -0.2)),
+                      SingularityError);
+}
+
+BOOST_AUTO_TEST_CASE(euler_angles_rescale_switches_branch_and_full_turns) {
+    // (a1 + π, π − a2, a3 + π) is the same rotation (R3(π) R2(π − a2) R1(π) = R2(a2)).
+    using E = param::EulerAngles;
+    const Vec3 p(2.9, 0.5 * kPi + 0.3, -3.0);
+    const Vec3 other(2.9 - kPi, 0.5 * kPi - 0.3, -3.0 + kPi);  // the branch nearest 0
+    BOOST_TEST((E::matrix(other) - E::matrix(p)).norm() <= 8.0 * kEps);
+    BOOST_TEST((E::rescale(p, Vec3::Zero()) - other).norm() <= 8.0 * kEps);
+    BOOST_TEST((E::rescale(p, p) - p).norm() == 0.0);
+    const Vec3 turned(0.4 + 4.0 * kPi, 0.1 - 2.0 * kPi, -0.2);
+    BOOST_TEST((E::rescale(turned, Vec3::Zero()) - Vec3(0.4, 0.1, -0.2)).norm() <= 32.0 * kEps);
+}
+
 BOOST_AUTO_TEST_CASE(quaternion_refuses_zero_and_has_no_singular_angle) {
     using Q = param::Quaternion;
     refusal_angle<Q>([] { Q::matrix(Vec4::Zero()); }, "matrix");

@@ -24,6 +24,15 @@ std::vector<std::pair<std::string, Vp<P>>> tangent_samples() {
         out.emplace_back(s.label, p);
         if constexpr (P::kSize == 4) out.emplace_back(s.label + " x1.7", Vp<P>(1.7 * p));
     }
+    if constexpr (std::is_same_v<P, param::EulerAngles>) {
+        // Euler angles' singular set is gimbal lock (a2 = ±π/2), which no sample about the generic
+        // axis comes near: approach it from both sides, and take a parameter on the second branch
+        // (|a2| > π/2) and one past 2π.
+        out.emplace_back("a2 = pi/2 - 1e-3", Vp<P>(0.4, 0.5 * kPi - 1e-3, -1.1));
+        out.emplace_back("a2 = -pi/2 + 1e-6", Vp<P>(-2.9, -0.5 * kPi + 1e-6, 2.5));
+        out.emplace_back("a2 = pi/2 + 0.3", Vp<P>(0.7, 0.5 * kPi + 0.3, 0.2));
+        out.emplace_back("a1, a3 past 2pi", Vp<P>(7.0, -0.4, -6.9));
+    }
     return out;
 }
 

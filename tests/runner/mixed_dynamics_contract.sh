@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-for rotation in wiener-milenkovic rodrigues rotation-vector quaternion; do
+for rotation in wiener-milenkovic rodrigues rotation-vector euler-angles quaternion; do
     for integrator in trapezoidal ida; do
         out="$work/$rotation-$integrator"
         "$rotbeam" run "$src/cases/joined-beam-follower.yaml" --formulation mixed --rotation "$rotation" \

@@ -32,7 +32,7 @@ expect_input_error "unknown option" run cantilever-moment --rotaton quaternion
 grep -q "did you mean '--rotation'" "$work/err" || fail "no suggestion for --rotaton"
 expect_input_error "zero elements" run cantilever-moment --elements 0
 expect_input_error "missing case" run no-such-case.yaml
-expect_input_error "unknown parameterization" run cantilever-moment --rotation euler-angles --json "$work/r.json"
+expect_input_error "unknown parameterization" run cantilever-moment --rotation cayley --json "$work/r.json"
 [ ! -e "$work/r.json" ] || fail "a result file was written for bad input"
 expect_input_error "bad --estimate" run cantilever-moment --estimate maybe --json "$work/r.json"
 grep -q -- "--estimate" "$work/err" || fail "bad --estimate not named: $(cat "$work/err")"
@@ -134,7 +134,8 @@ done
 
 # list names every parameterization and formulation.
 "$rotbeam" list >"$work/list" || fail "list failed"
-for name in quaternion wiener-milenkovic rodrigues rotation-vector displacement mixed cantilever-moment bend-45; do
+for name in quaternion wiener-milenkovic rodrigues rotation-vector euler-angles displacement mixed \
+    cantilever-moment bend-45; do
     grep -qw -- "$name" "$work/list" || fail "list does not show $name"
 done
 

@@ -19,7 +19,7 @@ runs = os.path.join(sys.argv[1], "runs")
 names = os.listdir(runs)
 for case in ("joined-beam-dead", "joined-beam-follower"):
     mine = [n for n in names if n.startswith(case + "_")]
-    assert len(mine) == 8, (case, mine)  # 2 formulations × 4 parameterizations
+    assert len(mine) == 10, (case, mine)  # 2 formulations × 5 parameterizations
     # Every combination has the dynamic analysis: each run must reach t = 2 s with a solution.
     # The displacement runs' time steps meet the case's 1e-12 residual tolerance or stall at
     # their round-off floor (docs/solver-convergence.md), which the message must quantify.
