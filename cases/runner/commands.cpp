@@ -9,14 +9,14 @@
 
 #include "arguments.hpp"
 #include "cases/loader/case_loader.hpp"
-#include "continuum_json.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
-#include "history_csv.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
-#include "run_case.hpp"
-#include "studies.hpp"
+#include "runs/continuum_json.hpp"
+#include "runs/history_csv.hpp"
+#include "runs/run_case.hpp"
+#include "studies/studies.hpp"
 
 namespace rotbeam::cli {
 

@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "core/errors.hpp"
-#include "parallel.hpp"
-#include "studies.hpp"
+#include "runs/parallel.hpp"
+#include "studies/studies.hpp"
 
 namespace rotbeam::cli {
 

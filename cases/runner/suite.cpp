@@ -26,12 +26,12 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
-#include "parallel.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
-#include "report.hpp"
-#include "run_case.hpp"
-#include "studies.hpp"
+#include "reports/report.hpp"
+#include "runs/parallel.hpp"
+#include "runs/run_case.hpp"
+#include "studies/studies.hpp"
 
 namespace rotbeam::cli {
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <vector>
 
-#include "cases/runner/mode_matching.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -18,6 +17,7 @@
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "runs/mode_matching.hpp"
 #include "tests/agreement/agreement_runs.hpp"
 
 using namespace rotbeam;

@@ -2,7 +2,7 @@
 // (cases/runner/mode_matching.hpp).
 #include <boost/test/unit_test.hpp>
 
-#include "cases/runner/mode_matching.hpp"
+#include "runs/mode_matching.hpp"
 
 using namespace rotbeam;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "cases/runner/study_extrapolation.hpp"
+#include "studies/study_extrapolation.hpp"
 
 using namespace rotbeam::cli;
 

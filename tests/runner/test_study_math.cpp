@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cases/runner/study_math.hpp"
-#include "cases/runner/timing.hpp"
+#include "runs/timing.hpp"
+#include "studies/study_math.hpp"
 
 using namespace rotbeam::cli;
 

@@ -27,7 +27,7 @@
 #include "core/results.hpp"
 #include "core/version.hpp"
 #include "joined_beam_dynamics.hpp"
-#include "parallel.hpp"
+#include "runs/parallel.hpp"
 #include "studies.hpp"
 #include "study_plot.hpp"
 

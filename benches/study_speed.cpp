@@ -10,12 +10,12 @@
 
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
-#include "commands.hpp"
+#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
-#include "studies.hpp"
-#include "study_math.hpp"
-#include "study_plot.hpp"
-#include "timing.hpp"
+#include "runs/timing.hpp"
+#include "studies/studies.hpp"
+#include "studies/study_math.hpp"
+#include "studies/study_plot.hpp"
 
 namespace rotbeam::cli {
 

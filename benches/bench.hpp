@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "study_common.hpp"
+#include "studies/study_common.hpp"
 
 namespace rotbeam::cli {
 

@@ -6,14 +6,14 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "commands.hpp"
-#include "continuum_json.hpp"
+#include "cases/runner/commands.hpp"
 #include "core/errors.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/results.hpp"
 #include "parameterizations/registry.hpp"
-#include "report.hpp"
-#include "run_case.hpp"
+#include "reports/report.hpp"
+#include "runs/continuum_json.hpp"
+#include "runs/run_case.hpp"
 
 namespace rotbeam::cli {
 

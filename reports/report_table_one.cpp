@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "commands.hpp"
+#include "cases/runner/commands.hpp"
 #include "core/oracles/rollup.hpp"
 
 namespace rotbeam::cli {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "bench.hpp"
+#include "benches/bench.hpp"
 #include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"

@@ -19,10 +19,10 @@
 
 #include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
+#include "runs/timing.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
-#include "timing.hpp"
 
 namespace rotbeam::cli {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "commands.hpp"
+#include "cases/runner/commands.hpp"
 #include "report_dynamics.hpp"
 
 namespace rotbeam::cli {

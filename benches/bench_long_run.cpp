@@ -16,9 +16,9 @@
 
 #include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
-#include "joined_beam_dynamics.hpp"
-#include "study_common.hpp"
-#include "timing.hpp"
+#include "runs/timing.hpp"
+#include "studies/joined_beam_dynamics.hpp"
+#include "studies/study_common.hpp"
 
 namespace rotbeam::cli {
 

@@ -20,7 +20,7 @@
 #include "core/version.hpp"
 #include "report_dynamics.hpp"
 #include "report_table_one.hpp"
-#include "studies.hpp"
+#include "studies/studies.hpp"
 
 namespace rotbeam::cli {
 

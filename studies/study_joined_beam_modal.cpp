@@ -15,7 +15,7 @@
 
 #include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
-#include "mode_matching.hpp"
+#include "runs/mode_matching.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
 #include "study_extrapolation.hpp"

@@ -7,12 +7,12 @@
 #include <iostream>
 #include <sstream>
 
-#include "commands.hpp"
+#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
-#include "joined_beam_dynamics.hpp"
-#include "study_common.hpp"
-#include "study_math.hpp"
-#include "timing.hpp"
+#include "runs/timing.hpp"
+#include "studies/joined_beam_dynamics.hpp"
+#include "studies/study_common.hpp"
+#include "studies/study_math.hpp"
 
 namespace rotbeam::cli {
 

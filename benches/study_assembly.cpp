@@ -12,10 +12,10 @@
 
 #include "core/errors.hpp"
 #include "core/static_driver.hpp"
-#include "run_case.hpp"
-#include "studies.hpp"
-#include "study_common.hpp"
-#include "timing.hpp"
+#include "runs/run_case.hpp"
+#include "runs/timing.hpp"
+#include "studies/studies.hpp"
+#include "studies/study_common.hpp"
 
 namespace rotbeam::cli {
 

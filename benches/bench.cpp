@@ -4,10 +4,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "commands.hpp"
+#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
-#include "study_math.hpp"
-#include "timing.hpp"
+#include "runs/timing.hpp"
+#include "studies/study_math.hpp"
 
 namespace rotbeam::cli {
 
