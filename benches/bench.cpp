@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
+#include "runs/catalog.hpp"
 #include "runs/timing.hpp"
 #include "studies/study_math.hpp"
 
@@ -165,8 +165,6 @@ nlohmann::json best_per_budget(const std::vector<Candidate>& tried) {
 }
 
 }  // namespace
-
-const char* const kExactBendTip = "points.tip=[70.71067811865476, 29.289321881345245, 0]";
 
 std::vector<BenchTarget> bench_targets() {
     const char* rollup = "‖Δu_tip‖/L vs exact";

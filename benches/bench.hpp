@@ -24,11 +24,6 @@ struct BenchTarget {
     std::vector<std::string> overrides;  // applied to the case (and to its reference)
 };
 
-// The 45° bend's tip as an exact point of the arc: the catalog prints it to 5 decimals, which the
-// continuum solver refuses ("arc ends are not equidistant from the centre", 2e-6 in 100 in).
-// The finite elements and the reference both solve this exact arc.
-extern const char* const kExactBendTip;
-
 // A grid point of the discretization search.
 struct GridPoint {
     int elements = 1;

@@ -7,8 +7,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
+#include "runs/catalog.hpp"
 #include "runs/timing.hpp"
 #include "studies/joined_beam_dynamics.hpp"
 #include "studies/study_common.hpp"

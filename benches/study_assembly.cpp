@@ -14,8 +14,8 @@
 #include "core/static_driver.hpp"
 #include "runs/run_case.hpp"
 #include "runs/timing.hpp"
-#include "studies/studies.hpp"
 #include "studies/study_common.hpp"
+#include "study_speed.hpp"
 
 namespace rotbeam::cli {
 

@@ -3,6 +3,8 @@
 // and the 45° bend (P = 600, continuum reference) for every combination, the Pareto front across
 // combinations, which combination wins at which accuracy (in words), and the "model only what the
 // scene requires" counters of every catalog analysis.
+#include "study_speed.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -10,10 +12,9 @@
 
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/commands.hpp"
 #include "core/static_driver.hpp"
+#include "runs/catalog.hpp"
 #include "runs/timing.hpp"
-#include "studies/studies.hpp"
 #include "studies/study_math.hpp"
 #include "studies/study_plot.hpp"
 

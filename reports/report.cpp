@@ -20,7 +20,7 @@
 #include "core/version.hpp"
 #include "report_dynamics.hpp"
 #include "report_table_one.hpp"
-#include "studies/studies.hpp"
+#include "studies/gnuplot.hpp"
 
 namespace rotbeam::cli {
 
@@ -58,52 +58,6 @@ nlohmann::json read_json(const std::string& path) {
     }
 }
 
-// `text` as one word for the shell: single-quoted, each ' written as '\''.
-std::string shell_word(const std::string& text) {
-    std::string s = "'";
-    for (char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return s + "'";
-}
-
-// `text` as a gnuplot string literal: single-quoted, each ' doubled (no escapes are expanded).
-std::string gnuplot_string(const std::string& text) {
-    std::string s = "'";
-    for (char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
-    return s + "'";
-}
-
-// Runs a gnuplot script from reports/ with named string variables. A figure the report links must
-// exist, so a failure (gnuplot missing, or the script failing on the data) throws, with gnuplot's
-// last message: the report is never written with a hole where a figure should be.
-void gnuplot(const std::string& script, const std::map<std::string, std::string>& vars) {
-    const fs::path errors =
-        fs::temp_directory_path() /
-        ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
-         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".err");
-    // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string&&.)
-    std::ostringstream command;
-    command << "gnuplot";
-    for (const auto& [k, v] : vars) command << " -e " << shell_word(k + "=" + gnuplot_string(v));
-    command << " " << shell_word((fs::path(ROTBEAM_REPORTS_DIR) / script).string()) << " 2>"
-            << shell_word(errors.string());
-    const int status = std::system(command.str().c_str());
-    std::string last;
-    {
-        std::ifstream in(errors);
-        for (std::string line; std::getline(in, line);) {
-            if (line.find_first_not_of(" ^") != std::string::npos) last = line;
-        }
-    }
-    std::error_code ec;
-    fs::remove(errors, ec);
-    if (status != 0) {
-        const auto outbase = vars.find("outbase");
-        throw std::runtime_error("gnuplot failed on reports/" + script +
-                                 (outbase == vars.end() ? "" : " for " + outbase->second) +
-                                 " (exit status " + std::to_string(status) + "): " + last);
-    }
-}
-
 // The roll-up's tip path u1/L, u3/L against λ for every converged combination, plus the exact
 // solution, as a data file per combination.
 std::vector<Figure> rollup_figures(const std::string& out,
@@ -128,8 +82,8 @@ std::vector<Figure> rollup_figures(const std::string& out,
     }
     if (files.empty()) return {};
     const std::string png = "rollup-tip.png";
-    gnuplot("rollup_tip.gp",
-            {{"files", files}, {"outbase", (fs::path(out) / "rollup-tip").string()}});
+    run_gnuplot_script("rollup_tip.gp",
+                       {{"files", files}, {"outbase", (fs::path(out) / "rollup-tip").string()}});
     return {{png,
              "Tip displacement of the moment-loaded cantilever (seed 002 Example 1) against the "
              "load factor λ for every combination that ran, over the exact solution (lines; "
@@ -160,9 +114,10 @@ std::vector<Figure> rollup_shape_figures(const std::string& out,
             lambdas << s["load_factor"].get<double>() << " ";
         }
         write_file_atomically(file.string(), f.str());
-        gnuplot("rollup_shapes.gp", {{"datafile", file.string()},
-                                     {"lambdas", lambdas.str()},
-                                     {"outbase", (fs::path(out) / "rollup-shapes").string()}});
+        run_gnuplot_script("rollup_shapes.gp",
+                           {{"datafile", file.string()},
+                            {"lambdas", lambdas.str()},
+                            {"outbase", (fs::path(out) / "rollup-shapes").string()}});
         return {{"rollup-shapes.png",
                  "Seed 002 Fig. 3: deformed shapes of the moment-loaded cantilever for every "
                  "reported λ (displacement formulation, quaternion, the case's 16 elements of "
@@ -208,8 +163,9 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
     const fs::path data = fs::path(out) / "data" / "rotation-study.dat";
     fs::create_directories(data.parent_path());
     if (!write_rotation_study_data(study, data.string())) return {};
-    gnuplot("rotation_study.gp", {{"datafile", data.string()},
-                                  {"outbase", (fs::path(out) / "rotation-study").string()}});
+    run_gnuplot_script(
+        "rotation_study.gp",
+        {{"datafile", data.string()}, {"outbase", (fs::path(out) / "rotation-study").string()}});
     return {{"rotation-study.png",
              "Smallest singular value of the material tangent H_m and the round-trip error of each "
              "parameterization against the rotation angle (0 … 4π): where each one becomes "
@@ -218,11 +174,8 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
 
 }  // namespace
 
-void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
-    gnuplot(script, vars);
-}
-
-void write_report(const std::string& out_dir, const std::vector<std::string>& run_files) {
+void write_report(const std::string& out_dir, const std::vector<std::string>& run_files,
+                  const std::vector<std::string>& study_names) {
     std::vector<nlohmann::json> runs;
     for (const std::string& f : run_files) {
         nlohmann::json j = read_json(f);
@@ -281,8 +234,8 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     for (const Figure& f : figures)
         md << "![" << f.caption << "](" << f.file << ")\n\n" << f.caption << "\n\n";
     // The static studies, each a section written by its study function, when present.
-    for (const auto& entry : static_studies()) {
-        std::ifstream study(fs::path(out_dir) / ("study-" + entry.first + ".md"));
+    for (const std::string& name : study_names) {
+        std::ifstream study(fs::path(out_dir) / ("study-" + name + ".md"));
         if (study) md << "\n" << study.rdbuf() << "\n";
     }
     write_file_atomically((fs::path(out_dir) / "index.md").string(), md.str());

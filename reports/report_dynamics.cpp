@@ -10,7 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "parameterizations/registry.hpp"
-#include "report.hpp"
+#include "studies/gnuplot.hpp"
 
 namespace rotbeam::cli {
 

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/commands.hpp"
 #include "core/oracles/rollup.hpp"
+#include "runs/catalog.hpp"
 
 namespace rotbeam::cli {
 

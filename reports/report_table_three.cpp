@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/commands.hpp"
 #include "report_dynamics.hpp"
+#include "runs/catalog.hpp"
 
 namespace rotbeam::cli {
 

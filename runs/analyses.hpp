@@ -26,15 +26,15 @@
 
 namespace rotbeam {
 
-// cases/runner/run_displacement_dynamics.cpp
+// runs/run_displacement_dynamics.cpp
 void run_displacement_dynamic(const Model& model, bool trace, nlohmann::json& result);
 void run_displacement_modal(const Model& model, bool trace, nlohmann::json& result);
 
-// cases/runner/run_mixed_dynamics.cpp
+// runs/run_mixed_dynamics.cpp
 void run_mixed_dynamic(const Model& model, bool trace, nlohmann::json& result);
 void run_mixed_modal(const Model& model, bool trace, nlohmann::json& result);
 
-// The static state a dynamic or modal analysis starts from (cases/runner/run_case.cpp): a failure
+// The static state a dynamic or modal analysis starts from (runs/run_case.cpp): a failure
 // sets the run's status and message ("static state: …") and returns false; a state stalled at
 // round-off is kept (`static_state` in the result) and set_analysis_status carries it over.
 bool static_state_usable(const StaticOutcome& out, nlohmann::json& result);

@@ -6,16 +6,18 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/commands.hpp"
 #include "core/errors.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/results.hpp"
+#include "gnuplot.hpp"
 #include "parameterizations/registry.hpp"
-#include "reports/report.hpp"
+#include "runs/catalog.hpp"
 #include "runs/continuum_json.hpp"
 #include "runs/run_case.hpp"
 
 namespace rotbeam::cli {
+
+const char* const kExactBendTip = "points.tip=[70.71067811865476, 29.289321881345245, 0]";
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "benches/bench.hpp"
 #include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"

@@ -1,5 +1,5 @@
 // The numerical logic of the joined-beam studies (modal convergence, dynamic speed vs accuracy),
-// kept free of I/O so it is unit-tested (tests/runner/test_study_extrapolation.cpp): Richardson
+// kept free of I/O so it is unit-tested (tests/studies/test_study_extrapolation.cpp): Richardson
 // extrapolation of a refinement sequence with its observed order, and the history error of a
 // time response against a reference history.
 #pragma once

@@ -1,5 +1,5 @@
 // The non-trivial logic of the studies, kept free of I/O so it is unit-tested
-// (tests/runner/test_study_math.cpp): observed-order fits, the Pareto front of cost vs error, the
+// (tests/studies/test_study_math.cpp): observed-order fits, the Pareto front of cost vs error, the
 // singularity study's reach classifier (diverged / singular / wrong branch) and the round-off
 // floor of a refinement sequence.
 #pragma once

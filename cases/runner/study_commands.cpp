@@ -1,4 +1,5 @@
-// The registry of the static studies (studies.hpp) behind `rotbeam study NAME` and the suite.
+#include "study_commands.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -7,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "benches/study_speed.hpp"
 #include "core/errors.hpp"
 #include "runs/parallel.hpp"
 #include "studies/studies.hpp"
@@ -25,6 +27,12 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"joined-beam-agreement", study_joined_beam_agreement},
     };
     return table;
+}
+
+std::vector<std::string> study_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : static_studies()) names.push_back(entry.first);
+    return names;
 }
 
 void run_named_study(const std::string& name, const StudyOptions& o) {

@@ -31,7 +31,7 @@
 #include "reports/report.hpp"
 #include "runs/parallel.hpp"
 #include "runs/run_case.hpp"
-#include "studies/studies.hpp"
+#include "study_commands.hpp"
 
 namespace rotbeam::cli {
 
@@ -257,7 +257,7 @@ int command_suite(const Args& args) {
     if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);
     std::vector<std::string> files;
     for (const PlannedRun& r : runs) files.push_back(r.output);
-    write_report(out, files);
+    write_report(out, files, study_names());
     std::cout << "report: " << (fs::path(out) / "index.md").string() << "\n";
     return 0;
 }

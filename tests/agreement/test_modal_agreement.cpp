@@ -3,7 +3,7 @@
 // h by Richardson, against the displacement formulation at convergence (order 4 and 6, 10
 // elements per member) — two independent discretizations of the same continuum, each through its
 // own statics, tangent and mass. Modes are paired by their shapes (MAC on the stations of
-// cases/runner/mode_matching.hpp), not by sort order. The follower load makes both tangents
+// runs/mode_matching.hpp), not by sort order. The follower load makes both tangents
 // non-symmetric (QZ in the displacement formulation).
 #include <boost/test/unit_test.hpp>
 #include <cmath>

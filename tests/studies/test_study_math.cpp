@@ -1,4 +1,4 @@
-// The studies' decision logic (cases/runner/study_math.hpp, timing.hpp's median): order fits,
+// The studies' decision logic (studies/study_math.hpp, timing.hpp's median): order fits,
 // the Pareto front, the singularity study's reach classifier and the round-off floor.
 #include <boost/test/unit_test.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The joined-beam studies' numerics (cases/runner/study_extrapolation.hpp): Richardson
+// The joined-beam studies' numerics (studies/study_extrapolation.hpp): Richardson
 // extrapolation with its observed order, the history error and the extrapolated history.
 #include <boost/test/unit_test.hpp>
 #include <cmath>

@@ -29,7 +29,7 @@ for s in series:
     if ran != printed:
         print(f"FAIL: {s['label']}: runs had orders {ran}, the header prints {printed}")
         failures += 1
-# The quick p-refinement: orders 2, 4, 6, 8 (cases/runner/study_convergence.cpp, refinements).
+# The quick p-refinement: orders 2, 4, 6, 8 (studies/study_convergence.cpp, refinements).
 if printed != [2, 4, 6, 8]:
     print(f"FAIL: header orders {printed}, the quick study runs 2, 4, 6, 8")
     failures += 1

@@ -1,5 +1,5 @@
 // Mode shapes on stations and the matching of modes across meshes by MAC
-// (cases/runner/mode_matching.hpp).
+// (runs/mode_matching.hpp).
 #include <boost/test/unit_test.hpp>
 
 #include "runs/mode_matching.hpp"
