@@ -11,15 +11,20 @@
 #include <nlohmann/json.hpp>
 
 #include "study_common.hpp"
+#include "study_runs.hpp"
 
 namespace rotbeam::cli {
 
-nlohmann::json study_convergence(const StudyOptions& o);     // study_convergence.cpp
-nlohmann::json study_singularity(const StudyOptions& o);     // study_singularity.cpp
-nlohmann::json study_extremes(const StudyOptions& o);        // study_extremes.cpp
-nlohmann::json study_manufactured_time(const StudyOptions& o);  // study_manufactured_time.cpp
+nlohmann::json study_convergence(const StudyOptions& o);  // study_convergence.cpp
+nlohmann::json study_singularity(const StudyOptions& o);  // study_singularity.cpp
+// The same two studies as independent runs plus the combine step (study_runs.hpp).
+SplitStudy convergence_study();                                    // study_convergence.cpp
+SplitStudy singularity_study();                                    // study_singularity.cpp
+nlohmann::json study_extremes(const StudyOptions& o);              // study_extremes.cpp
+nlohmann::json study_manufactured_time(const StudyOptions& o);     // study_manufactured_time.cpp
 nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp
 nlohmann::json study_joined_beam_dynamics(const StudyOptions& o);  // study_joined_beam_dynamics.cpp
-nlohmann::json study_joined_beam_agreement(const StudyOptions& o);  // study_joined_beam_agreement.cpp
+nlohmann::json study_joined_beam_agreement(
+    const StudyOptions& o);  // study_joined_beam_agreement.cpp
 
 }  // namespace rotbeam::cli

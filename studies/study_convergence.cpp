@@ -13,6 +13,7 @@
 #include "study_common.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
+#include "study_runs.hpp"
 
 namespace rotbeam::cli {
 
@@ -86,16 +87,32 @@ double step_error(const ConvergenceCase& c, const nlohmann::json& result, double
     return reference_tip_error(step, reference, scale);
 }
 
-Series run_refinement(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
-                      const nlohmann::json& reference, std::string& note) {
+// Point i of a refinement: the case at its elements (and order, displacement only).
+RunSpec refinement_spec(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
+                        size_t i) {
+    std::vector<std::string> o = c.overrides;
+    if (comb.formulation == "displacement") {
+        o.push_back("discretization.order=" + std::to_string(r.orders[i]));
+    }
+    return RunSpec{c.case_name, comb, o, r.elements[i]};
+}
+
+// Where the results go in the plan.
+std::string reference_key(const ConvergenceCase& c) { return c.key + "/reference"; }
+std::string run_key(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
+                    size_t i) {
+    return c.key + "/" + comb.label() + "/" + r.name + "/" + std::to_string(i);
+}
+
+// A refinement series from its runs' results; the series ends at a combination the program
+// refuses ("unavailable", with the message as its note).
+Series refinement_series(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
+                         const nlohmann::json& reference, const StudyResults& results,
+                         std::string& note) {
     Series s{comb.formulation + "/" + comb.rotation + "/" + r.name, {}, {}, {}, {}};
     for (size_t i = 0; i < r.elements.size(); ++i) {
-        std::vector<std::string> o = c.overrides;
-        if (comb.formulation == "displacement") {
-            o.push_back("discretization.order=" + std::to_string(r.orders[i]));
-        }
-        const RunSpec spec{c.case_name, comb, o, r.elements[i]};
-        const nlohmann::json result = run_spec(spec);
+        const RunSpec spec = refinement_spec(c, comb, r, i);
+        const nlohmann::json& result = result_of(results, run_key(c, comb, r, i));
         if (result.value("status", "") == "unavailable") {
             note = result.value("message", "");
             return s;
@@ -128,18 +145,19 @@ std::string order_text(double q) {
     return s.str();
 }
 
-// One case: every combination × refinement; data files, two figures, the table rows.
+// One case from its runs' results: every combination × refinement; data files, two figures, the
+// table rows.
 nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
-                                std::ostringstream& md) {
+                                const StudyResults& results, std::ostringstream& md) {
     const nlohmann::json reference =
-        c.exact_rollup ? nlohmann::json() : continuum_reference(c.case_name, c.overrides);
+        c.exact_rollup ? nlohmann::json() : result_of(results, reference_key(c));
     nlohmann::json out = {{"case", c.key}, {"series", nlohmann::json::array()}};
     PanelFigure by_elements, by_unknowns;
     double refx = kNoValue, refy = kNoValue, refd = kNoValue;
     for (const Combination& comb : all_combinations(false)) {
         for (const Refinement& r : refinements(comb.formulation, o.quick)) {
             std::string note;
-            const Series s = run_refinement(c, comb, r, reference, note);
+            const Series s = refinement_series(c, comb, r, reference, results, note);
             const bool p_series = r.name == "p";
             const double floor = c.exact_rollup ? kFitFloor : kReferenceFitFloor;
             const double ls = fit_order(p_series ? s.dofs : s.elements, s.error, floor);
@@ -193,14 +211,33 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
     return out;
 }
 
-}  // namespace
+// The runs: the continuum reference of each case that has no exact solution, and every point of
+// every refinement of every combination.
+std::vector<StudyRun> convergence_plan(const StudyOptions& o) {
+    std::vector<StudyRun> plan;
+    for (const ConvergenceCase& c : convergence_cases()) {
+        if (!c.exact_rollup) {
+            plan.push_back({reference_key(c), StudyRun::Kind::continuum_reference,
+                            RunSpec{c.case_name, {}, c.overrides, 0}});
+        }
+        for (const Combination& comb : all_combinations(false)) {
+            for (const Refinement& r : refinements(comb.formulation, o.quick)) {
+                for (size_t i = 0; i < r.elements.size(); ++i) {
+                    plan.push_back({run_key(c, comb, r, i), StudyRun::Kind::case_run,
+                                    refinement_spec(c, comb, r, i)});
+                }
+            }
+        }
+    }
+    return plan;
+}
 
-nlohmann::json study_convergence(const StudyOptions& o) {
+nlohmann::json convergence_combine(const StudyOptions& o, const StudyResults& results) {
     std::ostringstream table;
     nlohmann::json out = {
         {"study", "convergence"}, {"quick", o.quick}, {"cases", nlohmann::json::array()}};
     for (const ConvergenceCase& c : convergence_cases()) {
-        out["cases"].push_back(convergence_case(o, c, table));
+        out["cases"].push_back(convergence_case(o, c, results, table));
     }
     // The p-refinement is the last of the displacement refinements; held in a variable, since a
     // range-for over a member of the returned temporary would read it after it is destroyed.
@@ -237,6 +274,14 @@ nlohmann::json study_convergence(const StudyOptions& o) {
     write_text(o, "study-convergence.md", md.str());
     write_text(o, "study-convergence.json", out.dump(1) + "\n");
     return out;
+}
+
+}  // namespace
+
+SplitStudy convergence_study() { return {convergence_plan, convergence_combine}; }
+
+nlohmann::json study_convergence(const StudyOptions& o) {
+    return run_split_study(convergence_study(), o);
 }
 
 }  // namespace rotbeam::cli

@@ -14,6 +14,7 @@
 #include "study_common.hpp"
 #include "study_math.hpp"
 #include "study_plot.hpp"
+#include "study_runs.hpp"
 
 namespace rotbeam::cli {
 
@@ -63,10 +64,24 @@ struct PathRun {
     std::vector<double> lambda, error, iterations;
 };
 
-PathRun run_path(const PathCase& c, const Combination& comb, int elements,
+RunSpec path_spec(const PathCase& c, const Combination& comb, int elements) {
+    return RunSpec{c.case_name, comb, path_overrides(c), elements};
+}
+
+// Where the results go in the plan.
+std::string reference_key(const PathCase& c) { return "path/" + c.key + "/reference"; }
+std::string path_key(const PathCase& c, const Combination& comb) {
+    return "path/" + c.key + "/" + comb.label();
+}
+std::string mesh_key(const Combination& comb, int elements) {
+    return "mesh/" + comb.label() + "/" + std::to_string(elements);
+}
+
+// A path run from its result `r` (of path_spec(c, comb, elements)): every converged step against
+// the answer, and the reach.
+PathRun path_run(const PathCase& c, const Combination& comb, int elements, const nlohmann::json& r,
                  const nlohmann::json& reference) {
-    const RunSpec spec{c.case_name, comb, path_overrides(c), elements};
-    const nlohmann::json r = run_spec(spec);
+    const RunSpec spec = path_spec(c, comb, elements);
     PathRun p;
     p.status = r.value("status", "error");
     p.message = r.value("message", "");
@@ -147,14 +162,15 @@ void path_plots(const StudyOptions& o, const PathCase& c, const PanelFigure& fig
     figures.push_back(base + "-iterations.png");
 }
 
-nlohmann::json path_case(const StudyOptions& o, const PathCase& c, std::ostringstream& md) {
+nlohmann::json path_case(const StudyOptions& o, const PathCase& c, const StudyResults& results,
+                         std::ostringstream& md) {
     const nlohmann::json reference =
-        c.exact_rollup ? nlohmann::json() : continuum_reference(c.case_name, path_overrides(c));
+        c.exact_rollup ? nlohmann::json() : result_of(results, reference_key(c));
     nlohmann::json out = {
         {"case", c.key}, {"runs", nlohmann::json::array()}, {"figures", nlohmann::json::array()}};
     PanelFigure figure;
     for (const Combination& comb : all_combinations(true)) {
-        const PathRun p = run_path(c, comb, 0, reference);
+        const PathRun p = path_run(c, comb, 0, result_of(results, path_key(c, comb)), reference);
         std::string message = p.message;
         if (message.size() > 110) message = message.substr(0, 107) + "...";
         out["runs"].push_back({{"combination", comb.label()},
@@ -201,11 +217,15 @@ double last_converged_factor(const std::string& message, double fallback) {
 }
 
 // Mixed formulation: the reach on the roll-up against the mesh.
-nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md,
-                                   nlohmann::json& figures) {
-    const PathCase c = path_cases(true).front();
-    const std::vector<int> meshes =
-        o.quick ? std::vector<int>{4, 16} : std::vector<int>{4, 8, 16, 32, 64};
+PathCase mesh_case() { return path_cases(true).front(); }
+std::vector<int> singularity_meshes(bool quick) {
+    return quick ? std::vector<int>{4, 16} : std::vector<int>{4, 8, 16, 32, 64};
+}
+
+nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, const StudyResults& results,
+                                   std::ostringstream& md, nlohmann::json& figures) {
+    const PathCase c = mesh_case();
+    const std::vector<int> meshes = singularity_meshes(o.quick);
     nlohmann::json out = nlohmann::json::array();
     PanelFigure figure;
     md << "\n| mixed combination |";
@@ -219,7 +239,8 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
         data << "# elements lambda_star\n";
         bool any = false;
         for (int n : meshes) {
-            const PathRun p = run_path(c, comb, n, nlohmann::json());
+            const PathRun p =
+                path_run(c, comb, n, result_of(results, mesh_key(comb, n)), nlohmann::json());
             if (p.status == "unavailable") break;
             any = true;
             // The solver's reach (accuracy is the table above's concern: a 4-element mesh is
@@ -260,17 +281,40 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, std::ostringstream& md
     return out;
 }
 
-}  // namespace
+// The runs: the continuum reference of each path without an exact solution, every combination
+// on every path, and the mixed combinations on the roll-up for every mesh of λ*(N).
+std::vector<StudyRun> singularity_plan(const StudyOptions& o) {
+    std::vector<StudyRun> plan;
+    for (const PathCase& c : path_cases(o.quick)) {
+        if (!c.exact_rollup) {
+            plan.push_back({reference_key(c), StudyRun::Kind::continuum_reference,
+                            RunSpec{c.case_name, {}, path_overrides(c), 0}});
+        }
+        for (const Combination& comb : all_combinations(true)) {
+            plan.push_back({path_key(c, comb), StudyRun::Kind::case_run, path_spec(c, comb, 0)});
+        }
+    }
+    for (const Combination& comb : all_combinations(false)) {
+        if (comb.formulation != "mixed") continue;
+        for (int n : singularity_meshes(o.quick)) {
+            plan.push_back(
+                {mesh_key(comb, n), StudyRun::Kind::case_run, path_spec(mesh_case(), comb, n)});
+        }
+    }
+    return plan;
+}
 
-nlohmann::json study_singularity(const StudyOptions& o) {
+nlohmann::json singularity_combine(const StudyOptions& o, const StudyResults& results) {
     std::ostringstream table, mesh_table;
     nlohmann::json out = {{"study", "singularity"},
                           {"quick", o.quick},
                           {"wrong_branch_tolerance", kWrongBranchTolerance},
                           {"cases", nlohmann::json::array()}};
-    for (const PathCase& c : path_cases(o.quick)) out["cases"].push_back(path_case(o, c, table));
+    for (const PathCase& c : path_cases(o.quick)) {
+        out["cases"].push_back(path_case(o, c, results, table));
+    }
     nlohmann::json figures = nlohmann::json::array();
-    out["lambda_star"] = mixed_reach_vs_mesh(o, mesh_table, figures);
+    out["lambda_star"] = mixed_reach_vs_mesh(o, results, mesh_table, figures);
     std::ostringstream md;
     md << "## Study: singularity limits\n\nEvery combination (displacement: relative and direct "
           "interpolation) on the roll-up to λ = 4 (two full turns, 32 equal steps, exact "
@@ -299,6 +343,14 @@ nlohmann::json study_singularity(const StudyOptions& o) {
     write_text(o, "study-singularity.md", md.str());
     write_text(o, "study-singularity.json", out.dump(1) + "\n");
     return out;
+}
+
+}  // namespace
+
+SplitStudy singularity_study() { return {singularity_plan, singularity_combine}; }
+
+nlohmann::json study_singularity(const StudyOptions& o) {
+    return run_split_study(singularity_study(), o);
 }
 
 }  // namespace rotbeam::cli
