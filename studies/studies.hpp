@@ -17,9 +17,10 @@ namespace rotbeam::cli {
 
 nlohmann::json study_convergence(const StudyOptions& o);  // study_convergence.cpp
 nlohmann::json study_singularity(const StudyOptions& o);  // study_singularity.cpp
-// The same two studies as independent runs plus the combine step (study_runs.hpp).
+// The same studies as independent runs plus the combine step (study_runs.hpp).
 SplitStudy convergence_study();                                    // study_convergence.cpp
 SplitStudy singularity_study();                                    // study_singularity.cpp
+SplitStudy extremes_study();                                       // study_extremes_newton.cpp
 nlohmann::json study_extremes(const StudyOptions& o);              // study_extremes.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);     // study_manufactured_time.cpp
 nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp

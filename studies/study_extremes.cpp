@@ -85,8 +85,14 @@ std::vector<Variant> variants(bool quick, bool with_force_scale) {
     return v;
 }
 
-// Relative tip-deflection error against Timoshenko (NaN on failure).
-double tip_error(const Variant& v, const SquareSection& s, double force, std::string& status) {
+// One point of a sweep: the run, and the section and force its answer is compared with.
+struct TipRun {
+    RunSpec spec;
+    SquareSection section;
+    double force;
+};
+
+TipRun tip_run(const Variant& v, const SquareSection& s, double force) {
     std::vector<std::string> o = s.overrides();
     o.push_back("loads.tip-force.force=[0, 0, " + sci(force, 17) + "]");
     if (v.own_force_scale) o.push_back("solver.force_scale=" + sci(force, 17));
@@ -94,18 +100,34 @@ double tip_error(const Variant& v, const SquareSection& s, double force, std::st
         o.push_back("discretization.order=" + std::to_string(v.order));
         o.push_back("discretization.quadrature=" + v.quadrature);
     }
-    const nlohmann::json r = run_spec({"tip-load-cantilever", v.combination, o, 0});
+    return TipRun{RunSpec{"tip-load-cantilever", v.combination, o, 0}, s, force};
+}
+
+// Relative tip-deflection error against Timoshenko (NaN on failure).
+double tip_error(const TipRun& t, const StudyResults& results, std::string& status) {
+    const nlohmann::json& r = result_for(results, t.spec);
     status = r.value("status", "error");
     if (!has_solution(status) || !converged_steps_exist(r)) return kNoValue;
-    const double exact = s.timoshenko(force);
+    const double force = t.force;
+    const double exact = t.section.timoshenko(force);
     return std::abs(point_displacement(r["steps"].back())[2] - exact) / exact;
+}
+
+using TipRunAt = std::function<TipRun(const Variant&, double)>;
+
+// The runs of a sweep: every variant at every x.
+void plan_sweep(const std::vector<double>& xs, bool quick, bool with_force_scale,
+                const TipRunAt& run_at, std::vector<StudyRun>& plan) {
+    for (const Variant& v : variants(quick, with_force_scale)) {
+        for (double x : xs) plan_case_run(plan, run_at(v, x).spec);
+    }
 }
 
 // Rows "x error" per variant → data files; the figure; the table.
 void sweep_table(const StudyOptions& o, const std::string& key, const std::vector<double>& xs,
                  const std::string& x_name, bool quick, bool with_force_scale,
-                 const std::function<double(const Variant&, double, std::string&)>& error_at,
-                 std::ostringstream& md, nlohmann::json& out) {
+                 const TipRunAt& run_at, const StudyResults& results, std::ostringstream& md,
+                 nlohmann::json& out) {
     md << "| combination |";
     for (double x : xs) md << " " << x_name << " = " << sci(x, 0) << " |";
     md << "\n|---|";
@@ -121,7 +143,7 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
         bool unavailable = false;
         for (double x : xs) {
             std::string status;
-            const double e = error_at(v, x, status);
+            const double e = tip_error(run_at(v, x), results, status);
             unavailable = status == "unavailable";
             if (unavailable) break;
             errors.push_back(std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(status));
@@ -158,9 +180,41 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
 
 }  // namespace
 
-nlohmann::json extremes_slenderness(const StudyOptions& o, std::ostringstream& md) {
-    const std::vector<double> ratios =
-        o.quick ? std::vector<double>{10, 1e3, 1e5} : std::vector<double>{10, 100, 1e3, 1e4, 1e5};
+namespace {
+
+std::vector<double> slenderness_ratios(bool quick) {
+    return quick ? std::vector<double>{10, 1e3, 1e5} : std::vector<double>{10, 100, 1e3, 1e4, 1e5};
+}
+
+// The load scaled so the tip deflects kDeflectionOverLength.
+TipRun slenderness_run(const Variant& v, double ratio) {
+    const SquareSection s(kLength / ratio);
+    const double force = kDeflectionOverLength * 3.0 * kE * s.inertia / std::pow(kLength, 2);
+    return tip_run(v, s, force);
+}
+
+std::vector<double> load_scales(bool quick) {
+    return quick ? std::vector<double>{1e-10, 1e-5, 1.0}
+                 : std::vector<double>{1e-10, 1e-8, 1e-6, 1e-4, 1e-2, 1.0};
+}
+
+TipRun tiny_load_run(const Variant& v, double scale) {
+    return tip_run(v, SquareSection(0.01), scale);
+}
+
+}  // namespace
+
+void plan_extremes_slenderness(const StudyOptions& o, std::vector<StudyRun>& plan) {
+    plan_sweep(slenderness_ratios(o.quick), o.quick, false, slenderness_run, plan);
+}
+
+void plan_extremes_tiny_loads(const StudyOptions& o, std::vector<StudyRun>& plan) {
+    plan_sweep(load_scales(o.quick), o.quick, true, tiny_load_run, plan);
+}
+
+nlohmann::json extremes_slenderness(const StudyOptions& o, const StudyResults& results,
+                                    std::ostringstream& md) {
+    const std::vector<double> ratios = slenderness_ratios(o.quick);
     md << "### Slenderness (shear locking)\n\nThe tip-loaded cantilever (L = 1 m, square h × h, 8 "
           "elements) from L/h = 10 to 1e5, the load scaled so the tip deflects 1e-6 L (linear "
           "regime). Plotted and tabulated: the relative tip-deflection error |δ_h − δ_T|/δ_T "
@@ -173,22 +227,13 @@ nlohmann::json extremes_slenderness(const StudyOptions& o, std::ostringstream& m
           "panel per discretization, the parameterizations inside (nested markers where they "
           "coincide).\n\n";
     nlohmann::json out = nlohmann::json::array();
-    sweep_table(
-        o, "slenderness", ratios, "L/h", o.quick, false,
-        [](const Variant& v, double ratio, std::string& status) {
-            const SquareSection s(kLength / ratio);
-            const double force =
-                kDeflectionOverLength * 3.0 * kE * s.inertia / std::pow(kLength, 2);
-            return tip_error(v, s, force, status);
-        },
-        md, out);
+    sweep_table(o, "slenderness", ratios, "L/h", o.quick, false, slenderness_run, results, md, out);
     return out;
 }
 
-nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md) {
-    const std::vector<double> scales =
-        o.quick ? std::vector<double>{1e-10, 1e-5, 1.0}
-                : std::vector<double>{1e-10, 1e-8, 1e-6, 1e-4, 1e-2, 1.0};
+nlohmann::json extremes_tiny_loads(const StudyOptions& o, const StudyResults& results,
+                                   std::ostringstream& md) {
+    const std::vector<double> scales = load_scales(o.quick);
     md << "### Tiny loads\n\nThe catalog's tip-loaded cantilever (L/h = 100, tip force 1 N → "
           "δ ≈ 1.9e-3 L) with its load scaled by 1e-10 … 1: the relative error against Timoshenko "
           "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise "
@@ -202,13 +247,7 @@ nlohmann::json extremes_tiny_loads(const StudyOptions& o, std::ostringstream& md
           "cannot converge. In the figure a run without a result (diverged) is a red cross on "
           "its panel's top edge, never joined to the curve.\n\n";
     nlohmann::json out = nlohmann::json::array();
-    sweep_table(
-        o, "tiny-loads", scales, "scale", o.quick, true,
-        [](const Variant& v, double scale, std::string& status) {
-            const SquareSection s(0.01);
-            return tip_error(v, s, scale, status);
-        },
-        md, out);
+    sweep_table(o, "tiny-loads", scales, "scale", o.quick, true, tiny_load_run, results, md, out);
     return out;
 }
 

@@ -1,7 +1,7 @@
 // `rotbeam study extremes`, second half: the roll-up in ONE load step to λ = 1, 2, 4 with step
 // cutting disabled (the damped Newton alone: how robust is it?), and mesh refinement of the
 // roll-up until round-off dominates (where the error stops falling, and why); then the study
-// function that assembles the four parts.
+// that plans the four parts' runs and assembles their sections.
 #include <cmath>
 
 #include "core/static_driver.hpp"
@@ -34,10 +34,41 @@ std::vector<Refined> round_off_series(bool quick) {
             {"mixed/quaternion", {"mixed", "quaternion", ""}, 1, nm}};
 }
 
+const std::vector<double> kSingleStepLambdas = {1.0, 2.0, 4.0};
+
+RunSpec single_step_spec(const Combination& c, double lambda) {
+    return RunSpec{"cantilever-moment",
+                   c,
+                   {"analysis.load_factors=[" + sci(lambda, 3) + "]", "analysis.substeps=1",
+                    "analysis.max_step_cuts=0"},
+                   0};
+}
+
+RunSpec round_off_spec(const Refined& s, int n) {
+    std::vector<std::string> ov = {"analysis.load_factors=[0.8]", "analysis.substeps=2"};
+    if (s.combination.formulation == "displacement") {
+        ov.push_back("discretization.order=" + std::to_string(s.order));
+    }
+    return RunSpec{"cantilever-moment", s.combination, ov, n};
+}
+
 }  // namespace
 
-nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& md) {
-    const std::vector<double> lambdas = {1.0, 2.0, 4.0};
+void plan_extremes_single_step(const StudyOptions&, std::vector<StudyRun>& plan) {
+    for (const Combination& c : all_combinations(true)) {
+        for (double lambda : kSingleStepLambdas) plan_case_run(plan, single_step_spec(c, lambda));
+    }
+}
+
+void plan_extremes_round_off(const StudyOptions& o, std::vector<StudyRun>& plan) {
+    for (const Refined& s : round_off_series(o.quick)) {
+        for (int n : s.elements) plan_case_run(plan, round_off_spec(s, n));
+    }
+}
+
+nlohmann::json extremes_single_step(const StudyOptions& o, const StudyResults& results,
+                                    std::ostringstream& md) {
+    const std::vector<double>& lambdas = kSingleStepLambdas;
     md << "### One load step\n\nThe roll-up (catalog mesh: 16 elements, displacement order 4) "
           "solved in a single load step to λ = 1, 2 and 4 with step cutting disabled "
           "(`analysis.max_step_cuts=0`): the damped Newton alone. Entries: Newton iterations and "
@@ -54,12 +85,7 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
         data << "# lambda newton_iterations\n";
         bool unavailable = false;
         for (double lambda : lambdas) {
-            const RunSpec spec{"cantilever-moment",
-                               c,
-                               {"analysis.load_factors=[" + sci(lambda, 3) + "]",
-                                "analysis.substeps=1", "analysis.max_step_cuts=0"},
-                               0};
-            const nlohmann::json r = run_spec(spec);
+            const nlohmann::json& r = result_for(results, single_step_spec(c, lambda));
             const std::string status = r.value("status", "error");
             unavailable = status == "unavailable";
             if (unavailable) break;
@@ -103,7 +129,8 @@ nlohmann::json extremes_single_step(const StudyOptions& o, std::ostringstream& m
     return out;
 }
 
-nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md) {
+nlohmann::json extremes_round_off(const StudyOptions& o, const StudyResults& results,
+                                  std::ostringstream& md) {
     md << "### Refinement towards round-off\n\nThe roll-up at λ = 0.8 (exact) refined by "
           "doubling the elements, to find where the error stops falling. `smallest` is the "
           "smallest error and where it occurs; `floor` says whether the series reached a floor "
@@ -117,11 +144,7 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
     for (const Refined& s : round_off_series(o.quick)) {
         Series series{s.label, {}, {}, {}, {}};
         for (int n : s.elements) {
-            std::vector<std::string> ov = {"analysis.load_factors=[0.8]", "analysis.substeps=2"};
-            if (s.combination.formulation == "displacement") {
-                ov.push_back("discretization.order=" + std::to_string(s.order));
-            }
-            const nlohmann::json r = run_spec({"cantilever-moment", s.combination, ov, n});
+            const nlohmann::json& r = result_for(results, round_off_spec(s, n));
             const bool ok = has_solution(r.value("status", "")) && converged_steps_exist(r);
             series.add(n, r.value("dofs", 0), r.value("wall_seconds", 0.0),
                        ok ? rollup_tip_error(r["steps"].back(), 12.0) : kNoValue);
@@ -167,17 +190,36 @@ nlohmann::json extremes_round_off(const StudyOptions& o, std::ostringstream& md)
     return out;
 }
 
-nlohmann::json study_extremes(const StudyOptions& o) {
+namespace {
+
+std::vector<StudyRun> extremes_plan(const StudyOptions& o) {
+    std::vector<StudyRun> plan;
+    plan_extremes_slenderness(o, plan);
+    plan_extremes_tiny_loads(o, plan);
+    plan_extremes_single_step(o, plan);
+    plan_extremes_round_off(o, plan);
+    return plan;
+}
+
+nlohmann::json extremes_combine(const StudyOptions& o, const StudyResults& results) {
     std::ostringstream md;
     md << "## Study: the extremes\n\n";
     nlohmann::json out = {{"study", "extremes"}, {"quick", o.quick}};
-    out["slenderness"] = extremes_slenderness(o, md);
-    out["tiny_loads"] = extremes_tiny_loads(o, md);
-    out["single_step"] = extremes_single_step(o, md);
-    out["round_off"] = extremes_round_off(o, md);
+    out["slenderness"] = extremes_slenderness(o, results, md);
+    out["tiny_loads"] = extremes_tiny_loads(o, results, md);
+    out["single_step"] = extremes_single_step(o, results, md);
+    out["round_off"] = extremes_round_off(o, results, md);
     write_text(o, "study-extremes.md", md.str());
     write_text(o, "study-extremes.json", out.dump(1) + "\n");
     return out;
+}
+
+}  // namespace
+
+SplitStudy extremes_study() { return {extremes_plan, extremes_combine}; }
+
+nlohmann::json study_extremes(const StudyOptions& o) {
+    return run_split_study(extremes_study(), o);
 }
 
 }  // namespace rotbeam::cli

@@ -39,6 +39,25 @@ const nlohmann::json& result_of(const StudyResults& results, const std::string& 
     return it->second;
 }
 
+std::string spec_key(const RunSpec& spec) {
+    std::string key =
+        spec.case_name + "|" + spec.combination.label() + "|" + std::to_string(spec.elements);
+    for (const std::string& o : spec.overrides) key += "|" + o;
+    return key;
+}
+
+void plan_case_run(std::vector<StudyRun>& plan, const RunSpec& spec) {
+    const std::string key = spec_key(spec);
+    for (const StudyRun& run : plan) {
+        if (run.key == key) return;
+    }
+    plan.push_back({key, StudyRun::Kind::case_run, spec});
+}
+
+const nlohmann::json& result_for(const StudyResults& results, const RunSpec& spec) {
+    return result_of(results, spec_key(spec));
+}
+
 nlohmann::json run_split_study(const SplitStudy& study, const StudyOptions& o, int jobs) {
     return study.combine(o, execute_runs(study.plan(o), jobs));
 }

@@ -29,6 +29,17 @@ struct StudyRun {
 // The results of a plan's runs by key.
 using StudyResults = std::map<std::string, nlohmann::json>;
 
+// A key that names a case run by its description (case, combination, elements, overrides), for
+// studies whose parts look their runs up by what was run; the same spec gives the same key.
+std::string spec_key(const RunSpec& spec);
+
+// Adds a case run under spec_key(spec) unless the plan has it already (two parts of a study may
+// ask for the same run; it is made once).
+void plan_case_run(std::vector<StudyRun>& plan, const RunSpec& spec);
+
+// The result of the case run planned for `spec` (plan_case_run).
+const nlohmann::json& result_for(const StudyResults& results, const RunSpec& spec);
+
 // One run's result (the JSON of run_spec or of continuum_reference).
 nlohmann::json execute_run(const StudyRun& run);
 

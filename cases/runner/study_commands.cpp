@@ -77,6 +77,7 @@ const std::vector<std::pair<std::string, SplitStudy>>& split_studies() {
     static const std::vector<std::pair<std::string, SplitStudy>> table = {
         {"convergence", convergence_study()},
         {"singularity", singularity_study()},
+        {"extremes", extremes_study()},
     };
     return table;
 }

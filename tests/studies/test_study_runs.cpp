@@ -31,7 +31,7 @@ nlohmann::json without_time(nlohmann::json result) {
 BOOST_AUTO_TEST_SUITE(study_runs)
 
 BOOST_AUTO_TEST_CASE(every_planned_run_has_its_own_key_and_a_plan_is_reproducible) {
-    for (const SplitStudy& study : {convergence_study(), singularity_study()}) {
+    for (const SplitStudy& study : {convergence_study(), singularity_study(), extremes_study()}) {
         for (const bool quick : {true, false}) {
             const StudyOptions o{"unused", quick, false};
             const std::vector<StudyRun> plan = study.plan(o);
