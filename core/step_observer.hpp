@@ -1,5 +1,5 @@
 // Progress of a time integration for a benchmark that times it from inside the process (`rotbeam
-// bench --targets long-run`, cases/runner/bench_long_run.cpp: the cost per step over a long run).
+// bench --targets long-run`, benches/bench_long_run.cpp: the cost per step over a long run).
 // The drivers (generalized_alpha.cpp, dae_trapezoidal.cpp, dae_ida.cpp) call notify_step after
 // every accepted step and its output — IDA, which steps inside IDASolve, after every output
 // interval, with its cumulative counts. Normal runs install no observer: they pay one

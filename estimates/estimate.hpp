@@ -24,7 +24,7 @@ namespace rotbeam::estimate {
 // InputError for a model the formulation refuses: the companion then counts as failed.
 using CompanionRun = std::function<nlohmann::json(const Model&)>;
 // For each of the run's `modes`, the index of the same mode among a companion's `modes`, or −1
-// (the program pairs them by shape, cases/runner/mode_matching.hpp).
+// (the program pairs them by shape, runs/mode_matching.hpp).
 using ModePairing =
     std::function<std::vector<int>(const nlohmann::json& modes, const nlohmann::json& companion)>;
 

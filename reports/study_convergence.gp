@@ -1,4 +1,4 @@
-# Convergence plot of a study (cases/runner/study_convergence.cpp): error against elements or
+# Convergence plot of a study (studies/study_convergence.cpp): error against elements or
 # unknowns on log-log axes, one curve per combination, with reference slopes.
 # Variables: files, titles (word lists), xcol (1 elements, 2 unknowns), xlabel, ylabel,
 # plottitle, outbase, refx, refy (anchor of the reference slopes).

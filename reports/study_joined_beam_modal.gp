@@ -1,4 +1,4 @@
-# Joined-beam frequency convergence (cases/runner/study_joined_beam_modal.cpp): the largest relative
+# Joined-beam frequency convergence (studies/study_joined_beam_modal.cpp): the largest relative
 # frequency error over the five lowest modes against elements per member (h-refinement) or
 # unknowns (h and p), log-log, with reference slopes anchored at the first point of the first file.
 # Variables: files, titles (word lists), xcol (1 elements, 2 unknowns), xlabel, plottitle, outbase.

@@ -1,4 +1,4 @@
-# Generic line plot of the studies (cases/runner/study_*.cpp): one curve per data file.
+# Generic line plot of the studies (studies/study_*.cpp): one curve per data file.
 # Variables: files, titles (word lists), xcol, ycol, xlabel, ylabel, plottitle, outbase,
 # logx, logy ('1' for a log axis), hline (optional: a horizontal reference line at this y,
 # labelled hlabel).

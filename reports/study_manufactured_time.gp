@@ -1,5 +1,5 @@
-# Time (or space) convergence against the manufactured motion (cases/runner/
-# study_manufactured_time.cpp): error against the step size (or elements) on log-log axes, one
+# Time (or space) convergence against the manufactured motion
+# (studies/study_manufactured_time.cpp): error against the step size (or elements) on log-log axes, one
 # curve per combination, with a reference slope.
 # Variables: files, titles (word lists), xcol, ycol (columns of the data files), xlabel, ylabel,
 # plottitle, outbase, refx, refy (anchor of the reference slope), slope (its order; the

@@ -1,4 +1,4 @@
-# Multi-panel line plot of the studies (cases/runner/study_plot.cpp): curves grouped into panels
+# Multi-panel line plot of the studies (studies/study_plot.cpp): curves grouped into panels
 # (e.g. one per discretization, the parameterizations inside), so that curves which coincide are
 # not hidden behind each other: inside a panel each curve has its own open marker shape, drawn
 # smaller than the one before (coinciding points show as nested markers), and its own colour and

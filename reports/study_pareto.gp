@@ -1,4 +1,4 @@
-# Speed vs accuracy (cases/runner/study_speed.cpp): error against in-process wall time (median of
+# Speed vs accuracy (benches/study_speed.cpp): error against in-process wall time (median of
 # repeats), one curve per combination (its meshes/orders), the Pareto front across combinations.
 # Variables: files, titles (word lists), front (data file of the front), plottitle, ylabel, outbase.
 set terminal pngcairo size 1000,650 enhanced font ",10"

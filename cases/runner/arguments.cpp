@@ -57,21 +57,6 @@ std::optional<double> ParsedArguments::positive_number(const std::string& comman
 
 namespace {
 
-size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = up;
-        }
-    }
-    return row[b.size()];
-}
-
 const OptionSpec* find_option(const CommandSpec& spec, const std::string& name) {
     for (const OptionSpec& o : spec.options) {
         if (o.name == name) return &o;
@@ -80,19 +65,6 @@ const OptionSpec* find_option(const CommandSpec& spec, const std::string& name) 
 }
 
 }  // namespace
-
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
-    std::string best;
-    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
-    for (const std::string& c : candidates) {
-        const size_t d = edit_distance(word, c);
-        if (d < best_distance) {
-            best_distance = d;
-            best = c;
-        }
-    }
-    return best;
-}
 
 ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args) {
     ParsedArguments parsed;

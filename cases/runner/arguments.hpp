@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "runs/catalog.hpp"  // closest_match, for the "did you mean"
+
 namespace rotbeam::cli {
 
 // The limits of the numeric options (docs/case-format.md, "Limits"); a case file's sizes are
@@ -53,7 +55,5 @@ class ParsedArguments {
 
 ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args);
 std::string help_text(const CommandSpec& spec);
-// Closest candidate by edit distance (empty if none is close).
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace rotbeam::cli

@@ -14,17 +14,17 @@
 #include <thread>
 
 #include "arguments.hpp"
-#include "bench.hpp"
-#include "bench_joined_beam.hpp"
-#include "bench_long_run.hpp"
+#include "benches/bench.hpp"
+#include "benches/bench_joined_beam.hpp"
+#include "benches/bench_long_run.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
-#include "make_problem.hpp"
-#include "timing.hpp"
+#include "runs/make_problem.hpp"
+#include "runs/timing.hpp"
 
 namespace rotbeam::cli {
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "runs/catalog.hpp"  // the catalog lookup the commands share
+
 namespace rotbeam {
 struct ReferenceValue;
 }
@@ -26,11 +28,5 @@ std::vector<std::string> reference_overrides(const ReferenceValue& ref);
 int command_reference(const Args& args);
 int command_study(const Args& args);
 int command_bench(const Args& args);  // bench_command.cpp
-
-// Catalog folder: $ROTBEAM_CASES, else the source tree's cases/ (compile-time).
-std::string catalog_directory();
-// A case argument is a path, or the name of a catalog case ("bend-45" → cases/bend-45.yaml).
-std::string resolve_case_path(const std::string& argument);
-std::vector<std::string> catalog_cases();
 
 }  // namespace rotbeam::cli

@@ -12,7 +12,7 @@
 #include "core/errors.hpp"
 #include "core/version.hpp"
 #include "interrupt.hpp"
-#include "timing.hpp"
+#include "runs/timing.hpp"
 
 namespace {
 

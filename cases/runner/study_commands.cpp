@@ -1,4 +1,6 @@
-// The registry of the static studies (studies.hpp) behind `rotbeam study NAME` and the suite.
+#include "study_commands.hpp"
+
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <exception>
@@ -7,9 +9,10 @@
 #include <mutex>
 #include <thread>
 
+#include "benches/study_speed.hpp"
 #include "core/errors.hpp"
-#include "parallel.hpp"
-#include "studies.hpp"
+#include "runs/parallel.hpp"
+#include "studies/studies.hpp"
 
 namespace rotbeam::cli {
 
@@ -25,6 +28,12 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"joined-beam-agreement", study_joined_beam_agreement},
     };
     return table;
+}
+
+std::vector<std::string> study_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : static_studies()) names.push_back(entry.first);
+    return names;
 }
 
 void run_named_study(const std::string& name, const StudyOptions& o) {
@@ -64,13 +73,59 @@ bool standalone_study(const std::string& name) {
 
 }  // namespace
 
+const std::vector<std::pair<std::string, SplitStudy>>& split_studies() {
+    static const std::vector<std::pair<std::string, SplitStudy>> table = {
+        {"convergence", convergence_study()},
+        {"singularity", singularity_study()},
+        {"extremes", extremes_study()},
+    };
+    return table;
+}
+
 void run_suite_studies(const StudyOptions& o, int jobs) {
-    std::vector<std::string> parallel;
+    std::filesystem::create_directories(o.out_dir);
+    // The suite's accuracy studies: the split ones as their runs, the others whole.
+    std::vector<std::string> whole;
+    std::vector<std::pair<std::string, SplitStudy>> split;
     for (const auto& entry : static_studies()) {
-        if (!timed_study(entry.first) && !standalone_study(entry.first))
-            parallel.push_back(entry.first);
+        if (timed_study(entry.first) || standalone_study(entry.first)) continue;
+        const auto s = std::find_if(split_studies().begin(), split_studies().end(),
+                                    [&](const auto& e) { return e.first == entry.first; });
+        if (s != split_studies().end()) {
+            split.push_back(*s);
+        } else {
+            whole.push_back(entry.first);
+        }
     }
-    for_each_parallel(parallel.size(), jobs, [&](size_t i) { run_named_study(parallel[i], o); });
+    // One worker pool: the whole studies first (each is long), then every run of every split
+    // study; then each split study combines its runs' results.
+    std::vector<std::vector<StudyRun>> plans;
+    std::vector<std::pair<size_t, size_t>> items;  // (plan, run) of each pooled run
+    for (const auto& [name, study] : split) {
+        plans.push_back(study.plan(o));
+        for (size_t r = 0; r < plans.back().size(); ++r) items.emplace_back(plans.size() - 1, r);
+    }
+    std::vector<std::vector<nlohmann::json>> results(plans.size());
+    for (size_t p = 0; p < plans.size(); ++p) results[p].resize(plans[p].size());
+    for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
+        if (i < whole.size()) {
+            run_named_study(whole[i], o);
+        } else {
+            const auto [p, r] = items[i - whole.size()];
+            results[p][r] = execute_run(plans[p][r]);
+        }
+    });
+    for (size_t p = 0; p < split.size(); ++p) {
+        const auto start = std::chrono::steady_clock::now();
+        split[p].second.combine(o, results_by_key(plans[p], std::move(results[p])));
+        std::cout
+            << "study " << split[p].first << " (" << plans[p].size()
+            << " runs in the pool), combined in "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s → "
+            << (std::filesystem::path(o.out_dir) / ("study-" + split[p].first + ".md")).string()
+            << "\n";
+    }
     for (const auto& entry : static_studies()) {
         if (timed_study(entry.first)) run_named_study(entry.first, o);
     }

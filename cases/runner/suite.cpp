@@ -26,12 +26,12 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
-#include "parallel.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
-#include "report.hpp"
-#include "run_case.hpp"
-#include "studies.hpp"
+#include "reports/report.hpp"
+#include "runs/parallel.hpp"
+#include "runs/run_case.hpp"
+#include "study_commands.hpp"
 
 namespace rotbeam::cli {
 
@@ -257,7 +257,7 @@ int command_suite(const Args& args) {
     if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);
     std::vector<std::string> files;
     for (const PlannedRun& r : runs) files.push_back(r.output);
-    write_report(out, files);
+    write_report(out, files, study_names());
     std::cout << "report: " << (fs::path(out) / "index.md").string() << "\n";
     return 0;
 }

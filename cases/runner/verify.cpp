@@ -16,7 +16,7 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
-#include "run_case.hpp"
+#include "runs/run_case.hpp"
 #include "verify_plan.hpp"
 
 namespace rotbeam::cli {

@@ -3,7 +3,7 @@
 #include "cases/loader/case_loader.hpp"
 #include "core/errors.hpp"
 #include "parameterizations/registry.hpp"
-#include "run_case.hpp"
+#include "runs/run_case.hpp"
 
 namespace rotbeam::cli {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "cases/runner/manufactured_motion_runs.hpp"
 #include "core/oracles/manufactured_motion.hpp"
 #include "core/so3.hpp"
+#include "studies/manufactured_motion_runs.hpp"
 
 using namespace rotbeam;
 

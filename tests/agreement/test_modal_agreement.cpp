@@ -3,13 +3,12 @@
 // h by Richardson, against the displacement formulation at convergence (order 4 and 6, 10
 // elements per member) — two independent discretizations of the same continuum, each through its
 // own statics, tangent and mass. Modes are paired by their shapes (MAC on the stations of
-// cases/runner/mode_matching.hpp), not by sort order. The follower load makes both tangents
+// runs/mode_matching.hpp), not by sort order. The follower load makes both tangents
 // non-symmetric (QZ in the displacement formulation).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <vector>
 
-#include "cases/runner/mode_matching.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -18,6 +17,7 @@
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "runs/mode_matching.hpp"
 #include "tests/agreement/agreement_runs.hpp"
 
 using namespace rotbeam;

@@ -28,7 +28,7 @@ struct TipHistory {
     long newton_iterations = 0;
 };
 
-// The runner's sequence (cases/runner/run_displacement_dynamics.cpp): optional static start at
+// The runner's sequence (runs/run_displacement_dynamics.cpp): optional static start at
 // the loads of t = 0, then generalized-α to end_time; the tip state at the end.
 template <class P>
 TipHistory simulate(const Model& model, double dt, double end, double rho, bool record_energy) {

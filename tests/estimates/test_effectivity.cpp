@@ -25,7 +25,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/run_case.hpp"
+#include "runs/run_case.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/so3.hpp"

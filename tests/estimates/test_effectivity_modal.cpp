@@ -3,7 +3,7 @@
 // h/4 estimate over 5 … 40 elements per member against the displacement formulation at
 // convergence (order 8, 10 elements per member, consistent mass), an independent discretization
 // of the same continuum. Modes are paired with the reference by shape (MAC on the stations of
-// cases/runner/mode_matching.hpp), as the estimate pairs them with its companions.
+// runs/mode_matching.hpp), as the estimate pairs them with its companions.
 //
 // The reference's own error: orders 7 and 8 on that mesh agree to below kReferenceAgreement
 // (asserted), so true errors down to 100 × that are the mixed formulation's, not the reference's.
@@ -16,8 +16,8 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "cases/runner/mode_matching.hpp"
-#include "cases/runner/run_case.hpp"
+#include "runs/mode_matching.hpp"
+#include "runs/run_case.hpp"
 #include "core/static_driver.hpp"
 #include "estimates/quantity_estimate.hpp"
 

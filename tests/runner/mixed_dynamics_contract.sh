@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The runner's mixed dynamic and modal analyses (cases/runner/run_mixed_dynamics.cpp):
+# The runner's mixed dynamic and modal analyses (runs/run_mixed_dynamics.cpp):
 # a short joined-beam response per parameterization and integrator writes its JSON and CSV history
 # with the joint's columns (the quaternion also its norm drift), IDA's tolerances are taken from
 # the case, a damped case and an unknown integrator are refused as bad input, and the joined

@@ -1,0 +1,35 @@
+// The registry of the studies behind `rotbeam study NAME` and the suite: which name means which
+// study (studies/studies.hpp, benches/study_speed.hpp), in report order, and how the suite runs
+// them.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "studies/study_common.hpp"
+#include "studies/study_runs.hpp"
+
+namespace rotbeam::cli {
+
+using StudyFunction = nlohmann::json (*)(const StudyOptions&);
+// The studies in report order (study_commands.cpp).
+const std::vector<std::pair<std::string, StudyFunction>>& static_studies();
+
+// The studies split into independent runs and a combine step (studies/study_runs.hpp), by name.
+const std::vector<std::pair<std::string, SplitStudy>>& split_studies();
+
+// The suite's studies: the accuracy studies in parallel over `jobs` threads (the split ones as
+// their runs, pooled with the others, then combined), then the speed-accuracy study alone (its
+// timings must not share the cores); joined-beam-dynamics only by name or `all`
+// (study_commands.cpp says why).
+void run_suite_studies(const StudyOptions& o, int jobs);
+
+// Runs the named study (InputError for an unknown name) or, for "all", every study.
+void run_named_study(const std::string& name, const StudyOptions& o);
+
+// The names of the studies, in report order (the report reads DIR/study-NAME.md of each).
+std::vector<std::string> study_names();
+
+}  // namespace rotbeam::cli

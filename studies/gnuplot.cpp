@@ -1,0 +1,64 @@
+#include "gnuplot.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// `text` as one word for the shell: single-quoted, each ' written as '\''.
+std::string shell_word(const std::string& text) {
+    std::string s = "'";
+    for (char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return s + "'";
+}
+
+// `text` as a gnuplot string literal: single-quoted, each ' doubled (no escapes are expanded).
+std::string gnuplot_string(const std::string& text) {
+    std::string s = "'";
+    for (char c : text) s += c == '\'' ? std::string("''") : std::string(1, c);
+    return s + "'";
+}
+
+}  // namespace
+
+void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
+    const fs::path errors =
+        fs::temp_directory_path() /
+        ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
+         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".err");
+    // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string&&.)
+    std::ostringstream command;
+    command << "gnuplot";
+    for (const auto& [k, v] : vars) command << " -e " << shell_word(k + "=" + gnuplot_string(v));
+    command << " " << shell_word((fs::path(ROTBEAM_REPORTS_DIR) / script).string()) << " 2>"
+            << shell_word(errors.string());
+    const int status = std::system(command.str().c_str());
+    std::string last;
+    {
+        std::ifstream in(errors);
+        for (std::string line; std::getline(in, line);) {
+            if (line.find_first_not_of(" ^") != std::string::npos) last = line;
+        }
+    }
+    std::error_code ec;
+    fs::remove(errors, ec);
+    if (status != 0) {
+        const auto outbase = vars.find("outbase");
+        throw std::runtime_error("gnuplot failed on reports/" + script +
+                                 (outbase == vars.end() ? "" : " for " + outbase->second) +
+                                 " (exit status " + std::to_string(status) + "): " + last);
+    }
+}
+
+}  // namespace rotbeam::cli

@@ -1,0 +1,518 @@
+// `rotbeam study joined-beam-dynamics`: speed versus accuracy of
+// the joined beam's 0–2 s response under the joint force 1e5 sin(20t) N, dead and follower
+// (joined_beam_dynamics.hpp; each load measured on its own, with its own references). Per
+// combination on the paper's mesh, every integrator setting (Δt of the fixed-step schemes, IDA
+// tolerances) is run; its time error is the joint history's distance to the combination's own
+// same-mesh self-converged reference, its cost the median thread CPU time (and wall time) of the
+// run. The Pareto front across all of them, which combination wins at which accuracy in words,
+// and the checks that make the references trustworthy: the two formulations' references on the
+// same discrete model, the mixed fixed step against IDA at a tight tolerance, and the space error
+// of the paper mesh against a refined one.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <thread>
+
+#include "core/static_driver.hpp"
+#include "joined_beam_dynamics.hpp"
+#include "runs/timing.hpp"
+#include "studies.hpp"
+#include "study_math.hpp"
+#include "study_plot.hpp"
+
+namespace rotbeam::cli {
+
+namespace {
+
+struct DynamicPoint {
+    std::string combination, series;
+    TimeSetting setting;
+    std::string status;
+    double cpu = kNoValue, wall = kNoValue, error = kNoValue;
+    double spent = 0.0;  // CPU time of the first run, also when it failed (the figure's x)
+    int dofs = 0, newton = 0, repeats = 0;
+    long steps = 0;
+};
+
+// One setting: the first run gives the history (and its error); runs cheaper than 1 s CPU are
+// repeated up to 3 times (2 s budget) for the median.
+DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const ResponseWindow& w,
+                           const History& reference) {
+    DynamicPoint p;
+    p.combination = c.label();
+    p.series = c.label() + "/" + s.integrator;
+    p.setting = s;
+    const RunSpec spec = response_spec(c, s, w);
+    std::vector<double> cpu, wall;
+    nlohmann::json first;
+    for (int i = 0; i < 3; ++i) {
+        const double c0 = thread_cpu_seconds();
+        const Timing t = time_in_process(
+            [&] {
+                nlohmann::json r = run_spec(spec);
+                if (i == 0) first = std::move(r);
+            },
+            1);
+        cpu.push_back(thread_cpu_seconds() - c0);
+        wall.push_back(t.median_seconds);
+        const double spent = std::accumulate(cpu.begin(), cpu.end(), 0.0);
+        if (!has_solution(first.value("status", "")) || cpu.back() > 1.0 || spent > 2.0) break;
+    }
+    p.status = first.value("status", "error");
+    p.dofs = first.value("dofs", 0);
+    p.newton = dynamic_newton_iterations(first);
+    p.steps = dynamic_steps(first);
+    p.repeats = static_cast<int>(cpu.size());
+    p.spent = cpu.front();
+    if (has_solution(p.status)) {
+        p.cpu = median(cpu);
+        p.wall = median(wall);
+        p.error = history_error(joint_history(first), reference);
+    } else {
+        p.status += ": " + first.value("message", "").substr(0, 100);
+    }
+    return p;
+}
+
+nlohmann::json point_json(const DynamicPoint& p) {
+    auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+    return {{"combination", p.combination},
+            {"integrator", p.setting.integrator},
+            {"time_step", p.setting.time_step},
+            {"tolerance", p.setting.tolerance},
+            {"status", p.status},
+            {"cpu_seconds", num(p.cpu)},
+            {"wall_seconds", num(p.wall)},
+            {"repeats", p.repeats},
+            {"time_error", num(p.error)},
+            {"dofs", p.dofs},
+            {"newton_iterations", p.newton},
+            {"steps", p.steps}};
+}
+
+nlohmann::json reference_json(const ReferenceResponse& r) {
+    return {{"how", r.how},
+            {"status", r.status},
+            {"step_difference", r.step_difference},
+            {"extrapolation_change", r.extrapolation_change},
+            {"cpu_seconds", r.cpu_seconds},
+            {"version", r.version},
+            {"from_cache", r.from_cache}};
+}
+
+// Computes the references of `jobs` on two threads (they are not timed; each run is
+// single-threaded), in order of the list.
+struct ReferenceJob {
+    Combination combination;
+    ResponseWindow window;
+    double coarse_step;
+    ReferenceResponse result;
+};
+
+void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cache_dir) {
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < jobs.size(); i = next++) {
+            jobs[i].result = same_mesh_reference(jobs[i].combination, jobs[i].window,
+                                                 jobs[i].coarse_step, cache_dir);
+        }
+    };
+    std::thread a(worker), b(worker);
+    a.join();
+    b.join();
+}
+
+std::string seconds_text(double s) {
+    if (!std::isfinite(s)) return "—";
+    std::ostringstream t;
+    t.precision(3);
+    t << s << " s";
+    return t.str();
+}
+
+}  // namespace
+
+namespace {
+
+// The Pareto front of (CPU time, time error) across every run, its table and data file.
+nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoint>& points,
+                             const std::string& front_file, std::ostringstream& md) {
+    std::vector<double> cost, error;
+    for (const DynamicPoint& p : points) {
+        cost.push_back(p.cpu);
+        error.push_back(p.error);
+    }
+    const std::vector<bool> front = pareto_front(cost, error);
+    std::vector<const DynamicPoint*> on;
+    for (size_t i = 0; i < points.size(); ++i)
+        if (front[i]) on.push_back(&points[i]);
+    std::sort(on.begin(), on.end(),
+              [](const DynamicPoint* a, const DynamicPoint* b) { return a->cpu < b->cpu; });
+    std::ostringstream data;
+    data.precision(10);
+    md << "Pareto front (no other run is both cheaper in CPU time and more accurate):\n\n"
+          "| combination | integrator | Δt / tolerance | steps | Newton | CPU | wall | time error "
+          "|\n"
+          "|---|---|---|---|---|---|---|---|\n";
+    nlohmann::json out = nlohmann::json::array();
+    for (const DynamicPoint* p : on) {
+        data << p->cpu << " " << std::max(p->error, 1e-17) << "\n";
+        md << "| " << p->combination << " | " << p->setting.integrator << " | "
+           << p->setting.label() << " | " << p->steps << " | " << p->newton << " | "
+           << seconds_text(p->cpu) << " | " << seconds_text(p->wall) << " | " << sci(p->error)
+           << " |\n";
+        out.push_back(point_json(*p));
+    }
+    md << "\n";
+    write_text(o, front_file, data.str());
+    return out;
+}
+
+void winners_in_words(const std::vector<DynamicPoint>& points, std::ostringstream& md) {
+    md << "Cheapest run reaching each time-error level (CPU time):\n\n";
+    for (double level : {1e-1, 1e-2, 1e-3, 1e-4}) {
+        const DynamicPoint* best = nullptr;
+        for (const DynamicPoint& p : points) {
+            if (std::isfinite(p.error) && p.error <= level && (!best || p.cpu < best->cpu))
+                best = &p;
+        }
+        md << "- ≤ " << sci(level, 0) << ": ";
+        if (best) {
+            md << best->combination << " with " << best->setting.integrator << " "
+               << best->setting.label() << ", " << seconds_text(best->cpu) << " CPU (error "
+               << sci(best->error) << ")\n";
+        } else {
+            md << "no run reached it\n";
+        }
+    }
+    md << "\n";
+}
+
+void sweep_table(const std::vector<DynamicPoint>& points, std::ostringstream& md) {
+    md << "Every run (time error against the combination's own same-mesh reference):\n\n"
+          "| combination | integrator | Δt / tolerance | status | unknowns | steps | Newton | CPU "
+          "(median) | wall (median) | repeats | time error |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const DynamicPoint& p : points) {
+        md << "| " << p.combination << " | " << p.setting.integrator << " | " << p.setting.label()
+           << " | " << p.status << " | " << p.dofs << " | " << p.steps << " | " << p.newton << " | "
+           << seconds_text(p.cpu) << " | " << seconds_text(p.wall) << " | " << p.repeats << " | "
+           << sci(p.error) << " |\n";
+    }
+    md << "\n";
+}
+
+}  // namespace
+
+namespace {
+
+// The checks of the references: same discrete model across formulations, fixed step against IDA,
+// and the paper mesh's space error. Appends to md, returns the JSON.
+nlohmann::json reference_checks(const StudyOptions& o, bool quick, const ResponseWindow& w,
+                                const std::map<std::string, ReferenceResponse>& same_mesh,
+                                std::ostringstream& md) {
+    nlohmann::json out;
+    const std::string cache = out_path(o, "joined-beam-references");
+    const Combination disp{"displacement", "quaternion", ""};
+    const Combination mixed{"mixed", "wiener-milenkovic", ""};
+    ResponseWindow midpoint = w, p2 = w, p3 = w;
+    midpoint.mass_rule = "midpoint";
+    p2.order = 2;
+    p3.order = 3;
+    // These compare discretizations whose differences (≥ 1e-3) dwarf the time errors of a 2×
+    // coarser reference step, which halves their cost (order 3: ~10 CPU-minutes otherwise).
+    const double step = 2.0 * reference_coarse_step("displacement", o.quick);
+    std::vector<ReferenceJob> jobs = {{disp, midpoint, step, {}}, {disp, p2, step, {}}};
+    if (!quick) jobs.push_back({disp, p3, step, {}});
+    // IDA at a tight tolerance on the mixed paper mesh, on its own thread beside the references.
+    const TimeSetting tight{"ida", 1e-3, quick ? 1e-7 : 1e-8};
+    nlohmann::json ida;
+    double ida_cpu = 0.0;
+    std::thread ida_thread([&] {
+        const double c0 = thread_cpu_seconds();
+        ida = run_spec(response_spec(mixed, tight, w));
+        ida_cpu = thread_cpu_seconds() - c0;
+    });
+    compute_references(jobs, cache);
+    ida_thread.join();
+    const ReferenceResponse& fine_space = jobs.back().result;
+    const History ida_history = joint_history(ida);
+
+    auto error_or_nan = [](const ReferenceResponse& a, const ReferenceResponse& b) {
+        return has_solution(a.status) && has_solution(b.status)
+                   ? history_error(a.history, b.history)
+                   : kNoValue;
+    };
+    md << "### The references\n\nEach combination's same-mesh reference is its own fixed-step "
+          "scheme (generalized-α with ρ∞ = 1, or GEBT's trapezoidal step — the same trapezoidal "
+          "rule "
+          "for this undamped case) at the two finest steps, extrapolated pointwise at order 2. The "
+          "error measure is max over the output times (every "
+       << w.output_interval * 1e3
+       << " ms) of ‖Δu_joint‖ / max ‖u_joint‖ of the reference.\n\n| reference | finer vs coarser "
+          "step | finer step vs extrapolation | CPU |\n|---|---|---|---|\n";
+    nlohmann::json refs = nlohmann::json::object();
+    for (const auto& [label, r] : same_mesh) {
+        md << "| " << r.how << " | " << sci(r.step_difference) << " | "
+           << sci(r.extrapolation_change) << " | "
+           << (r.from_cache ? "cached (" + r.version + ")" : seconds_text(r.cpu_seconds)) << " |\n";
+        refs[label] = reference_json(r);
+    }
+    for (const ReferenceJob& j : jobs) {
+        md << "| " << j.result.how << " | " << sci(j.result.step_difference) << " | "
+           << sci(j.result.extrapolation_change) << " | "
+           << (j.result.from_cache ? "cached (" + j.result.version + ")"
+                                   : seconds_text(j.result.cpu_seconds))
+           << " |\n";
+    }
+    out["same_mesh"] = refs;
+    const auto find = [&](const std::string& label) {
+        const auto it = same_mesh.find(label);
+        return it == same_mesh.end() ? ReferenceResponse{} : it->second;
+    };
+    const ReferenceResponse mixed_ref = find(mixed.label());
+    const ReferenceResponse disp_ref = find(disp.label());
+    const double cross = error_or_nan(jobs[0].result, mixed_ref);
+    const double ida_vs_trap = has_solution(mixed_ref.status) && ida_history.size() > 0
+                                   ? history_error(ida_history, mixed_ref.history)
+                                   : kNoValue;
+    const double space_p1 = error_or_nan(disp_ref, fine_space);
+    const double space_mixed = error_or_nan(mixed_ref, fine_space);
+    const double space_p2 = quick ? kNoValue : error_or_nan(jobs[1].result, fine_space);
+    md << "\nChecks (same error measure):\n\n"
+       << "- Two formulations, one discrete model: the displacement formulation with linear "
+          "elements, one-point stiffness and midpoint mass has the mixed element's frequencies "
+          "(docs/displacement-modal.md); its reference against the mixed (WM) reference: "
+       << sci(cross) << ".\n"
+       << "- Two integrators: mixed (WM) IDA at rtol = atol = " << sci(tight.tolerance, 0) << " ("
+       << ida.value("status", "") << ", " << dynamic_steps(ida) << " steps, "
+       << seconds_text(ida_cpu)
+       << " CPU) against the mixed trapezoidal reference: " << sci(ida_vs_trap) << ".\n"
+       << "- Space error of the paper mesh (" << w.elements
+       << " elements per member) against the displacement formulation with order-"
+       << (quick ? 2 : 3) << " elements on the same mesh (" << fine_space.how
+       << "): displacement order 1 " << sci(space_p1) << ", mixed " << sci(space_mixed);
+    if (!quick) md << ", displacement order 2 " << sci(space_p2);
+    md << ". No Δt or tolerance removes this part; it adds to the time errors below.\n\n";
+    out["checks"] = {{"cross_formulation", cross},
+                     {"ida_tight_vs_trapezoidal", ida_vs_trap},
+                     {"ida_tight_tolerance", tight.tolerance},
+                     {"ida_tight_cpu_seconds", ida_cpu},
+                     {"space_error_displacement_p1", space_p1},
+                     {"space_error_mixed", space_mixed},
+                     {"space_error_displacement_p2", space_p2}};
+    out["extra_references"] = nlohmann::json::array();
+    for (const ReferenceJob& j : jobs) out["extra_references"].push_back(reference_json(j.result));
+    return out;
+}
+
+}  // namespace
+
+namespace {
+
+// Threads measuring one load's sweep (two loads at once: 6 runs in parallel on a shared machine,
+// where each thread gets a share of the cores; the costs are per-thread CPU times).
+constexpr int kSweepThreads = 3;
+
+// One load's measurement: its references, sweep, checks, front and words (`md`, the JSON), and
+// what its figure needs.
+struct LoadStudy {
+    std::string load;  // "dead" | "follower"
+    ResponseWindow window;
+    bool quick_sweep = false;  // the --quick sweep (and checks) on this window
+    std::ostringstream md;
+    nlohmann::json json;
+    PanelFigure figure;  // one panel per formulation and integrator, parameterizations inside
+    std::string front_file;
+    std::map<std::string, ReferenceResponse> same_mesh;
+};
+
+const char* load_words(const std::string& load) {
+    return load == "follower" ? "follower joint force 1e5 sin(20t) N (turns with the joint)"
+                              : "dead joint force 1e5 sin(20t) N (fixed vertical direction)";
+}
+
+// The figure's panel of a run: its formulation and integrator (the parameterizations of one panel
+// give the same errors to 2–3 digits and would hide each other on one set of axes).
+std::string panel_title(const TimeSetting& s, const Combination& c) {
+    if (s.integrator == "ida") return c.formulation + ", IDA (BDF ≤ 2), tolerances";
+    if (s.integrator == "trapezoidal") return c.formulation + ", trapezoidal, Δt";
+    return c.formulation + ", generalized-α ρ∞ = 1, Δt";
+}
+
+void measure_load(const StudyOptions& o, LoadStudy& l) {
+    const ResponseWindow& w = l.window;
+    const bool sweep_quick = o.quick || l.quick_sweep;
+    const std::string cache = out_path(o, "joined-beam-references");
+    std::vector<ReferenceJob> jobs;
+    for (const Combination& c : all_combinations(false)) {
+        jobs.push_back({c, w, reference_coarse_step(c.formulation, o.quick), {}});
+    }
+    compute_references(jobs, cache);
+    std::vector<DynamicPoint> points;
+    std::vector<std::string> notes;
+    // Panels in the order of the table: the fixed-step schemes, then IDA.
+    for (const char* f : {"displacement", "mixed"})
+        l.figure.panel(panel_title({fixed_step_integrator(f), 0.0, 0.0}, {f, "", ""}));
+    l.figure.panel(panel_title({"ida", 0.0, 0.0}, {"mixed", "", ""}));
+    // Every (combination, setting) run, measured by a pool of threads (each run single-threaded,
+    // its cost its own thread's CPU time), kept in the order of the list.
+    struct Task {
+        const ReferenceJob* job;
+        TimeSetting setting;
+    };
+    std::vector<Task> tasks;
+    for (const ReferenceJob& j : jobs) {
+        if (!has_solution(j.result.status)) continue;
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick))
+            tasks.push_back({&j, s});
+    }
+    std::vector<DynamicPoint> measured(tasks.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < tasks.size(); i = next++) {
+            measured[i] = dynamic_point(tasks[i].job->combination, tasks[i].setting, w,
+                                        tasks[i].job->result.history);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < kSweepThreads; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+    size_t task = 0;
+    for (const ReferenceJob& j : jobs) {
+        if (!has_solution(j.result.status)) {
+            notes.push_back(j.combination.label() + ": " + j.result.status.substr(0, 160));
+            continue;
+        }
+        l.same_mesh[j.combination.label()] = j.result;
+        std::map<std::string, Series> by_integrator;
+        for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick)) {
+            points.push_back(measured[task++]);
+            const DynamicPoint& p = points.back();
+            Series& series = by_integrator[s.integrator];
+            series.label = p.series;
+            series.add(s.integrator == "ida" ? s.tolerance : s.time_step, p.dofs, p.cpu, p.error);
+            if (!std::isfinite(p.error))
+                l.figure.add_failure(panel_title(s, j.combination), p.spent);
+        }
+        for (const auto& [integrator, series] : by_integrator) {
+            const TimeSetting s{integrator, 0.0, 0.0};
+            l.figure.add(panel_title(s, j.combination),
+                         write_series(o,
+                                      "data/joined_beam_dynamic_" + l.load + "_" +
+                                          std::to_string(l.figure.files.size()) + ".dat",
+                                      series),
+                         j.combination.rotation);
+        }
+    }
+    std::ostringstream& md = l.md;
+    md << "## " << (l.load == "follower" ? "Follower" : "Dead") << " load (" << w.case_name
+       << ")\n\nThe joined beam under the " << load_words(l.load) << ", cases/" << w.case_name
+       << ".yaml, 0–" << w.end_time << " s.\n\n";
+    for (const std::string& n : notes) md << "- not run: " << n << "\n";
+    if (!notes.empty()) md << "\n";
+    l.json = {{"case", w.case_name}, {"not_run", notes}};
+    if (l.quick_sweep && !o.quick) {
+        md << "**Reduced sweep** (`--reduced-follower`): the --quick settings (fixed step down to "
+              "0.5 ms, IDA down to 1e-5) on the full window, order-2 elements as the space "
+              "reference and IDA at 1e-7 as the integrators' check.\n\n";
+    }
+    l.json["reduced_sweep"] = l.quick_sweep && !o.quick;
+    l.json["references"] = reference_checks(o, sweep_quick, w, l.same_mesh, md);
+    l.front_file = "data/joined_beam_dynamic_front_" + l.load + ".dat";
+    l.json["front"] = dynamic_front(o, points, l.front_file, md);
+    winners_in_words(points, md);
+    md << "![joined-beam-dynamics-" << l.load << ".png](joined-beam-dynamics-" << l.load
+       << ".png)\n\n";
+    sweep_table(points, md);
+    l.json["points"] = nlohmann::json::array();
+    for (const DynamicPoint& p : points) l.json["points"].push_back(point_json(p));
+}
+
+}  // namespace
+
+nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
+    const ResponseWindow base = o.quick ? quick_window() : full_window();
+    std::vector<LoadStudy> loads(2);
+    loads[0].load = "dead";
+    loads[1].load = "follower";
+    for (LoadStudy& l : loads) {
+        l.window = base;
+        l.window.case_name = "joined-beam-" + l.load;
+        l.quick_sweep = l.load == "follower" && o.reduced_follower;
+    }
+    // The two loads on two threads (each run is single-threaded and its cost is its thread's CPU
+    // time, which the other thread does not change); figures after both, from this thread.
+    std::vector<std::exception_ptr> failed(loads.size());
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < loads.size(); ++i) {
+        threads.emplace_back([&, i] {
+            try {
+                measure_load(o, loads[i]);
+            } catch (...) {
+                failed[i] = std::current_exception();
+            }
+        });
+    }
+    for (std::thread& t : threads) t.join();
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
+
+    std::ostringstream md;
+    md << "## Study: joined beam, dynamic speed versus accuracy\n\nThe joined beam under the joint "
+          "force 1e5 sin(20t) N, dead (cases/joined-beam-dead.yaml) and follower "
+          "(cases/joined-beam-follower.yaml), each measured on its own, 0–"
+       << base.end_time << " s, on the paper's mesh (" << base.elements
+       << " elements per member; displacement: linear elements, consistent mass). For every "
+          "combination, the fixed-step scheme at several Δt and (mixed) IDA at several tolerances; "
+          "cost = thread CPU time of the whole run_case (median of up to 3 repeats for runs under "
+          "1 s; the machine was shared, so CPU rather than wall time decides), time error = the "
+          "joint history's distance to the combination's own same-mesh reference for that load. "
+          "The space error of the mesh is measured separately per load and is the same for every "
+          "integrator setting.\n\n";
+    // How much the load's direction matters: the two loads' references, same combination.
+    const std::string probe = Combination{"displacement", "quaternion", ""}.label();
+    const auto dead_ref = loads[0].same_mesh.find(probe);
+    const auto follower_ref = loads[1].same_mesh.find(probe);
+    double load_difference = kNoValue;
+    if (dead_ref != loads[0].same_mesh.end() && follower_ref != loads[1].same_mesh.end()) {
+        load_difference = history_error(follower_ref->second.history, dead_ref->second.history);
+        md << "The follower response against the dead one (" << probe
+           << " references, same measure, relative to the dead response): " << sci(load_difference)
+           << ".\n\n";
+    }
+    nlohmann::json out = {{"study", "joined-beam-dynamics"},
+                          {"quick", o.quick},
+                          {"end_time", base.end_time},
+                          {"output_interval", base.output_interval},
+                          {"elements_per_member", base.elements},
+                          {"follower_vs_dead", load_difference},
+                          {"loads", nlohmann::json::object()}};
+    for (LoadStudy& l : loads) {
+        plot_panels(
+            o, l.figure,
+            {{"xcol", "3"},
+             {"ycol", "4"},
+             {"xlabel", "thread CPU time of the run, median of repeats [s]"},
+             {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
+             {"plottitle", "Joined beam, " + l.load + " load, 0–" + seconds_text(base.end_time) +
+                               ": time error vs CPU time, one panel per formulation and "
+                               "integrator, the Pareto front of all runs in every panel"},
+             {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
+             {"logx", "1"},
+             {"logy", "1"},
+             {"extra", out_path(o, l.front_file)},
+             {"extratitle", "Pareto front (all runs)"}});
+        md << l.md.str();
+        out["loads"][l.load] = l.json;
+    }
+    write_text(o, "study-joined-beam-dynamics.md", md.str());
+    write_text(o, "study-joined-beam-dynamics.json", out.dump(1) + "\n");
+    return out;
+}
+
+}  // namespace rotbeam::cli
