@@ -75,7 +75,9 @@ std::string gnuplot_string(const std::string& text) {
 // Runs a gnuplot script from reports/ with named string variables. A figure the report links must
 // exist, so a failure (gnuplot missing, or the script failing on the data) throws, with gnuplot's
 // last message: the report is never written with a hole where a figure should be.
-void gnuplot(const std::string& script, const std::map<std::string, std::string>& vars) {
+// `figure` names the figure in that message.
+void gnuplot_once(const std::string& script, const std::map<std::string, std::string>& vars,
+                  const std::string& figure) {
     const fs::path errors =
         fs::temp_directory_path() /
         ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
@@ -97,11 +99,25 @@ void gnuplot(const std::string& script, const std::map<std::string, std::string>
     std::error_code ec;
     fs::remove(errors, ec);
     if (status != 0) {
-        const auto outbase = vars.find("outbase");
         throw std::runtime_error("gnuplot failed on reports/" + script +
-                                 (outbase == vars.end() ? "" : " for " + outbase->second) +
-                                 " (exit status " + std::to_string(status) + "): " + last);
+                                 (figure.empty() ? "" : " for " + figure) + " (exit status " +
+                                 std::to_string(status) + "): " + last);
     }
+}
+
+// gnuplot_once with the figures (every script writes `outbase` + a suffix) written atomically:
+// under a temporary base, renamed once gnuplot has finished them (core/atomic_file.hpp).
+void gnuplot(const std::string& script, const std::map<std::string, std::string>& vars) {
+    const auto outbase = vars.find("outbase");
+    if (outbase == vars.end()) {
+        gnuplot_once(script, vars, "");
+        return;
+    }
+    write_files_atomically(outbase->second, [&](const std::string& temporary_base) {
+        std::map<std::string, std::string> v = vars;
+        v["outbase"] = temporary_base;
+        gnuplot_once(script, v, outbase->second);
+    });
 }
 
 // The roll-up's tip path u1/L, u3/L against λ for every converged combination, plus the exact
