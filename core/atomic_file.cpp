@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
@@ -79,6 +80,24 @@ void sync_directory(const fs::path& directory) {
     ::close(fd);
 }
 
+// The files in `temporary`'s directory whose name starts with its name: the files written under a
+// temporary base (write_files_atomically), in name order.
+std::vector<fs::path> with_prefix(const fs::path& temporary) {
+    std::vector<fs::path> files;
+    const std::string prefix = temporary.filename().string();
+    const fs::path directory = temporary.has_parent_path() ? temporary.parent_path() : ".";
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(directory, ec)) {
+        if (entry.path().filename().string().rfind(prefix, 0) == 0) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+void remove_with_prefix(const fs::path& temporary) {
+    for (const fs::path& file : with_prefix(temporary)) ::unlink(file.c_str());
+}
+
 class InFlight {
   public:
     explicit InFlight(const std::string& path) : path_(path) {
@@ -119,10 +138,57 @@ void write_file_atomically(const std::string& path, const std::string& text) {
     sync_directory(target.parent_path());
 }
 
+void write_files_atomically(const std::string& target_base,
+                            const std::function<void(const std::string& temporary_base)>& write) {
+    const fs::path target(target_base);
+    if (target.has_parent_path()) {
+        std::error_code ec;
+        fs::create_directories(target.parent_path(), ec);
+        if (ec) throw OutputError(target_base + ": cannot create the directory: " + ec.message());
+    }
+    // Ended by '_', so that the files of ".NAME.rotbeam-tmp.PID.1_" are not taken for those of
+    // ".NAME.rotbeam-tmp.PID.12_".
+    const fs::path temporary = temporary_for(target).string() + "_";
+    const InFlight guard(temporary.string());
+    try {
+        write(temporary.string());
+    } catch (...) {
+        remove_with_prefix(temporary);
+        throw;
+    }
+    int error = 0;
+    std::string failed;
+    for (const fs::path& file : with_prefix(temporary)) {
+        const std::string suffix =
+            file.filename().string().substr(temporary.filename().string().size());
+        const std::string final_path = target_base + suffix;
+        const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0 || ::fsync(fd) != 0) error = errno;
+        if (fd >= 0) ::close(fd);
+        if (error == 0) {
+            // Under the lock: once the program is stopping, no figure appears any more.
+            const std::lock_guard<std::mutex> lock(in_flight_mutex());
+            if (::rename(file.c_str(), final_path.c_str()) != 0) error = errno;
+        }
+        if (error != 0) {
+            failed = final_path;
+            break;
+        }
+    }
+    if (error != 0) {
+        remove_with_prefix(temporary);
+        throw OutputError(failed + ": write failed, nothing written: " + reason(error));
+    }
+    sync_directory(target.parent_path());
+}
+
 void stop_writes_and_remove_temporaries() {
     // Locked for good: a write that starts after this blocks until the process exits.
     in_flight_mutex().lock();
-    for (const std::string& p : in_flight()) ::unlink(p.c_str());
+    for (const std::string& p : in_flight()) {
+        ::unlink(p.c_str());
+        remove_with_prefix(p);  // the files of a figure's writer
+    }
 }
 
 int remove_stale_temporaries(const std::string& directory) {

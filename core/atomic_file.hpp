@@ -7,16 +7,27 @@
 // OutputError naming the file and removes the temporary.
 //
 // A program stopped by a signal calls stop_writes_and_remove_temporaries() first: it removes the
-// temporaries of writes in flight in any thread and makes every later write wait forever, so
-// nothing partial is left behind when the process then exits.
+// temporaries of writes in flight in any thread (a figure's too, those its writer has created) and
+// makes every later write wait forever, so nothing partial is left behind when the process then
+// exits.
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace rotbeam {
 
 // Writes `text` to `path` atomically (above). Creates the parent directories. Throws OutputError.
 void write_file_atomically(const std::string& path, const std::string& text);
+
+// The same for files written by another program (gnuplot's figures), named by a base path and a
+// suffix each (`BASE.png`, `BASE-tip.svg`): `write` is called with a temporary base next to
+// `target_base` (".NAME.rotbeam-tmp.PID.N_") and writes its files as that base + suffix. Each file
+// it wrote is then flushed to the disk and renamed to `target_base` + suffix. If `write` throws,
+// its files are removed and the exception propagates; a failed flush or rename removes the files
+// not yet renamed and throws OutputError naming the target.
+void write_files_atomically(const std::string& target_base,
+                            const std::function<void(const std::string& temporary_base)>& write);
 
 // Removes the temporaries of every write in flight and blocks all further writes (never
 // returns the lock). Only for a program about to exit.

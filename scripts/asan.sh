@@ -7,7 +7,8 @@
 #   default (CI): the unit tests (ctest -L unit, the scripted ones included), `rotbeam suite
 #                 --quick`, every command's --help and every bad-case fixture through `check` and
 #                 `run`;
-#   --full:       also every other ctest test and every study path (slow: docs/quality-checks.md).
+#   --full:       also every other ctest test (but the label `long`, which the asan test preset
+#                 leaves out) and every study path (slow: docs/quality-checks.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 full=0

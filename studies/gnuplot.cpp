@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/atomic_file.hpp"
+
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
@@ -30,9 +32,9 @@ std::string gnuplot_string(const std::string& text) {
     return s + "'";
 }
 
-}  // namespace
-
-void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
+// One gnuplot run; `figure` names the figure in the failure message.
+void run_once(const std::string& script, const std::map<std::string, std::string>& vars,
+              const std::string& figure) {
     const fs::path errors =
         fs::temp_directory_path() /
         ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
@@ -54,11 +56,27 @@ void run_gnuplot_script(const std::string& script, const std::map<std::string, s
     std::error_code ec;
     fs::remove(errors, ec);
     if (status != 0) {
-        const auto outbase = vars.find("outbase");
         throw std::runtime_error("gnuplot failed on reports/" + script +
-                                 (outbase == vars.end() ? "" : " for " + outbase->second) +
-                                 " (exit status " + std::to_string(status) + "): " + last);
+                                 (figure.empty() ? "" : " for " + figure) + " (exit status " +
+                                 std::to_string(status) + "): " + last);
     }
+}
+
+}  // namespace
+
+// The figures (every script writes `outbase` + a suffix) are written atomically: under a temporary
+// base, renamed once gnuplot has finished them (core/atomic_file.hpp).
+void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
+    const auto outbase = vars.find("outbase");
+    if (outbase == vars.end()) {
+        run_once(script, vars, "");
+        return;
+    }
+    write_files_atomically(outbase->second, [&](const std::string& temporary_base) {
+        std::map<std::string, std::string> v = vars;
+        v["outbase"] = temporary_base;
+        run_once(script, v, outbase->second);
+    });
 }
 
 }  // namespace rotbeam::cli

@@ -9,6 +9,7 @@
 
 #include "arguments.hpp"
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "parameterizations/registry.hpp"
@@ -124,11 +125,11 @@ void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
-    os << r["case"].get<std::string>() << " | " << r["rotation"].get<std::string>() << " | "
-       << r["formulation"].get<std::string>() << " | " << r["elements"] << " elements, order "
-       << r["order"] << ", " << r["dofs"] << " unknowns\n";
-    os << "status: " << r["status"].get<std::string>() << " — " << r["message"].get<std::string>()
-       << "\n";
+    os << cases::one_line(r["case"].get<std::string>()) << " | " << r["rotation"].get<std::string>()
+       << " | " << r["formulation"].get<std::string>() << " | " << r["elements"]
+       << " elements, order " << r["order"] << ", " << r["dofs"] << " unknowns\n";
+    os << "status: " << r["status"].get<std::string>() << " — "
+       << cases::one_line(r["message"].get<std::string>()) << "\n";
     os << std::setprecision(10);
     for (const auto& step : r["steps"]) {
         if (step.contains("load_factor"))

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "arguments.hpp"
+#include "cases/loader/yaml_reader.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
@@ -16,6 +17,7 @@
 
 namespace {
 
+using rotbeam::cases::one_line;  // a message quoting what the user wrote stays one line
 using Command = int (*)(const rotbeam::cli::Args&);
 
 const std::map<std::string, std::pair<Command, const char*>>& commands() {
@@ -76,13 +78,13 @@ int main(int argc, char** argv) {
         }
         return it->second.first(std::vector<std::string>(all.begin() + 1, all.end()));
     } catch (const rotbeam::InputError& e) {
-        std::cerr << e.what() << "\n";
+        std::cerr << one_line(e.what()) << "\n";
         return 2;
     } catch (const rotbeam::OutputError& e) {
-        std::cerr << "rotbeam: " << e.what() << "\n";
+        std::cerr << "rotbeam: " << one_line(e.what()) << "\n";
         return 4;
     } catch (const std::exception& e) {
-        std::cerr << "rotbeam: internal error: " << e.what() << "\n";
+        std::cerr << "rotbeam: internal error: " << one_line(e.what()) << "\n";
         return 3;
     }
 }

@@ -2,10 +2,14 @@
 #include <signal.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "core/results.hpp"
@@ -90,6 +94,45 @@ BOOST_AUTO_TEST_CASE(a_failed_write_names_the_file_and_keeps_the_old_one) {
         ++files;
     }
     BOOST_TEST(files == 1);
+    fs::remove_all(dir);
+}
+
+// Files written by another program under a base name (gnuplot's figures): while the writer runs,
+// nothing exists under the target names; afterwards every file it wrote is there under its target
+// name, and no temporary is left. A writer that fails leaves the old figures and nothing else.
+BOOST_AUTO_TEST_CASE(figures_appear_complete_under_their_names_or_not_at_all) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "rotbeam_results_figures";
+    fs::remove_all(dir);
+    const std::string base = (dir / "plot").string();
+    auto files_in = [&dir] {
+        std::vector<std::string> names;
+        for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    write_files_atomically(base, [&](const std::string& temporary) {
+        BOOST_TEST(fs::path(temporary).parent_path() == dir);
+        BOOST_TEST(fs::path(temporary).filename().string().find(".rotbeam-tmp.") !=
+                   std::string::npos);
+        std::ofstream(temporary + ".png") << "png";
+        std::ofstream(temporary + "-tip.svg") << "svg";
+        BOOST_TEST(!fs::exists(base + ".png"));  // not before the writer has finished
+    });
+    BOOST_TEST(files_in() == (std::vector<std::string>{"plot-tip.svg", "plot.png"}));
+    std::string text;
+    std::ifstream(base + ".png") >> text;
+    BOOST_TEST(text == "png");
+
+    BOOST_CHECK_THROW(write_files_atomically(base,
+                                             [&](const std::string& temporary) {
+                                                 std::ofstream(temporary + ".png") << "half";
+                                                 throw std::runtime_error("gnuplot failed");
+                                             }),
+                      std::runtime_error);
+    BOOST_TEST(files_in() == (std::vector<std::string>{"plot-tip.svg", "plot.png"}));
+    std::ifstream(base + ".png") >> text;
+    BOOST_TEST(text == "png");
     fs::remove_all(dir);
 }
 

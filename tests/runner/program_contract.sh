@@ -38,6 +38,12 @@ expect_input_error "bad --estimate" run cantilever-moment --estimate maybe --jso
 grep -q -- "--estimate" "$work/err" || fail "bad --estimate not named: $(cat "$work/err")"
 [ ! -e "$work/r.json" ] || fail "a result file was written for a bad --estimate"
 expect_input_error "unknown study" study nothing
+# A newline or another control character in what the user wrote is escaped: still one line.
+expect_input_error "a command with a newline" $'fro\nbnicate'
+grep -q "unknown command 'fro\\\\nbnicate'" "$work/err" || fail "newline not escaped: $(cat "$work/err")"
+expect_input_error "a case name with a newline" run $'no-such\ncase.yaml'
+expect_input_error "an option value with a newline" run cantilever-moment --rotation $'quater\nnion'
+expect_input_error "a parameterization with a tab and a bell" run cantilever-moment --rotation $'a\tb\a'
 
 # Every command-line value goes through the validation of the case file, with the same limits
 # (docs/case-format.md, Limits): negative, zero, non-numeric, fractional, overflowing, NaN/inf,

@@ -15,28 +15,11 @@ rotbeam=$1
 compare=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# fail, same (compare-results.py) and complete_files.
+. "$(dirname "$0")/results_check.sh"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
 set -m
-
-same() {  # same DIR_A DIR_B WHAT
-    "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {
-        fail "$3 differs from the uninterrupted --jobs 1 suite:"
-        head -5 "$work/compare.txt"
-    }
-}
-
-complete_files() {  # complete_files DIR WHAT: no temporary, every JSON parses, runs not empty
-    if find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then fail "$2: temporary left behind"; fi
-    python3 - "$1" <<'PY' || fail "$2: a truncated or empty JSON file"
-import json, pathlib, sys
-for p in pathlib.Path(sys.argv[1]).rglob("*.json"):
-    json.loads(p.read_text())
-PY
-    if find "$1" -type f -empty | grep -q .; then fail "$2: an empty file"; fi
-}
 
 # Reference: one uninterrupted suite on one thread; then the same on two threads. The studies
 # cost most of the quick suite (~55 s CPU of it), so the early stops and the full disk use the

@@ -1,0 +1,21 @@
+# Checks of rotbeam output folders shared by the suite tests (docs/durability.md); sourced, with
+# `compare` (scripts/compare-results.py) and `work` (a scratch folder) set by the caller.
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
+    "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {
+        fail "$3 differs from the reference $(basename "$1"):"
+        head -5 "$work/compare.txt"
+    }
+}
+
+complete_files() {  # complete_files DIR WHAT: no temporary, every JSON parses, runs not empty
+    if find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then fail "$2: temporary left behind"; fi
+    python3 - "$1" <<'PY' || fail "$2: a truncated or empty JSON file"
+import json, pathlib, sys
+for p in pathlib.Path(sys.argv[1]).rglob("*.json"):
+    json.loads(p.read_text())
+PY
+    if find "$1" -type f -empty | grep -q .; then fail "$2: an empty file"; fi
+}
