@@ -24,7 +24,4 @@ struct RunRequest {
 // (e.g. a rigid section in the displacement formulation).
 nlohmann::json run_case(const RunRequest& request);
 
-// "displacement", "mixed": what the program offers.
-std::vector<std::string> formulation_names();
-
 }  // namespace rotbeam

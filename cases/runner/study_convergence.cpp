@@ -60,11 +60,11 @@ struct Refinement {
     std::vector<int> elements, orders;  // parallel lists
 };
 
-std::vector<Refinement> refinements(const std::string& formulation, bool quick) {
+std::vector<Refinement> refinements(Formulation formulation, bool quick) {
     auto h = [](int order, std::vector<int> n) {
         return Refinement{"h-p" + std::to_string(order), n, std::vector<int>(n.size(), order)};
     };
-    if (formulation == "mixed") {
+    if (formulation == Formulation::mixed) {
         const std::vector<int> n =
             quick ? std::vector<int>{4, 8, 16, 32} : std::vector<int>{4, 8, 16, 32, 64, 128};
         return {Refinement{"h", n, std::vector<int>(n.size(), 1)}};
@@ -89,10 +89,10 @@ double step_error(const ConvergenceCase& c, const nlohmann::json& result, double
 
 Series run_refinement(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
                       const nlohmann::json& reference, std::string& note) {
-    Series s{comb.formulation + "/" + comb.rotation + "/" + r.name, {}, {}, {}, {}};
+    Series s{comb.formulation_name() + "/" + comb.rotation_name() + "/" + r.name, {}, {}, {}, {}};
     for (size_t i = 0; i < r.elements.size(); ++i) {
         std::vector<std::string> o = c.overrides;
-        if (comb.formulation == "displacement") {
+        if (comb.formulation == Formulation::displacement) {
             o.push_back("discretization.order=" + std::to_string(r.orders[i]));
         }
         const RunSpec spec{c.case_name, comb, o, r.elements[i]};
@@ -116,7 +116,7 @@ Series run_refinement(const ConvergenceCase& c, const Combination& comb, const R
 namespace {
 
 std::string panel_title(const Combination& comb, const Refinement& r) {
-    if (comb.formulation == "mixed") return "mixed, h-refinement";
+    if (comb.formulation == Formulation::mixed) return "mixed, h-refinement";
     if (r.name == "p") return "displacement, p-refinement on 2 elements";
     return "displacement, h-refinement, order " + r.name.substr(3);
 }
@@ -163,8 +163,8 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
                              "data/convergence_" + c.key + "_" +
                                  std::to_string(by_unknowns.files.size()) + ".dat",
                              s);
-            by_unknowns.add(panel_title(comb, r), file, comb.rotation);
-            if (!p_series) by_elements.add(panel_title(comb, r), file, comb.rotation);
+            by_unknowns.add(panel_title(comb, r), file, comb.rotation_name());
+            if (!p_series) by_elements.add(panel_title(comb, r), file, comb.rotation_name());
             if (!std::isfinite(refy) && r.name == "h" && std::isfinite(s.error.front())) {
                 refx = s.elements.front();
                 refd = s.dofs.front();
@@ -205,7 +205,7 @@ nlohmann::json study_convergence(const StudyOptions& o) {
     }
     // The p-refinement is the last of the displacement refinements; held in a variable, since a
     // range-for over a member of the returned temporary would read it after it is destroyed.
-    const std::vector<Refinement> displacement = refinements("displacement", o.quick);
+    const std::vector<Refinement> displacement = refinements(Formulation::displacement, o.quick);
     std::string orders;
     for (int p : displacement.back().orders) {
         orders += (orders.empty() ? "" : ", ") + std::to_string(p);
