@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_matrix_matches_central_differences_at_a_
             d.save_state(kBase);
             const double worst = max_column_error(d);
             const AssemblyCounters c = d.counters();
-            std::cout << P::kName << " " << interpolation << (damping ? ", damped" : ", undamped")
+            std::cout << P::kName << " " << choice_name(interpolation) << (damping ? ", damped" : ", undamped")
                       << ": tip rotation " << d.statics().max_rotation_angle()
                       << " rad, worst column error " << worst << ", inertial terms "
                       << c.inertial_terms << ", damping terms " << c.damping_terms << "\n";
