@@ -34,7 +34,7 @@ std::vector<std::string> overrides_for(const BenchTarget& t, const GridPoint& g,
     const std::vector<std::string> own = {"analysis.load_factors=[" + number(t.load_factor) + "]",
                                           "analysis.substeps=" + std::to_string(g.substeps)};
     o.insert(o.end(), own.begin(), own.end());
-    if (c.formulation == "displacement")
+    if (c.formulation == Formulation::displacement)
         o.push_back("discretization.order=" + std::to_string(g.order));
     if (g.mip) {
         o.push_back("solver.mip=true");
@@ -184,9 +184,9 @@ std::vector<BenchTarget> bench_targets() {
 // p-refinement converges exponentially — with the standard and the MIP Newton (GridPoint::mip).
 // Mixed: second order in h, so only h is searched.
 // Ordered by cost, so the search can stop growing a branch that became too slow.
-std::vector<GridPoint> bench_grid(const std::string& formulation, bool quick) {
+std::vector<GridPoint> bench_grid(Formulation formulation, bool quick) {
     std::vector<GridPoint> grid;
-    if (formulation == "displacement") {
+    if (formulation == Formulation::displacement) {
         const std::vector<int> elements =
             quick ? std::vector<int>{1, 2} : std::vector<int>{1, 2, 4};
         const std::vector<int> orders =
@@ -212,8 +212,8 @@ namespace {
 std::vector<std::string> child_arguments(const BenchTarget& t, const Combination& c,
                                          const GridPoint& g) {
     std::vector<std::string> a = {"run",           resolve_case_path(t.case_name),
-                                  "--formulation", c.formulation,
-                                  "--rotation",    c.rotation,
+                                  "--formulation", c.formulation_name(),
+                                  "--rotation",    c.rotation_name(),
                                   "--elements",    std::to_string(g.elements),
                                   "--quiet"};
     for (const std::string& o : overrides_for(t, g, c)) {
@@ -248,8 +248,8 @@ nlohmann::json bench_combination(const BenchTarget& t, const Combination& c,
                                  const nlohmann::json& reference, bool quick, int repeats) {
     const std::vector<Candidate> tried = search(t, c, quick, reference);
     nlohmann::json out = {{"target", t.name},
-                          {"formulation", c.formulation},
-                          {"rotation", c.rotation},
+                          {"formulation", c.formulation_name()},
+                          {"rotation", c.rotation_name()},
                           {"accuracy_target", t.accuracy}};
     out["candidates"] = nlohmann::json::array();
     for (const Candidate& k : tried) out["candidates"].push_back(candidate_json(k));

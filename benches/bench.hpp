@@ -35,7 +35,7 @@ struct GridPoint {
 };
 
 std::vector<BenchTarget> bench_targets();
-std::vector<GridPoint> bench_grid(const std::string& formulation, bool quick);
+std::vector<GridPoint> bench_grid(Formulation formulation, bool quick);
 
 // Benchmarks one target for one combination (the search, then the timings of the winner).
 nlohmann::json bench_combination(const BenchTarget& target, const Combination& c,

@@ -5,6 +5,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "core/static_driver.hpp"
@@ -63,8 +64,8 @@ void try_attempt(Attempt& a, double accuracy,
 
 std::vector<std::string> child_arguments(const RunSpec& spec) {
     std::vector<std::string> a = {"run",           resolve_case_path(spec.case_name),
-                                  "--formulation", spec.combination.formulation,
-                                  "--rotation",    spec.combination.rotation,
+                                  "--formulation", spec.combination.formulation_name(),
+                                  "--rotation",    spec.combination.rotation_name(),
                                   "--elements",    std::to_string(spec.elements),
                                   "--quiet"};
     for (const std::string& o : spec.overrides) {
@@ -78,7 +79,7 @@ std::vector<std::string> child_arguments(const RunSpec& spec) {
 // then the three cheapest re-timed in process), timed as a whole process; or why none did.
 nlohmann::json combination_row(const Combination& c, std::vector<Attempt>& tried, double accuracy,
                                int repeats, const std::string& unavailable) {
-    nlohmann::json row = {{"formulation", c.formulation}, {"rotation", c.rotation}};
+    nlohmann::json row = {{"formulation", c.formulation_name()}, {"rotation", c.rotation_name()}};
     row["candidates"] = nlohmann::json::array();
     for (const Attempt& a : tried) row["candidates"].push_back(attempt_json(a));
     if (!unavailable.empty()) {
@@ -218,7 +219,7 @@ double max_relative(const std::vector<double>& f, const std::vector<double>& g) 
 
 RunSpec modal_spec(const Combination& c, int elements, int order) {
     std::vector<std::string> o = {"analysis.modes=" + std::to_string(kModes)};
-    if (c.formulation == "displacement") {
+    if (c.formulation == Formulation::displacement) {
         o.push_back("discretization.order=" + std::to_string(order));
         o.push_back("discretization.mass_rule=consistent");
     }
@@ -227,9 +228,9 @@ RunSpec modal_spec(const Combination& c, int elements, int order) {
 
 // Displacement: spectral elements (the frequencies converge exponentially in p); mixed: second
 // order in h, so only h. Ordered by cost.
-std::vector<std::pair<int, int>> modal_grid(const std::string& formulation, bool quick) {
+std::vector<std::pair<int, int>> modal_grid(Formulation formulation, bool quick) {
     std::vector<std::pair<int, int>> g;
-    if (formulation == "mixed") {
+    if (formulation == Formulation::mixed) {
         for (int n : quick ? std::vector<int>{10, 40, 160} : std::vector<int>{10, 40, 160, 640})
             g.push_back({n, 1});
         return g;
@@ -245,7 +246,8 @@ std::vector<std::pair<int, int>> modal_grid(const std::string& formulation, bool
 nlohmann::json bench_joined_beam_modal(bool quick, int repeats) {
     // The converged frequencies, computed here: two p-converged displacement discretizations that
     // must agree to kReferenceAgreement.
-    const Combination reference_combination{"displacement", "quaternion", ""};
+    const Combination reference_combination{Formulation::displacement,
+                                            param::id_of<param::Quaternion>()};
     const std::vector<double> converged =
         frequencies(run_spec(modal_spec(reference_combination, 2, 12)));
     const std::vector<double> check =
@@ -281,8 +283,9 @@ nlohmann::json bench_joined_beam_modal(bool quick, int repeats) {
         for (const auto& [n, p] : modal_grid(c.formulation, quick)) {
             if (n == reached_with_elements) continue;
             Attempt a;
-            a.description = std::to_string(n) + " el./member" +
-                            (c.formulation == "displacement" ? " × p" + std::to_string(p) : "");
+            a.description =
+                std::to_string(n) + " el./member" +
+                (c.formulation == Formulation::displacement ? " × p" + std::to_string(p) : "");
             a.spec = modal_spec(c, n, p);
             try_attempt(a, kModalAccuracy, [&](const nlohmann::json& r) {
                 return max_relative(frequencies(r), converged);
@@ -292,7 +295,7 @@ nlohmann::json bench_joined_beam_modal(bool quick, int repeats) {
                 break;
             }
             tried.push_back(a);
-            if (a.reached && c.formulation == "mixed") break;  // h only: finer is slower
+            if (a.reached && c.formulation == Formulation::mixed) break;  // h only: finer is slower
             if (a.reached) reached_with_elements = n;
         }
         rows.push_back(combination_row(c, tried, kModalAccuracy, repeats, unavailable));
@@ -337,11 +340,11 @@ nlohmann::json bench_joined_beam_dynamic(bool quick, int repeats,
         } else {
             // The coarsest setting of each integrator that reaches the accuracy (finer ones cost
             // more).
-            std::string done_with;
+            std::optional<Integrator> done_with;
             for (const TimeSetting& s : time_settings(c.formulation, quick)) {
                 if (s.integrator == done_with) continue;
                 Attempt a;
-                a.description = s.integrator + " " + s.label();
+                a.description = std::string(choice_name(s.integrator)) + " " + s.label();
                 a.spec = response_spec(c, s, w);
                 try_attempt(a, kDynamicAccuracy, [&](const nlohmann::json& r) {
                     return history_error(joint_history(r), ref.history);

@@ -154,7 +154,7 @@ double max_over_min(const std::array<Part, kParts>& parts) {
 struct Variant {
     std::string label;  // e.g. "displacement/quaternion, generalized-α"
     Combination combination;
-    std::string integrator;  // "" (the formulation's fixed step), "trapezoidal", "ida"
+    Integrator integrator;  // automatic (the formulation's fixed step), trapezoidal, ida
     double end_time = 0.0;
     double output_interval = 0.0;        // 0: every step
     std::vector<std::string> overrides;  // further `--set`s
@@ -168,7 +168,8 @@ nlohmann::json run_variant(const Variant& v) {
         s << "analysis.output_interval=" << v.output_interval;
         spec.overrides.push_back(s.str());
     }
-    if (!v.integrator.empty()) spec.overrides.push_back("analysis.integrator=" + v.integrator);
+    if (v.integrator != Integrator::automatic)
+        spec.overrides.push_back("analysis.integrator=" + std::string(choice_name(v.integrator)));
     spec.overrides.insert(spec.overrides.end(), v.overrides.begin(), v.overrides.end());
     Probe probe;
     probe.span = v.end_time;
@@ -262,8 +263,8 @@ std::vector<Variant> variants(bool quick) {
     // start); the count is printed.
     const double fixed_end = quick ? 2.0 : 20.0;
     const double ida_end = quick ? 0.1 : 0.4;
-    const Combination displacement{"displacement", "quaternion", ""};
-    const Combination mixed{"mixed", "wiener-milenkovic", ""};
+    const Combination displacement{Formulation::displacement, param::id_of<param::Quaternion>()};
+    const Combination mixed{Formulation::mixed, param::id_of<param::WienerMilenkovic>()};
     std::vector<Variant> out;
     for (const double every : {0.0, 100 * kTimeStep}) {
         const std::string tag = every > 0.0 ? ", output every 100 ms" : "";
@@ -271,21 +272,25 @@ std::vector<Variant> variants(bool quick) {
         // t = 5.491 s fails (Newton: "damping found no monotone step"), docs/performance.md.
         out.push_back({"displacement/quaternion, generalized-α ρ∞ 0.9" + tag,
                        displacement,
-                       "",
+                       Integrator::automatic,
                        fixed_end,
                        every,
                        {"analysis.rho_infinity=0.9"}});
         out.push_back({"mixed/wiener-milenkovic, trapezoidal" + tag,
                        mixed,
-                       "trapezoidal",
+                       Integrator::trapezoidal,
                        fixed_end,
                        every,
                        {}});
     }
     for (const double every : {0.0, 5 * kTimeStep}) {
         const std::string tag = every > 0.0 ? ", output every 5 ms" : "";
-        out.push_back(
-            {"mixed/wiener-milenkovic, IDA 1e-6" + tag, mixed, "ida", ida_end, every, {}});
+        out.push_back({"mixed/wiener-milenkovic, IDA 1e-6" + tag,
+                       mixed,
+                       Integrator::ida,
+                       ida_end,
+                       every,
+                       {}});
     }
     return out;
 }

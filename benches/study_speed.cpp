@@ -26,9 +26,9 @@ struct Mesh {
     int order, elements;
 };
 
-std::vector<Mesh> meshes(const std::string& formulation, bool quick) {
+std::vector<Mesh> meshes(Formulation formulation, bool quick) {
     std::vector<Mesh> m;
-    if (formulation == "mixed") {
+    if (formulation == Formulation::mixed) {
         for (int n = 8; n <= (quick ? 128 : 512); n *= 2) m.push_back({1, n});
         return m;
     }
@@ -73,14 +73,15 @@ struct Point {
 Point speed_point(const SpeedCase& c, const Combination& comb, const Mesh& m,
                   const nlohmann::json& reference, int repeats, bool& unavailable) {
     std::vector<std::string> o = c.overrides;
-    if (comb.formulation == "displacement") {
+    if (comb.formulation == Formulation::displacement) {
         o.push_back("discretization.order=" + std::to_string(m.order));
     }
     const RunSpec spec{c.case_name, comb, o, m.elements};
     nlohmann::json r = run_spec(spec);
     unavailable = r.value("status", "") == "unavailable";
     Point p{
-        comb.label() + (comb.formulation == "displacement" ? "/p" + std::to_string(m.order) : ""),
+        comb.label() +
+            (comb.formulation == Formulation::displacement ? "/p" + std::to_string(m.order) : ""),
         m, kNoValue, kNoValue, r.value("dofs", 0)};
     if (unavailable || !has_solution(r.value("status", "")) || !converged_steps_exist(r)) return p;
     const nlohmann::json& step = r["steps"].back();
@@ -179,7 +180,7 @@ nlohmann::json speed_case(const StudyOptions& o, const SpeedCase& c, std::ostrin
             points.push_back(p);
             if (!by_label.count(p.combination)) order.push_back(p.combination);
             by_label[p.combination].label = p.combination;
-            panel_of[p.combination] = comb.formulation == "mixed"
+            panel_of[p.combination] = comb.formulation == Formulation::mixed
                                           ? std::string("mixed (second order, h)")
                                           : "displacement, order " + std::to_string(m.order);
             by_label[p.combination].add(m.elements, p.dofs, p.seconds, p.error);
@@ -190,7 +191,7 @@ nlohmann::json speed_case(const StudyOptions& o, const SpeedCase& c, std::ostrin
                 write_series(
                     o, "data/speed_" + c.key + "_" + std::to_string(figure.files.size()) + ".dat",
                     by_label[label]),
-                comb.rotation);
+                comb.rotation_name());
         }
     }
     const nlohmann::json out = {
@@ -251,7 +252,7 @@ nlohmann::json counters_table(const StudyOptions& o, std::ostringstream& md) {
         if (model.analysis.kind == AnalysisKind::dynamic) {
             ov.push_back("analysis.end_time=" + sci(10.0 * model.analysis.dynamics.time_step, 17));
         }
-        const Combination c{model.discretization.formulation, model.discretization.rotation, ""};
+        const Combination c{model.discretization.formulation, model.discretization.rotation};
         const nlohmann::json r = run_spec({name, c, ov, 0});
         md << "| " << name << " | " << analysis_name(model.analysis.kind) << " | " << c.label()
            << " | "

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/choices.hpp"
 #include "core/types.hpp"
 
 namespace rotbeam {
@@ -154,15 +155,15 @@ struct DynamicSettings {
     double end_time = 0.0;
     double output_interval = 0.0;  // 0 = every step
     double rho_infinity = 1.0;     // generalized-α spectral radius at infinity
-    std::string integrator;        // formulation-specific name; empty = default
+    Integrator integrator = Integrator::automatic;  // which a formulation takes: combinations/
     // IDA (integrator "ida"): relative tolerance and absolute tolerance per unit of each unknown's
     // state scale (IDASVtolerances, docs/mixed-dynamics.md).
     double relative_tolerance = 1e-6;
     double absolute_tolerance = 1e-6;
     Vec3 initial_velocity = Vec3::Zero();
-    // "rest": start from the reference configuration at rest; "static": start at rest from the
+    // `rest`: start from the reference configuration at rest; `static`: start at rest from the
     // static equilibrium under the loads evaluated at t = 0 (a release, docs/benchmarks.md §8).
-    std::string initial_state = "rest";
+    InitialState initial_state = InitialState::rest;
 };
 
 struct ModalSettings {
@@ -183,19 +184,19 @@ struct Analysis {
 enum class Quadrature { automatic, reduced, full, gll };
 
 struct Discretization {
-    std::string formulation = "displacement";  // displacement | mixed
-    std::string rotation = "quaternion";       // registry name of the parameterization
+    Formulation formulation = Formulation::displacement;
+    ParameterizationId rotation{};  // parameterizations/registry.hpp; {} = the quaternion
     int order = 1;                             // displacement: element polynomial order p
     Quadrature quadrature = Quadrature::automatic;
     int quadrature_points = 0;   // > 0 overrides the rule's point count
-    std::string interpolation = "relative";    // relative | direct
-    std::string update = "multiplicative";     // multiplicative | additive
+    Interpolation interpolation = Interpolation::relative;
+    Update update = Update::multiplicative;
     bool rescale = true;
     std::string mass_rule = "consistent";      // consistent | midpoint | lumped
     // Mixed formulation with Wiener–Milenković: `plain` (seed 002 as published; singular at
     // φ = 2π) or `continuous` (GXBeam's continuous rescaling map,
     // parameterizations/wiener_milenkovic_continuous.hpp).
-    std::string wm_map = "plain";
+    WmMap wm_map = WmMap::plain;
 };
 
 struct SolverSettings {
@@ -206,8 +207,8 @@ struct SolverSettings {
     // Mixed-integration-point Newton (displacement statics, formulations/displacement/
     // mip_stresses.hpp): same solution, the geometric stiffness from the predicted resultants.
     bool mip = false;
-    std::string linear_solver = "sparse";  // sparse | dense (core/sparse_lu.hpp)
-    std::string driver = "newton";       // newton | kinsol
+    LinearSolver linear_solver = LinearSolver::sparse;  // core/sparse_lu.hpp
+    Driver driver = Driver::newton;
     double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
     double length_scale = 0.0;           // 0 = derive from the model (total length)
     // Assemble every term a formulation has, also those the scene makes zero or needless (inertia

@@ -47,7 +47,7 @@ NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSe
     s.line_search = solver.line_search;
     s.max_step_cuts = statics.max_step_cuts;
     s.substeps = std::max(1, statics.substeps);
-    s.dense_linear_solver = solver.linear_solver == "dense";
+    s.dense_linear_solver = solver.linear_solver == LinearSolver::dense;
     return s;
 }
 

@@ -1,8 +1,14 @@
 #include "parameterizations/registry.hpp"
 
-#include "core/errors.hpp"
+#include <stdexcept>
 
 namespace rotbeam::param {
+
+std::vector<ParameterizationId> parameterization_ids() {
+    std::vector<ParameterizationId> ids;
+    for_each_parameterization([&]<class P>() { ids.push_back(id_of<P>()); });
+    return ids;
+}
 
 std::vector<std::string> parameterization_names() {
     std::vector<std::string> names;
@@ -10,14 +16,22 @@ std::vector<std::string> parameterization_names() {
     return names;
 }
 
+std::string_view name_of(ParameterizationId id) {
+    return dispatch_parameterization(id, []<class P>() { return P::kName; });
+}
+
+std::optional<ParameterizationId> parse_parameterization(std::string_view name) {
+    std::optional<ParameterizationId> found;
+    for_each_parameterization([&]<class P>() {
+        if (name == P::kName) found = id_of<P>();
+    });
+    return found;
+}
+
 namespace detail {
-void throw_unknown_parameterization(std::string_view name) {
-    std::string valid;
-    for (const std::string& n : parameterization_names()) {
-        valid += valid.empty() ? n : ", " + n;
-    }
-    throw InputError("unknown rotation parameterization '" + std::string(name) +
-                     "' (valid: " + valid + ")");
+void throw_invalid_id(ParameterizationId id) {
+    throw std::logic_error("parameterization id " + std::to_string(static_cast<int>(id)) +
+                           " is not in the registry");
 }
 }  // namespace detail
 

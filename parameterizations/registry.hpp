@@ -1,24 +1,36 @@
-// The list of rotation parameterizations and the one place that turns a name into a type.
+// The list of rotation parameterizations, and the one place that turns a name into a type.
 //
-// Adding a parameterization: write its header (satisfying RotationParameterization) and add it to
-// AllParameterizations and ROTBEAM_FOR_EACH_PARAMETERIZATION below (a static_assert checks that
-// the two agree). The runner's single switch uses dispatch_parameterization; the formulations'
-// explicit instantiations use ROTBEAM_FOR_EACH_PARAMETERIZATION (an explicit instantiation needs
-// the type spelled out, which a type list cannot do without a macro).
+// Adding a parameterization: write its header (satisfying RotationParameterization), include it
+// below and add X(Type) to ROTBEAM_FOR_EACH_PARAMETERIZATION. Everything else derives from that
+// list: the type list AllParameterizations, the ids and names (the case loader's valid values),
+// the runner's dispatch, every formulation's explicit instantiations and the combination registry
+// (combinations/registry.hpp). The CTest check `parameterizations_registered` fails when a header
+// of parameterizations/ satisfies the concept without being listed here.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "core/choices.hpp"
 #include "parameterizations/concept.hpp"
 #include "parameterizations/euler_angles.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+
+// X(Type) for every parameterization, in registry order (the first is a case's default), e.g.
+// `#define INSTANTIATE(P) template class Beam<param::P>;`. The one list of parameterizations.
+#define ROTBEAM_FOR_EACH_PARAMETERIZATION(X) \
+    X(Quaternion)                            \
+    X(WienerMilenkovic)                      \
+    X(Rodrigues)                             \
+    X(RotationVector)                        \
+    X(EulerAngles)
 
 namespace rotbeam::param {
 
@@ -27,47 +39,83 @@ struct TypeList {
     static constexpr int kSize = static_cast<int>(sizeof...(Ts));
     template <class T>
     static constexpr bool kContains = (std::is_same_v<T, Ts> || ...);
+    // The position of T in the list (kSize when absent).
+    template <class T>
+    static constexpr int kIndexOf = [] {
+        int i = 0;
+        (void)((std::is_same_v<T, Ts> ? true : (++i, false)) || ...);
+        return i;
+    }();
 };
 
-using AllParameterizations =
-    TypeList<Quaternion, WienerMilenkovic, Rodrigues, RotationVector, EulerAngles>;
+namespace detail {
+struct ListStart;
+template <class List>
+struct DropFirst;
+template <class First, class... Rest>
+struct DropFirst<TypeList<First, Rest...>> {
+    using type = TypeList<Rest...>;
+};
+// Expands to `, Type` to follow ListStart (a comma-separated list without a trailing comma).
+// NOLINTNEXTLINE(bugprone-macro-parentheses): a type in a template argument list.
+#define ROTBEAM_DETAIL_COMMA_TYPE(T) , T
+}  // namespace detail
 
-// X(Type) for every parameterization, e.g. `#define INSTANTIATE(P) template class Beam<param::P>;`
-#define ROTBEAM_FOR_EACH_PARAMETERIZATION(X) \
-    X(Quaternion) X(WienerMilenkovic) X(Rodrigues) X(RotationVector) X(EulerAngles)
+using AllParameterizations = typename detail::DropFirst<
+    TypeList<detail::ListStart ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DETAIL_COMMA_TYPE)>>::type;
+#undef ROTBEAM_DETAIL_COMMA_TYPE
 
 namespace detail {
-// Both expand to an operator and its operand, to be chained after a first term (`0 +1 +1`);
-// parentheses would turn the chain into calls, hence the NOLINT.
-// NOLINTBEGIN(bugprone-macro-parentheses)
-#define ROTBEAM_DETAIL_COUNT_ONE(T) +1
-#define ROTBEAM_DETAIL_CHECK_LISTED(T) &&AllParameterizations::kContains<T>
-// NOLINTEND(bugprone-macro-parentheses)
-inline constexpr int kMacroCount = 0 ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DETAIL_COUNT_ONE);
-static_assert(
-    kMacroCount == AllParameterizations::kSize &&
-        (true ROTBEAM_FOR_EACH_PARAMETERIZATION(ROTBEAM_DETAIL_CHECK_LISTED)),
-    "ROTBEAM_FOR_EACH_PARAMETERIZATION and AllParameterizations must list the same types");
-#undef ROTBEAM_DETAIL_COUNT_ONE
-#undef ROTBEAM_DETAIL_CHECK_LISTED
-
 template <class... Ts>
 constexpr bool all_satisfy_concept(TypeList<Ts...>) {
     return (RotationParameterization<Ts> && ...);
 }
-static_assert(all_satisfy_concept(AllParameterizations{}));
+template <class... Ts>
+constexpr bool names_distinct(TypeList<Ts...>) {
+    const std::string_view names[] = {Ts::kName...};
+    for (std::size_t i = 0; i < sizeof...(Ts); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (names[i] == names[j]) return false;
+        }
+    }
+    return true;
+}
+}  // namespace detail
 
-// Throws InputError naming `name` and the valid names.
-[[noreturn]] void throw_unknown_parameterization(std::string_view name);
+static_assert(detail::all_satisfy_concept(AllParameterizations{}));
+static_assert(detail::names_distinct(AllParameterizations{}),
+              "two parameterizations share a kName: a case could not choose between them");
 
+// The id of P (its position in the list), the value a Model's discretization.rotation holds.
+template <class P>
+constexpr ParameterizationId id_of() {
+    static_assert(AllParameterizations::kContains<P>,
+                  "not in ROTBEAM_FOR_EACH_PARAMETERIZATION (parameterizations/registry.hpp)");
+    return static_cast<ParameterizationId>(AllParameterizations::kIndexOf<P>);
+}
+
+// The default of a case that names no rotation (Discretization::rotation's value-initialized id).
+static_assert(id_of<Quaternion>() == ParameterizationId{},
+              "the quaternion is the default parameterization and must be listed first");
+
+// Every id, in registry order.
+std::vector<ParameterizationId> parameterization_ids();
+// The kName of every parameterization, in registry order (the valid values of a case's rotation).
+std::vector<std::string> parameterization_names();
+// The kName of the parameterization with this id.
+std::string_view name_of(ParameterizationId id);
+// The id of the parameterization named `name`; nothing for an unknown name (the caller, the case
+// loader, says which file and key).
+std::optional<ParameterizationId> parse_parameterization(std::string_view name);
+
+namespace detail {
 template <class F, class First, class... Rest>
-decltype(auto) dispatch(std::string_view name, F& f, TypeList<First, Rest...>) {
+decltype(auto) dispatch(int index, F& f, TypeList<First, Rest...>) {
     if constexpr (sizeof...(Rest) == 0) {
-        if (name != First::kName) throw_unknown_parameterization(name);
         return f.template operator()<First>();
     } else {
-        if (name == First::kName) return f.template operator()<First>();
-        return dispatch(name, f, TypeList<Rest...>{});
+        if (index == 0) return f.template operator()<First>();
+        return dispatch(index - 1, f, TypeList<Rest...>{});
     }
 }
 
@@ -75,16 +123,18 @@ template <class F, class... Ts>
 void for_each(F& f, TypeList<Ts...>) {
     (f.template operator()<Ts>(), ...);
 }
+
+// Throws std::logic_error: an id that no parse produced.
+[[noreturn]] void throw_invalid_id(ParameterizationId id);
 }  // namespace detail
 
-// The kName of every parameterization, in AllParameterizations order.
-std::vector<std::string> parameterization_names();
-
-// f.template operator()<P>() for the parameterization P named `name`; every branch must return
-// the same type. Throws InputError listing the valid names for an unknown name.
+// f.template operator()<P>() for the parameterization P with this id; every branch must return
+// the same type.
 template <class F>
-decltype(auto) dispatch_parameterization(std::string_view name, F&& f) {
-    return detail::dispatch(name, f, AllParameterizations{});
+decltype(auto) dispatch_parameterization(ParameterizationId id, F&& f) {
+    const int index = static_cast<int>(id);
+    if (index < 0 || index >= AllParameterizations::kSize) detail::throw_invalid_id(id);
+    return detail::dispatch(index, f, AllParameterizations{});
 }
 
 // f.template operator()<P>() for every P in AllParameterizations, in order.

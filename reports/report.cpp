@@ -16,8 +16,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/choices.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
+#include "parameterizations/registry.hpp"
 #include "report_dynamics.hpp"
 #include "report_table_one.hpp"
 #include "studies/gnuplot.hpp"
@@ -96,9 +98,11 @@ std::vector<Figure> rollup_figures(const std::string& out,
 std::vector<Figure> rollup_shape_figures(const std::string& out,
                                          const std::vector<nlohmann::json>& runs) {
     for (const nlohmann::json& r : runs) {
-        if (r.value("case", "") != "cantilever-moment" || r.value("rotation", "") != "quaternion" ||
-            r.value("formulation", "") != "displacement" || r["steps"].empty() ||
-            !r["steps"][0].contains("centerline")) {
+        if (r.value("case", "") != "cantilever-moment" ||
+            param::parse_parameterization(r.value("rotation", "")) !=
+                param::id_of<param::Quaternion>() ||
+            parse_choice<Formulation>(r.value("formulation", "")) != Formulation::displacement ||
+            r["steps"].empty() || !r["steps"][0].contains("centerline")) {
             continue;
         }
         const fs::path file = fs::path(out) / "data" / "rollup_shapes.dat";

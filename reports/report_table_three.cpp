@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "core/choices.hpp"
 #include "report_dynamics.hpp"
 #include "runs/catalog.hpp"
 
@@ -53,7 +54,7 @@ std::string settings(const nlohmann::json& r) {
     std::ostringstream s;
     s << r.value("elements", 0) / std::max<size_t>(1, r["elements_per_member"].size())
       << " el./member";
-    if (r.value("formulation", "") == "displacement") {
+    if (parse_choice<Formulation>(r.value("formulation", "")) == Formulation::displacement) {
         s << ", order " << r.value("order", 0) << ", " << r["options"].value("quadrature", "")
           << " quadrature";
     }

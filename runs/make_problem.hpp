@@ -9,8 +9,8 @@
 
 namespace rotbeam {
 
-// A static problem for model.discretization.{formulation, rotation}. Throws InputError for an
-// unknown name or a combination that does not exist.
+// A static problem for model.discretization.{formulation, rotation} (combinations/dispatch.hpp).
+// Throws InputError for an option the formulation does not take.
 std::unique_ptr<StaticProblem> make_static_problem(const Model& model);
 
 }  // namespace rotbeam

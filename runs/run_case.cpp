@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analyses.hpp"
+#include "combinations/registry.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
@@ -19,8 +20,6 @@
 #include "mode_matching.hpp"
 
 namespace rotbeam {
-
-std::vector<std::string> formulation_names() { return {"displacement", "mixed"}; }
 
 namespace {
 
@@ -49,8 +48,8 @@ nlohmann::json result_header(const RunRequest& request) {
     }
     return {{"case", m.name},
             {"case_file", request.case_path},
-            {"rotation", d.rotation},
-            {"formulation", d.formulation},
+            {"rotation", param::name_of(d.rotation)},
+            {"formulation", choice_name(d.formulation)},
             {"elements", elements},
             {"elements_per_member", per_member},
             {"order", d.order},
@@ -60,14 +59,14 @@ nlohmann::json result_header(const RunRequest& request) {
             {"wall_seconds", 0.0},
             {"version", kGitDescribe},
             {"options",
-             {{"interpolation", d.interpolation},
-              {"update", d.update},
+             {{"interpolation", choice_name(d.interpolation)},
+              {"update", choice_name(d.update)},
               {"rescale", d.rescale},
-              {"wm_map", d.wm_map},
+              {"wm_map", choice_name(d.wm_map)},
               {"quadrature", quadrature_name(d.quadrature)},
               {"quadrature_points", d.quadrature_points},
               {"mass_rule", d.mass_rule},
-              {"driver", m.solver.driver},
+              {"driver", choice_name(m.solver.driver)},
               {"residual_tolerance", m.solver.residual_tolerance},
               {"increment_tolerance", m.solver.increment_tolerance},
               {"assemble_all_terms", m.solver.assemble_all_terms}}},
@@ -163,7 +162,7 @@ void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
     StepSolver solver;
-    if (model.solver.driver == "kinsol") {
+    if (model.solver.driver == Driver::kinsol) {
         if (!problem->additive()) {
             throw InputError(
                 "solver.driver: kinsol needs an additive update (the mixed "
@@ -259,8 +258,8 @@ void report_unavailable(const Model& model, nlohmann::json& result) {
     result["status"] = "error";
     result["message"] =
         std::string(model.analysis.kind == AnalysisKind::dynamic ? "dynamic" : "modal") +
-        " analysis is not available yet in the " + model.discretization.formulation +
-        " formulation";
+        " analysis is not available yet in the " +
+        std::string(choice_name(model.discretization.formulation)) + " formulation";
 }
 
 nlohmann::json run_case(const RunRequest& request) {
@@ -274,17 +273,31 @@ nlohmann::json run_case(const RunRequest& request) {
                 run_static_case(model, request.trace_newton, result);
                 break;
             case AnalysisKind::dynamic:
-                if (model.discretization.formulation == "mixed") {
-                    run_mixed_dynamic(model, request.trace_newton, result);
-                } else {
-                    run_displacement_dynamic(model, request.trace_newton, result);
+                if (!comb::traits(model.discretization.formulation).dynamics) {
+                    report_unavailable(model, result);
+                    break;
+                }
+                switch (model.discretization.formulation) {
+                    case Formulation::displacement:
+                        run_displacement_dynamic(model, request.trace_newton, result);
+                        break;
+                    case Formulation::mixed:
+                        run_mixed_dynamic(model, request.trace_newton, result);
+                        break;
                 }
                 break;
             case AnalysisKind::modal:
-                if (model.discretization.formulation == "mixed") {
-                    run_mixed_modal(model, request.trace_newton, result);
-                } else {
-                    run_displacement_modal(model, request.trace_newton, result);
+                if (!comb::traits(model.discretization.formulation).modal) {
+                    report_unavailable(model, result);
+                    break;
+                }
+                switch (model.discretization.formulation) {
+                    case Formulation::displacement:
+                        run_displacement_modal(model, request.trace_newton, result);
+                        break;
+                    case Formulation::mixed:
+                        run_mixed_modal(model, request.trace_newton, result);
+                        break;
                 }
                 break;
         }

@@ -30,7 +30,4 @@ void add_run_estimate(const RunRequest& request, nlohmann::json& result);
 // The `estimate` of a run with the estimate switched off.
 nlohmann::json estimate_off();
 
-// "displacement", "mixed": what the program offers.
-std::vector<std::string> formulation_names();
-
 }  // namespace rotbeam

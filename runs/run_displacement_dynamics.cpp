@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "analyses.hpp"
+#include "combinations/registry.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/generalized_alpha.hpp"
@@ -119,17 +120,17 @@ nlohmann::json reactions_json(const Model& model, form::DisplacementDynamics<P>&
 template <class P>
 void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     const DynamicSettings& d = model.analysis.dynamics;
-    if (!d.integrator.empty() && d.integrator != "generalized-alpha") {
+    if (!comb::takes_integrator(Formulation::displacement, d.integrator)) {
         throw InputError(
             "analysis.integrator: the displacement formulation integrates with "
             "'generalized-alpha', not '" +
-            d.integrator + "'");
+            std::string(choice_name(d.integrator)) + "'");
     }
     form::DisplacementDynamics<P> problem(model);
     result["dofs"] = problem.size();
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
-    if (d.initial_state == "static") {
+    if (d.initial_state == InitialState::static_equilibrium) {
         problem.statics().set_time(0.0);
         const StaticOutcome out = run_static(problem.statics(), {1.0}, settings, {});
         if (!static_state_usable(out, result)) return;

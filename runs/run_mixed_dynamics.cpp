@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "analyses.hpp"
+#include "combinations/dispatch.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
@@ -162,10 +163,12 @@ void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNorm
 // or `ida` (SUNDIALS IDA, BDF of order ≤ 2, analysis.relative_tolerance and absolute_tolerance,
 // 1e-6 by default, the latter × the state scales).
 bool use_ida(const DynamicSettings& d) {
-    if (d.integrator.empty() || d.integrator == "trapezoidal") return false;
-    if (d.integrator == "ida") return true;
-    throw InputError("analysis.integrator: unknown integrator '" + d.integrator +
-                     "' for the mixed formulation (trapezoidal | ida)");
+    if (!comb::takes_integrator(Formulation::mixed, d.integrator)) {
+        throw InputError("analysis.integrator: unknown integrator '" +
+                         std::string(choice_name(d.integrator)) +
+                         "' for the mixed formulation (trapezoidal | ida)");
+    }
+    return comb::integrator_for(Formulation::mixed, d.integrator) == Integrator::ida;
 }
 
 template <class P>
@@ -177,7 +180,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     }
     const bool ida = use_ida(d);
     VecX state = form::MixedStaticsOf<P>(model).state_vector();
-    if (d.initial_state == "static" && has_static_load(model)) {
+    if (d.initial_state == InitialState::static_equilibrium && has_static_load(model)) {
         double lambda = 0.0;
         Model at_start = model;
         at_start.analysis.statics.load_factors = {1.0};  // the loads at t = 0
@@ -235,15 +238,16 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     };
     const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
                                : integrate_trapezoidal(dyn, x, xdot, s, output);
-    result["dynamics"] = {{"integrator", ida ? "ida" : "trapezoidal"},
-                          {"steps", out.steps},
-                          {"newton_iterations", out.newton_iterations},
-                          {"residual_evaluations", out.residual_evaluations},
-                          {"jacobian_evaluations", out.jacobian_evaluations},
-                          {"error_test_failures", out.error_test_failures},
-                          {"nonlinear_failures", out.nonlinear_failures},
-                          {"max_order", ida ? s.max_order : 2},
-                          {"last_time", out.last_time}};
+    result["dynamics"] = {
+        {"integrator", choice_name(ida ? Integrator::ida : Integrator::trapezoidal)},
+        {"steps", out.steps},
+        {"newton_iterations", out.newton_iterations},
+        {"residual_evaluations", out.residual_evaluations},
+        {"jacobian_evaluations", out.jacobian_evaluations},
+        {"error_test_failures", out.error_test_failures},
+        {"nonlinear_failures", out.nonlinear_failures},
+        {"max_order", ida ? s.max_order : 2},
+        {"last_time", out.last_time}};
     if (ida) {
         result["dynamics"]["relative_tolerance"] = s.relative_tolerance;
         result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
@@ -268,16 +272,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
 // (WM with the continuous map when the case asks for it).
 template <class F>
 void dispatch_mixed(const Model& model, F&& f) {
-    const Discretization& d = model.discretization;
-    param::dispatch_parameterization(d.rotation, [&]<class P>() {
-        if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
-            if (d.wm_map == "continuous") {
-                f.template operator()<param::WienerMilenkovicContinuous>();
-                return;
-            }
-        }
-        f.template operator()<P>();
-    });
+    comb::dispatch_parameterization_of<Formulation::mixed>(model.discretization, f);
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ std::string number(double x) {
 std::string TimeSetting::label() const {
     std::ostringstream s;
     s.precision(3);
-    if (integrator == "ida") {
+    if (integrator == Integrator::ida) {
         s << "ida-tol=" << tolerance;
     } else {
         s << "dt=" << time_step;
@@ -42,8 +42,8 @@ ResponseWindow quick_window() {
     return w;
 }
 
-std::string fixed_step_integrator(const std::string& formulation) {
-    return formulation == "mixed" ? "trapezoidal" : "generalized-alpha";
+Integrator fixed_step_integrator(Formulation formulation) {
+    return comb::traits(formulation).integrators.front();
 }
 
 std::vector<std::string> response_overrides(const Combination& c, const TimeSetting& s,
@@ -51,15 +51,15 @@ std::vector<std::string> response_overrides(const Combination& c, const TimeSett
     std::vector<std::string> o = {"analysis.time_step=" + number(s.time_step),
                                   "analysis.end_time=" + number(w.end_time),
                                   "analysis.output_interval=" + number(w.output_interval)};
-    if (c.formulation == "displacement") {
+    if (c.formulation == Formulation::displacement) {
         // ρ∞ = 1: the undamped trapezoidal limit, the same time discretization as the mixed
         // formulation's fixed step (docs/displacement-dynamics.md).
         o.push_back("analysis.rho_infinity=1");
         o.push_back("discretization.order=" + std::to_string(w.order));
         if (!w.mass_rule.empty()) o.push_back("discretization.mass_rule=" + w.mass_rule);
     } else {
-        o.push_back("analysis.integrator=" + s.integrator);
-        if (s.integrator == "ida") {
+        o.push_back("analysis.integrator=" + std::string(choice_name(s.integrator)));
+        if (s.integrator == Integrator::ida) {
             o.push_back("analysis.relative_tolerance=" + number(s.tolerance));
             o.push_back("analysis.absolute_tolerance=" + number(s.tolerance));
         }
@@ -84,33 +84,33 @@ History joint_history(const nlohmann::json& result) {
     return h;
 }
 
-std::vector<TimeSetting> time_settings(const std::string& formulation, bool quick) {
+std::vector<TimeSetting> time_settings(Formulation formulation, bool quick) {
     std::vector<TimeSetting> s;
     // Down to twice the reference's coarser step (reference_coarse_step): no swept run is one of
     // the runs its reference is extrapolated from.
     std::vector<double> steps = {2e-3, 1e-3, 5e-4};
     if (!quick) {
         steps.push_back(2.5e-4);
-        if (formulation == "displacement") {
+        if (formulation == Formulation::displacement) {
             steps.push_back(1.25e-4);
             steps.push_back(6.25e-5);
         }
     }
     for (double dt : steps) s.push_back({fixed_step_integrator(formulation), dt, 0.0});
-    if (formulation == "mixed") {
+    if (comb::takes_integrator(formulation, Integrator::ida)) {
         const std::vector<double> tolerances =
             quick ? std::vector<double>{1e-3, 1e-4, 1e-5}
                   : std::vector<double>{1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
         // IDA's Δt is only the initial step hint; the case's 1 ms.
-        for (double tol : tolerances) s.push_back({"ida", 1e-3, tol});
+        for (double tol : tolerances) s.push_back({Integrator::ida, 1e-3, tol});
     }
     return s;
 }
 
-double reference_coarse_step(const std::string& formulation, bool quick) {
+double reference_coarse_step(Formulation formulation, bool quick) {
     // The mixed fixed step costs ~12× the displacement one per step on this mesh (486 against 114
     // unknowns, ≈ 3 Newton iterations per step), hence its coarser reference.
-    const double full = formulation == "mixed" ? 1.25e-4 : 3.125e-5;
+    const double full = formulation == Formulation::mixed ? 1.25e-4 : 3.125e-5;
     return quick ? 4.0 * full : full;
 }
 
@@ -162,15 +162,15 @@ History history_from_json(const nlohmann::json& j) {
 // What a cached reference must match to be used.
 nlohmann::json reference_key(const Combination& c, const ResponseWindow& w, double coarse_step) {
     return {{"case", w.case_name},
-            {"formulation", c.formulation},
-            {"rotation", c.rotation},
+            {"formulation", c.formulation_name()},
+            {"rotation", c.rotation_name()},
             {"elements", w.elements},
             {"order", w.order},
             {"end_time", w.end_time},
             {"output_interval", w.output_interval},
             {"coarse_step", coarse_step},
             {"mass_rule", w.mass_rule},
-            {"integrator", fixed_step_integrator(c.formulation)}};
+            {"integrator", choice_name(fixed_step_integrator(c.formulation))}};
 }
 
 // The case is part of the name: the dead and the follower load's references share one folder.
@@ -179,9 +179,10 @@ std::string cache_file(const std::string& dir, const Combination& c, const Respo
     std::ostringstream s;
     // The case is in the name: the dead and follower references of one setting must not
     // overwrite each other (the key inside would refuse the other's, but it would be recomputed).
-    s << dir << "/reference_" << w.case_name << "_" << c.formulation << "_" << c.rotation << "_n"
-      << w.elements << "_p" << w.order << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T"
-      << w.end_time << "_dt" << coarse_step << ".json";
+    s << dir << "/reference_" << w.case_name << "_" << c.formulation_name() << "_"
+      << c.rotation_name() << "_n" << w.elements << "_p" << w.order
+      << (w.mass_rule.empty() ? "" : "_" + w.mass_rule) << "_T" << w.end_time << "_dt"
+      << coarse_step << ".json";
     return s.str();
 }
 
@@ -230,10 +231,11 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
     ref.status = "converged";
     std::ostringstream how;
     how << c.label() << ", " << w.elements << " elements per member"
-        << (c.formulation == "displacement" ? " of order " + std::to_string(w.order) : "")
+        << (c.formulation == Formulation::displacement ? " of order " + std::to_string(w.order)
+                                                       : "")
         << (w.mass_rule.empty() ? "" : ", " + w.mass_rule + " mass") << ", "
-        << fixed_step_integrator(c.formulation) << " at Δt = " << coarse_step * 1e6 << " and "
-        << coarse_step * 5e5 << " µs, Richardson-extrapolated at order 2";
+        << choice_name(fixed_step_integrator(c.formulation)) << " at Δt = " << coarse_step * 1e6
+        << " and " << coarse_step * 5e5 << " µs, Richardson-extrapolated at order 2";
     ref.how = how.str();
     if (!file.empty()) {
         std::filesystem::create_directories(cache_dir);

@@ -26,7 +26,7 @@ namespace rotbeam::cli {
 
 // One way of integrating the response.
 struct TimeSetting {
-    std::string integrator;  // "generalized-alpha" (displacement), "trapezoidal" or "ida" (mixed)
+    Integrator integrator;   // generalized_alpha (displacement), trapezoidal or ida (mixed)
     double time_step = 0.0;  // fixed step; IDA: the initial step hint and output spacing only
     double tolerance = 0.0;  // IDA: rtol = atol factor (analysis.relative_tolerance and absolute_tolerance)
     std::string label() const;  // "Δt=0.001" | "ida-tol=1e-06"
@@ -55,10 +55,10 @@ RunSpec response_spec(const Combination& c, const TimeSetting& s, const Response
 History joint_history(const nlohmann::json& result);
 
 // The Δt / tolerance sweep of a formulation (coarse → fine).
-std::vector<TimeSetting> time_settings(const std::string& formulation, bool quick);
+std::vector<TimeSetting> time_settings(Formulation formulation, bool quick);
 
 // The fixed-step scheme of a formulation (generalized-α with ρ∞ = 1 | trapezoidal).
-std::string fixed_step_integrator(const std::string& formulation);
+Integrator fixed_step_integrator(Formulation formulation);
 
 struct ReferenceResponse {
     History history;                    // the extrapolated history
@@ -80,7 +80,7 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
 
 // The coarser reference step the study and the bench use (full: 31.25 µs displacement, 125 µs
 // mixed, each with its half; quick: 4× larger).
-double reference_coarse_step(const std::string& formulation, bool quick);
+double reference_coarse_step(Formulation formulation, bool quick);
 
 // A run the program refused because the combination's analysis does not exist (an InputError
 // "not available", or run_case's `available: false`, e.g. the mixed quaternion's dynamics).

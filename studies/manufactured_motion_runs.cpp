@@ -5,6 +5,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "combinations/dispatch.hpp"
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/generalized_alpha.hpp"
@@ -157,7 +158,7 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
     const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int) {
         record(t, [&](int p) { return dyn.point_state(xs, t, p); });
     };
-    const bool ida = spec.integrator == "ida";
+    const bool ida = spec.integrator == Integrator::ida;
     if constexpr (P::kSize == 4) {
         // IDACalcIC's line search fails from the quaternion's exact start (IDA_LINESEARCH_FAIL at
         // rtol 1e-6, measured); the trapezoidal driver's consistent initialization (same split,
@@ -182,18 +183,14 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
 
 // The parameterization switch of these runs.
 void dispatch(const Model& model, const MotionRunSpec& spec, MotionRunResult& result) {
-    param::dispatch_parameterization(spec.rotation, [&]<class P>() {
-        if (spec.formulation == "displacement") {
-            displacement_run<P>(model, spec, result);
-            return;
-        }
-        if constexpr (std::is_same_v<P, param::WienerMilenkovic>) {
-            if (spec.wm_map == "continuous") {
-                mixed_run<param::WienerMilenkovicContinuous>(model, spec, result);
-                return;
+    comb::dispatch_formulation(spec.formulation, [&]<Formulation F>() {
+        comb::dispatch_parameterization_of<F>(model.discretization, [&]<class P>() {
+            if constexpr (F == Formulation::displacement) {
+                displacement_run<P>(model, spec, result);
+            } else {
+                mixed_run<P>(model, spec, result);
             }
-        }
-        mixed_run<P>(model, spec, result);
+        });
     });
 }
 
@@ -201,32 +198,29 @@ void dispatch(const Model& model, const MotionRunSpec& spec, MotionRunResult& re
 
 std::string MotionRunSpec::label() const {
     std::ostringstream s;
-    s << formulation << "/" << rotation;
-    if (wm_map == "continuous") s << "-continuous";
-    if (formulation == "displacement") {
+    s << choice_name(formulation) << "/" << param::name_of(rotation);
+    if (wm_map == WmMap::continuous) s << "-continuous";
+    if (formulation == Formulation::displacement) {
         s << "/p" << order << "/ga" << rho_infinity;
     } else {
-        s << "/" << (integrator.empty() ? "trapezoidal" : integrator);
+        s << "/" << choice_name(comb::integrator_for(formulation, integrator));
     }
     return s.str();
 }
 
-oracle::ManufacturedMotion motion_within_reach(const std::string& formulation,
-                                               const std::string& rotation) {
+oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
+                                               ParameterizationId rotation) {
     oracle::ManufacturedMotion m;
-    if (rotation == "rodrigues") {
+    if (rotation == param::id_of<param::Rodrigues>()) {
         m.spin0 = 0.0;
         m.spin_rate = 1.5;
-    } else if (formulation == "mixed" && rotation != "quaternion") {
+    } else if (formulation == Formulation::mixed && rotation != param::id_of<param::Quaternion>()) {
         m.spin0 = 0.5 * kPi;
     }
     return m;
 }
 
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec) {
-    if (spec.formulation != "displacement" && spec.formulation != "mixed") {
-        throw InputError("manufactured motion: unknown formulation '" + spec.formulation + "'");
-    }
     const Model model = model_of(spec);
     MotionRunResult result;
     const auto start = std::chrono::steady_clock::now();

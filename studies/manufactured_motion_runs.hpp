@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/choices.hpp"
 #include "core/oracles/manufactured_motion.hpp"
 #include "core/static_driver.hpp"
 #include "core/types.hpp"
@@ -28,10 +29,11 @@
 namespace rotbeam::cli {
 
 struct MotionRunSpec {
-    std::string formulation = "displacement";  // displacement | mixed
-    std::string rotation = "quaternion";       // registry name
-    std::string wm_map = "plain";              // mixed WM: plain | continuous
-    std::string integrator;  // displacement: generalized-alpha; mixed: trapezoidal | ida
+    Formulation formulation = Formulation::displacement;
+    ParameterizationId rotation{};  // parameterizations/registry.hpp
+    WmMap wm_map = WmMap::plain;    // mixed WM
+    // displacement: generalized-alpha; mixed: trapezoidal | ida (automatic: the first)
+    Integrator integrator = Integrator::automatic;
     int elements = 2;        // per member (four members)
     int order = 1;           // displacement: polynomial order p
     double dt = 0.01;        // fixed step (IDA: the initial step hint)
@@ -65,8 +67,8 @@ MotionRunResult run_manufactured_motion(const MotionRunSpec& spec);
 // quaternion (four unknowns, no chart boundary); the mixed three-parameter types cannot pass 2π
 // about a varying axis (docs/reference-solutions.md §6), so theirs spins 0.5π → 1.45π; Rodrigues
 // (singular at π) 0 → 2.0 rad (largest angle 2.7 rad).
-oracle::ManufacturedMotion motion_within_reach(const std::string& formulation,
-                                               const std::string& rotation);
+oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
+                                               ParameterizationId rotation);
 
 // Max over the common output times and points of ‖u_a − u_b‖/L and of the angle of R_aᵀR_b: the
 // time error of `a` when `b` is the same mesh at a much smaller Δt (the space error cancels).

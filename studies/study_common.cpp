@@ -21,33 +21,21 @@ const char* const kExactBendTip = "points.tip=[70.71067811865476, 29.28932188134
 
 namespace fs = std::filesystem;
 
-std::string Combination::label() const {
-    std::string s = formulation + "/" + rotation;
-    if (!interpolation.empty()) s += "/" + interpolation;
-    return s;
-}
-
 std::vector<Combination> all_combinations(bool with_interpolation) {
-    std::vector<Combination> list;
-    for (const std::string& f : formulation_names()) {
-        for (const std::string& r : param::parameterization_names()) {
-            if (f == "displacement" && with_interpolation) {
-                list.push_back({f, r, "relative"});
-                list.push_back({f, r, "direct"});
-            } else {
-                list.push_back({f, r, ""});
-            }
-        }
-    }
-    return list;
+    return comb::all_combinations(with_interpolation);
 }
 
 Model build_model(const RunSpec& spec) {
+    const Combination& c = spec.combination;
     std::vector<std::string> overrides = {
-        "discretization.formulation=" + spec.combination.formulation,
-        "discretization.rotation=" + spec.combination.rotation};
-    if (!spec.combination.interpolation.empty()) {
-        overrides.push_back("discretization.interpolation=" + spec.combination.interpolation);
+        "discretization.formulation=" + std::string(choice_name(c.formulation)),
+        "discretization.rotation=" + std::string(param::name_of(c.rotation))};
+    if (c.interpolation) {
+        overrides.push_back("discretization.interpolation=" +
+                            std::string(choice_name(*c.interpolation)));
+    }
+    if (c.wm_map) {
+        overrides.push_back("discretization.wm_map=" + std::string(choice_name(*c.wm_map)));
     }
     overrides.insert(overrides.end(), spec.overrides.begin(), spec.overrides.end());
     Model model = load_case(resolve_case_path(spec.case_name), overrides);

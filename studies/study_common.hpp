@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "combinations/registry.hpp"
 #include "core/model.hpp"
 #include "core/types.hpp"
 
@@ -29,14 +30,11 @@ struct StudyOptions {
     bool reduced_follower = false;
 };
 
-struct Combination {
-    std::string formulation;
-    std::string rotation;
-    std::string interpolation;  // displacement only; empty = the case's
-    std::string label() const;  // e.g. "displacement/quaternion/relative"
-};
+// Formulation × parameterization (× interpolation), from the registry (combinations/registry.hpp);
+// label() e.g. "displacement/quaternion/relative".
+using Combination = comb::Combination;
 
-// Every formulation × parameterization the program lists (availability is found by running:
+// Every formulation × parameterization the registry lists (availability is found by running:
 // make_problem's InputError reads "unavailable"); with_interpolation doubles the displacement ones
 // (relative, direct).
 std::vector<Combination> all_combinations(bool with_interpolation);

@@ -60,11 +60,11 @@ struct Refinement {
     std::vector<int> elements, orders;  // parallel lists
 };
 
-std::vector<Refinement> refinements(const std::string& formulation, bool quick) {
+std::vector<Refinement> refinements(Formulation formulation, bool quick) {
     auto h = [](int order, std::vector<int> n) {
         return Refinement{"h-p" + std::to_string(order), n, std::vector<int>(n.size(), order)};
     };
-    if (formulation == "mixed") {
+    if (formulation == Formulation::mixed) {
         const std::vector<int> n =
             quick ? std::vector<int>{4, 8, 16, 32} : std::vector<int>{4, 8, 16, 32, 64, 128};
         return {Refinement{"h", n, std::vector<int>(n.size(), 1)}};
@@ -91,7 +91,7 @@ double step_error(const ConvergenceCase& c, const nlohmann::json& result, double
 RunSpec refinement_spec(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
                         size_t i) {
     std::vector<std::string> o = c.overrides;
-    if (comb.formulation == "displacement") {
+    if (comb.formulation == Formulation::displacement) {
         o.push_back("discretization.order=" + std::to_string(r.orders[i]));
     }
     return RunSpec{c.case_name, comb, o, r.elements[i]};
@@ -109,7 +109,7 @@ std::string run_key(const ConvergenceCase& c, const Combination& comb, const Ref
 Series refinement_series(const ConvergenceCase& c, const Combination& comb, const Refinement& r,
                          const nlohmann::json& reference, const StudyResults& results,
                          std::string& note) {
-    Series s{comb.formulation + "/" + comb.rotation + "/" + r.name, {}, {}, {}, {}};
+    Series s{comb.formulation_name() + "/" + comb.rotation_name() + "/" + r.name, {}, {}, {}, {}};
     for (size_t i = 0; i < r.elements.size(); ++i) {
         const RunSpec spec = refinement_spec(c, comb, r, i);
         const nlohmann::json& result = result_of(results, run_key(c, comb, r, i));
@@ -132,7 +132,7 @@ Series refinement_series(const ConvergenceCase& c, const Combination& comb, cons
 namespace {
 
 std::string panel_title(const Combination& comb, const Refinement& r) {
-    if (comb.formulation == "mixed") return "mixed, h-refinement";
+    if (comb.formulation == Formulation::mixed) return "mixed, h-refinement";
     if (r.name == "p") return "displacement, p-refinement on 2 elements";
     return "displacement, h-refinement, order " + r.name.substr(3);
 }
@@ -180,8 +180,8 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
                              "data/convergence_" + c.key + "_" +
                                  std::to_string(by_unknowns.files.size()) + ".dat",
                              s);
-            by_unknowns.add(panel_title(comb, r), file, comb.rotation);
-            if (!p_series) by_elements.add(panel_title(comb, r), file, comb.rotation);
+            by_unknowns.add(panel_title(comb, r), file, comb.rotation_name());
+            if (!p_series) by_elements.add(panel_title(comb, r), file, comb.rotation_name());
             if (!std::isfinite(refy) && r.name == "h" && std::isfinite(s.error.front())) {
                 refx = s.elements.front();
                 refd = s.dofs.front();
@@ -241,7 +241,7 @@ nlohmann::json convergence_combine(const StudyOptions& o, const StudyResults& re
     }
     // The p-refinement is the last of the displacement refinements; held in a variable, since a
     // range-for over a member of the returned temporary would read it after it is destroyed.
-    const std::vector<Refinement> displacement = refinements("displacement", o.quick);
+    const std::vector<Refinement> displacement = refinements(Formulation::displacement, o.quick);
     std::string orders;
     for (int p : displacement.back().orders) {
         orders += (orders.empty() ? "" : ", ") + std::to_string(p);

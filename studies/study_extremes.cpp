@@ -54,16 +54,17 @@ struct Variant {
     bool own_force_scale = false;
     // The figure's panel (the discretization) and the curve's title inside it.
     std::string panel() const {
-        return combination.formulation == "mixed"
+        return combination.formulation == Formulation::mixed
                    ? std::string("mixed")
                    : "displacement p" + std::to_string(order) + " " + quadrature;
     }
     std::string curve() const {
-        return combination.rotation + (own_force_scale ? "+force_scale" : "");
+        return std::string(param::name_of(combination.rotation)) +
+               (own_force_scale ? "+force_scale" : "");
     }
     std::string label() const {
         return combination.label() +
-               (combination.formulation == "displacement"
+               (combination.formulation == Formulation::displacement
                     ? "/p" + std::to_string(order) + "-" + quadrature
                     : "") +
                (own_force_scale ? "+force_scale" : "");
@@ -73,14 +74,15 @@ struct Variant {
 std::vector<Variant> variants(bool quick, bool with_force_scale) {
     std::vector<Variant> v;
     for (const Combination& c : all_combinations(false)) {
-        if (c.formulation == "mixed") {
+        if (c.formulation == Formulation::mixed) {
             v.push_back({c, 1, "", false});
             continue;
         }
-        if (quick && c.rotation != "quaternion") continue;
+        if (quick && c.rotation != param::id_of<param::Quaternion>()) continue;
         for (int p : {1, 2})
             for (const char* q : {"full", "reduced"}) v.push_back({c, p, q, false});
-        if (with_force_scale && c.rotation == "quaternion") v.push_back({c, 2, "reduced", true});
+        if (with_force_scale && c.rotation == param::id_of<param::Quaternion>())
+            v.push_back({c, 2, "reduced", true});
     }
     return v;
 }
@@ -96,7 +98,7 @@ TipRun tip_run(const Variant& v, const SquareSection& s, double force) {
     std::vector<std::string> o = s.overrides();
     o.push_back("loads.tip-force.force=[0, 0, " + sci(force, 17) + "]");
     if (v.own_force_scale) o.push_back("solver.force_scale=" + sci(force, 17));
-    if (v.combination.formulation == "displacement") {
+    if (v.combination.formulation == Formulation::displacement) {
         o.push_back("discretization.order=" + std::to_string(v.order));
         o.push_back("discretization.quadrature=" + v.quadrature);
     }

@@ -27,11 +27,23 @@ std::vector<Refined> round_off_series(bool quick) {
     for (int n = 2; n <= top; n *= 2) n2.push_back(n);
     for (int n = 1; n <= top / 4; n *= 2) n4.push_back(n);
     for (int n = 16; n <= (quick ? 256 : 2048); n *= 2) nm.push_back(n);
-    return {{"displacement/quaternion/p2", {"displacement", "quaternion", ""}, 2, n2},
-            {"displacement/quaternion/p4", {"displacement", "quaternion", ""}, 4, n4},
-            {"displacement/rotation-vector/p4", {"displacement", "rotation-vector", ""}, 4, n4},
-            {"mixed/rotation-vector", {"mixed", "rotation-vector", ""}, 1, nm},
-            {"mixed/quaternion", {"mixed", "quaternion", ""}, 1, nm}};
+    return {{"displacement/quaternion/p2",
+             {Formulation::displacement, param::id_of<param::Quaternion>()},
+             2,
+             n2},
+            {"displacement/quaternion/p4",
+             {Formulation::displacement, param::id_of<param::Quaternion>()},
+             4,
+             n4},
+            {"displacement/rotation-vector/p4",
+             {Formulation::displacement, param::id_of<param::RotationVector>()},
+             4,
+             n4},
+            {"mixed/rotation-vector",
+             {Formulation::mixed, param::id_of<param::RotationVector>()},
+             1,
+             nm},
+            {"mixed/quaternion", {Formulation::mixed, param::id_of<param::Quaternion>()}, 1, nm}};
 }
 
 const std::vector<double> kSingleStepLambdas = {1.0, 2.0, 4.0};
@@ -46,7 +58,7 @@ RunSpec single_step_spec(const Combination& c, double lambda) {
 
 RunSpec round_off_spec(const Refined& s, int n) {
     std::vector<std::string> ov = {"analysis.load_factors=[0.8]", "analysis.substeps=2"};
-    if (s.combination.formulation == "displacement") {
+    if (s.combination.formulation == Formulation::displacement) {
         ov.push_back("discretization.order=" + std::to_string(s.order));
     }
     return RunSpec{"cantilever-moment", s.combination, ov, n};
@@ -77,9 +89,10 @@ nlohmann::json extremes_single_step(const StudyOptions& o, const StudyResults& r
     nlohmann::json out = nlohmann::json::array();
     PanelFigure figure;
     for (const Combination& c : all_combinations(true)) {
-        const std::string panel = c.formulation == "mixed"
-                                      ? std::string("mixed")
-                                      : "displacement, " + c.interpolation + " interpolation";
+        const std::string panel =
+            c.formulation == Formulation::mixed
+                ? std::string("mixed")
+                : "displacement, " + std::string(choice_name(*c.interpolation)) + " interpolation";
         std::vector<double> failures;
         std::ostringstream row, data;
         data << "# lambda newton_iterations\n";
@@ -111,7 +124,7 @@ nlohmann::json extremes_single_step(const StudyOptions& o, const StudyResults& r
         const std::string rel =
             "data/extremes_single_" + std::to_string(figure.files.size()) + ".dat";
         write_text(o, rel, data.str());
-        figure.add(panel, out_path(o, rel), c.rotation);
+        figure.add(panel, out_path(o, rel), c.rotation_name());
         for (double lambda : failures) figure.add_failure(panel, lambda);
     }
     plot_panels(o, figure,

@@ -73,8 +73,8 @@ AgreementPlan agreement_plan(bool quick) {
     return p;
 }
 
-const Combination kMixed{"mixed", "wiener-milenkovic", ""};
-const Combination kDisplacement{"displacement", "quaternion", ""};
+const Combination kMixed{Formulation::mixed, param::id_of<param::WienerMilenkovic>()};
+const Combination kDisplacement{Formulation::displacement, param::id_of<param::Quaternion>()};
 
 struct Job {
     std::string name;  // key of the result
@@ -96,12 +96,13 @@ std::string number_text(double x) {
 // under `cache_dir` like same_mesh_reference's (keyed by every setting that changes it).
 ReferenceResponse ida_response(const Combination& c, const ResponseWindow& w, double tolerance,
                                const std::string& cache_dir) {
-    const nlohmann::json key = {{"case", w.case_name},    {"formulation", c.formulation},
-                                {"rotation", c.rotation}, {"elements", w.elements},
-                                {"end_time", w.end_time}, {"output_interval", w.output_interval},
-                                {"integrator", "ida"},    {"tolerance", tolerance}};
-    const std::string file = cache_dir + "/ida_" + c.formulation + "_" + c.rotation + "_" +
-                             w.case_name + "_n" + std::to_string(w.elements) + "_T" +
+    const nlohmann::json key = {
+        {"case", w.case_name},           {"formulation", c.formulation_name()},
+        {"rotation", c.rotation_name()}, {"elements", w.elements},
+        {"end_time", w.end_time},        {"output_interval", w.output_interval},
+        {"integrator", "ida"},           {"tolerance", tolerance}};
+    const std::string file = cache_dir + "/ida_" + c.formulation_name() + "_" + c.rotation_name() +
+                             "_" + w.case_name + "_n" + std::to_string(w.elements) + "_T" +
                              number_text(w.end_time) + "_tol" + number_text(tolerance) + ".json";
     ReferenceResponse r;
     if (std::filesystem::exists(file)) {
@@ -120,7 +121,7 @@ ReferenceResponse ida_response(const Combination& c, const ResponseWindow& w, do
             return r;
         }
     }
-    const TimeSetting s{"ida", 1e-3, tolerance};
+    const TimeSetting s{Integrator::ida, 1e-3, tolerance};
     const double c0 = thread_cpu_seconds();
     const nlohmann::json run = run_spec(response_spec(c, s, w));
     r.cpu_seconds = thread_cpu_seconds() - c0;

@@ -44,7 +44,7 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
                            const History& reference) {
     DynamicPoint p;
     p.combination = c.label();
-    p.series = c.label() + "/" + s.integrator;
+    p.series = c.label() + "/" + std::string(choice_name(s.integrator));
     p.setting = s;
     const RunSpec spec = response_spec(c, s, w);
     std::vector<double> cpu, wall;
@@ -81,7 +81,7 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
 nlohmann::json point_json(const DynamicPoint& p) {
     auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
     return {{"combination", p.combination},
-            {"integrator", p.setting.integrator},
+            {"integrator", choice_name(p.setting.integrator)},
             {"time_step", p.setting.time_step},
             {"tolerance", p.setting.tolerance},
             {"status", p.status},
@@ -161,7 +161,7 @@ nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoi
     nlohmann::json out = nlohmann::json::array();
     for (const DynamicPoint* p : on) {
         data << p->cpu << " " << std::max(p->error, 1e-17) << "\n";
-        md << "| " << p->combination << " | " << p->setting.integrator << " | "
+        md << "| " << p->combination << " | " << choice_name(p->setting.integrator) << " | "
            << p->setting.label() << " | " << p->steps << " | " << p->newton << " | "
            << seconds_text(p->cpu) << " | " << seconds_text(p->wall) << " | " << sci(p->error)
            << " |\n";
@@ -182,7 +182,7 @@ void winners_in_words(const std::vector<DynamicPoint>& points, std::ostringstrea
         }
         md << "- ≤ " << sci(level, 0) << ": ";
         if (best) {
-            md << best->combination << " with " << best->setting.integrator << " "
+            md << best->combination << " with " << choice_name(best->setting.integrator) << " "
                << best->setting.label() << ", " << seconds_text(best->cpu) << " CPU (error "
                << sci(best->error) << ")\n";
         } else {
@@ -198,10 +198,10 @@ void sweep_table(const std::vector<DynamicPoint>& points, std::ostringstream& md
           "(median) | wall (median) | repeats | time error |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const DynamicPoint& p : points) {
-        md << "| " << p.combination << " | " << p.setting.integrator << " | " << p.setting.label()
-           << " | " << p.status << " | " << p.dofs << " | " << p.steps << " | " << p.newton << " | "
-           << seconds_text(p.cpu) << " | " << seconds_text(p.wall) << " | " << p.repeats << " | "
-           << sci(p.error) << " |\n";
+        md << "| " << p.combination << " | " << choice_name(p.setting.integrator) << " | "
+           << p.setting.label() << " | " << p.status << " | " << p.dofs << " | " << p.steps << " | "
+           << p.newton << " | " << seconds_text(p.cpu) << " | " << seconds_text(p.wall) << " | "
+           << p.repeats << " | " << sci(p.error) << " |\n";
     }
     md << "\n";
 }
@@ -217,19 +217,19 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
                                 std::ostringstream& md) {
     nlohmann::json out;
     const std::string cache = out_path(o, "joined-beam-references");
-    const Combination disp{"displacement", "quaternion", ""};
-    const Combination mixed{"mixed", "wiener-milenkovic", ""};
+    const Combination disp{Formulation::displacement, param::id_of<param::Quaternion>()};
+    const Combination mixed{Formulation::mixed, param::id_of<param::WienerMilenkovic>()};
     ResponseWindow midpoint = w, p2 = w, p3 = w;
     midpoint.mass_rule = "midpoint";
     p2.order = 2;
     p3.order = 3;
     // These compare discretizations whose differences (≥ 1e-3) dwarf the time errors of a 2×
     // coarser reference step, which halves their cost (order 3: ~10 CPU-minutes otherwise).
-    const double step = 2.0 * reference_coarse_step("displacement", o.quick);
+    const double step = 2.0 * reference_coarse_step(Formulation::displacement, o.quick);
     std::vector<ReferenceJob> jobs = {{disp, midpoint, step, {}}, {disp, p2, step, {}}};
     if (!quick) jobs.push_back({disp, p3, step, {}});
     // IDA at a tight tolerance on the mixed paper mesh, on its own thread beside the references.
-    const TimeSetting tight{"ida", 1e-3, quick ? 1e-7 : 1e-8};
+    const TimeSetting tight{Integrator::ida, 1e-3, quick ? 1e-7 : 1e-8};
     nlohmann::json ida;
     double ida_cpu = 0.0;
     std::thread ida_thread([&] {
@@ -339,9 +339,10 @@ const char* load_words(const std::string& load) {
 // The figure's panel of a run: its formulation and integrator (the parameterizations of one panel
 // give the same errors to 2–3 digits and would hide each other on one set of axes).
 std::string panel_title(const TimeSetting& s, const Combination& c) {
-    if (s.integrator == "ida") return c.formulation + ", IDA (BDF ≤ 2), tolerances";
-    if (s.integrator == "trapezoidal") return c.formulation + ", trapezoidal, Δt";
-    return c.formulation + ", generalized-α ρ∞ = 1, Δt";
+    const std::string f(choice_name(c.formulation));
+    if (s.integrator == Integrator::ida) return f + ", IDA (BDF ≤ 2), tolerances";
+    if (s.integrator == Integrator::trapezoidal) return f + ", trapezoidal, Δt";
+    return f + ", generalized-α ρ∞ = 1, Δt";
 }
 
 void measure_load(const StudyOptions& o, LoadStudy& l) {
@@ -356,9 +357,9 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     std::vector<DynamicPoint> points;
     std::vector<std::string> notes;
     // Panels in the order of the table: the fixed-step schemes, then IDA.
-    for (const char* f : {"displacement", "mixed"})
-        l.figure.panel(panel_title({fixed_step_integrator(f), 0.0, 0.0}, {f, "", ""}));
-    l.figure.panel(panel_title({"ida", 0.0, 0.0}, {"mixed", "", ""}));
+    for (const Formulation f : comb::formulations())
+        l.figure.panel(panel_title({fixed_step_integrator(f), 0.0, 0.0}, {f}));
+    l.figure.panel(panel_title({Integrator::ida, 0.0, 0.0}, {Formulation::mixed}));
     // Every (combination, setting) run, measured by a pool of threads (each run single-threaded,
     // its cost its own thread's CPU time), kept in the order of the list.
     struct Task {
@@ -393,20 +394,21 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
         for (const TimeSetting& s : time_settings(j.combination.formulation, sweep_quick)) {
             points.push_back(measured[task++]);
             const DynamicPoint& p = points.back();
-            Series& series = by_integrator[s.integrator];
+            Series& series = by_integrator[std::string(choice_name(s.integrator))];
             series.label = p.series;
-            series.add(s.integrator == "ida" ? s.tolerance : s.time_step, p.dofs, p.cpu, p.error);
+            series.add(s.integrator == Integrator::ida ? s.tolerance : s.time_step, p.dofs, p.cpu,
+                       p.error);
             if (!std::isfinite(p.error))
                 l.figure.add_failure(panel_title(s, j.combination), p.spent);
         }
         for (const auto& [integrator, series] : by_integrator) {
-            const TimeSetting s{integrator, 0.0, 0.0};
+            const TimeSetting s{*parse_choice<Integrator>(integrator), 0.0, 0.0};
             l.figure.add(panel_title(s, j.combination),
                          write_series(o,
                                       "data/joined_beam_dynamic_" + l.load + "_" +
                                           std::to_string(l.figure.files.size()) + ".dat",
                                       series),
-                         j.combination.rotation);
+                         std::string(param::name_of(j.combination.rotation)));
         }
     }
     std::ostringstream& md = l.md;
@@ -475,7 +477,8 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
           "The space error of the mesh is measured separately per load and is the same for every "
           "integrator setting.\n\n";
     // How much the load's direction matters: the two loads' references, same combination.
-    const std::string probe = Combination{"displacement", "quaternion", ""}.label();
+    const std::string probe =
+        Combination{Formulation::displacement, param::id_of<param::Quaternion>()}.label();
     const auto dead_ref = loads[0].same_mesh.find(probe);
     const auto follower_ref = loads[1].same_mesh.find(probe);
     double load_difference = kNoValue;

@@ -33,11 +33,11 @@ struct ModalRefinement {
     int nominal_order;  // expected order of the frequency error in h (0: exponential)
 };
 
-std::vector<ModalRefinement> modal_refinements(const std::string& formulation, bool quick) {
+std::vector<ModalRefinement> modal_refinements(Formulation formulation, bool quick) {
     auto h = [](int p, std::vector<int> n) {
         return ModalRefinement{"h-p" + std::to_string(p), n, std::vector<int>(n.size(), p), 2 * p};
     };
-    if (formulation == "mixed") {
+    if (formulation == Formulation::mixed) {
         const std::vector<int> n =
             quick ? std::vector<int>{5, 10, 20, 40} : std::vector<int>{5, 10, 20, 40, 80, 160, 320};
         return {ModalRefinement{"h", n, std::vector<int>(n.size(), 1), 2}};
@@ -63,12 +63,12 @@ constexpr int kComputedModes = kModes + 3;
 
 ModalSeries run_modal_series(const Combination& comb, const ModalRefinement& r) {
     ModalSeries s;
-    s.label = comb.formulation + "/" + comb.rotation + "/" + r.name;
+    s.label = comb.formulation_name() + "/" + comb.rotation_name() + "/" + r.name;
     std::vector<std::vector<double>> computed;             // per mesh: frequencies
     std::vector<std::vector<std::vector<double>>> shapes;  // per mesh, per mode: stations
     for (size_t i = 0; i < r.elements.size(); ++i) {
         std::vector<std::string> o = {"analysis.modes=" + std::to_string(kComputedModes)};
-        if (comb.formulation == "displacement") {
+        if (comb.formulation == Formulation::displacement) {
             o.push_back("discretization.order=" + std::to_string(r.orders[i]));
             o.push_back("discretization.mass_rule=consistent");
         }

@@ -35,32 +35,26 @@ std::vector<TimeSeries> time_series(bool quick) {
     const std::vector<double> dm =
         quick ? std::vector<double>{0.05, 0.025} : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
     std::vector<TimeSeries> out;
-    for (const char* r :
-         {"quaternion", "wiener-milenkovic", "rodrigues", "rotation-vector", "euler-angles"}) {
+    for (const ParameterizationId r : param::parameterization_ids()) {
         for (double rho : {0.5, 1.0}) {
             MotionRunSpec s;
             s.rotation = r;
             s.order = 3;
             s.elements = 2;
             s.rho_infinity = rho;
-            s.motion = motion_within_reach("displacement", r);
+            s.motion = motion_within_reach(Formulation::displacement, r);
             out.push_back({s, dd});
         }
     }
-    for (const auto& [r, map] :
-         std::vector<std::pair<std::string, std::string>>{{"quaternion", "plain"},
-                                                          {"wiener-milenkovic", "plain"},
-                                                          {"wiener-milenkovic", "continuous"},
-                                                          {"rodrigues", "plain"},
-                                                          {"rotation-vector", "plain"},
-                                                          {"euler-angles", "plain"}}) {
+    for (const comb::Combination& c : comb::all_combinations(false, true)) {
+        if (c.formulation != Formulation::mixed) continue;
         MotionRunSpec s;
-        s.formulation = "mixed";
-        s.rotation = r;
-        s.wm_map = map;
-        s.integrator = "trapezoidal";
+        s.formulation = c.formulation;
+        s.rotation = c.rotation;
+        s.wm_map = c.wm_map.value_or(WmMap::plain);
+        s.integrator = Integrator::trapezoidal;
         s.elements = 8;
-        s.motion = motion_within_reach("mixed", r);
+        s.motion = motion_within_reach(c.formulation, c.rotation);
         out.push_back({s, dm});
     }
     return out;
@@ -136,20 +130,20 @@ nlohmann::json time_case(const StudyOptions& o, const TimeSeries& t, std::ostrin
             {"order_u_last", tu}, {"order_R_last", tR}, {"note", note}};
 }
 
-nlohmann::json ida_case(const StudyOptions& o, const std::string& rotation,
+nlohmann::json ida_case(const StudyOptions& o, ParameterizationId rotation,
                         std::ostringstream& md) {
     MotionRunSpec spec;
-    spec.formulation = "mixed";
+    spec.formulation = Formulation::mixed;
     spec.rotation = rotation;
-    spec.integrator = "ida";
+    spec.integrator = Integrator::ida;
     spec.elements = 8;
     spec.dt = 0.05;
-    spec.motion = motion_within_reach("mixed", spec.rotation);
+    spec.motion = motion_within_reach(Formulation::mixed, spec.rotation);
     spec.tolerance = o.quick ? 1e-6 : 1e-7;
     const MotionRunResult ref = run_manufactured_motion(spec);
     nlohmann::json out = {{"reference_tolerance", spec.tolerance},
                           {"rows", nlohmann::json::array()}};
-    md << "\n**IDA** (BDF, order ≤ 2, mixed " << rotation
+    md << "\n**IDA** (BDF, order ≤ 2, mixed " << param::name_of(rotation)
        << ", 8 elements per member): difference to IDA at "
           "rtol = atol = "
        << sci(spec.tolerance, 0) << " against the tolerance.\n\n"
@@ -175,8 +169,8 @@ nlohmann::json space_case(const StudyOptions& o, std::ostringstream& md,
                           std::vector<std::string>& files, std::vector<std::string>& titles) {
     nlohmann::json out = nlohmann::json::array();
     struct Refinement {
-        std::string formulation;
-        std::string rotation;
+        Formulation formulation;
+        ParameterizationId rotation;
         int order;
         std::vector<int> elements;
         double dt;
@@ -184,13 +178,13 @@ nlohmann::json space_case(const StudyOptions& o, std::ostringstream& md,
     // Steps whose time error (the time table: ≈ 4 (Δt/0.00625)² × its last entry) stays ≤ 1/10
     // of the finest space error: the p = 2 nodal errors fall like h⁴ and need the smallest.
     const std::vector<Refinement> list = {
-        {"displacement", "quaternion", 1, o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16},
-         0.0025},
-        {"displacement", "quaternion", 2, o.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8},
-         0.0005},
-        {"mixed", "wiener-milenkovic", 1,
+        {Formulation::displacement, param::id_of<param::Quaternion>(), 1,
+         o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.0025},
+        {Formulation::displacement, param::id_of<param::Quaternion>(), 2,
+         o.quick ? std::vector<int>{1, 2, 4} : std::vector<int>{1, 2, 4, 8}, 0.0005},
+        {Formulation::mixed, param::id_of<param::WienerMilenkovic>(), 1,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125},
-        {"mixed", "quaternion", 1,
+        {Formulation::mixed, param::id_of<param::Quaternion>(), 1,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125}};
     md << "\n**Space** (quaternion / WM and quaternion trapezoidal, Δt fixed; error against the exact motion):\n\n"
           "| combination | Δt | elements per member | ‖Δu‖/L | rotation [rad] | order (last "
@@ -199,7 +193,7 @@ nlohmann::json space_case(const StudyOptions& o, std::ostringstream& md,
         MotionRunSpec spec;
         spec.formulation = r.formulation;
         spec.rotation = r.rotation;
-        spec.integrator = "trapezoidal";
+        spec.integrator = Integrator::trapezoidal;
         spec.order = r.order;
         spec.dt = r.dt;
         spec.motion = motion_within_reach(spec.formulation, spec.rotation);
@@ -260,8 +254,8 @@ nlohmann::json study_manufactured_time(const StudyOptions& o) {
     for (const TimeSeries& t : time_series(o.quick)) {
         out["time"].push_back(time_case(o, t, md, files, titles));
     }
-    out["ida"] = ida_case(o, "wiener-milenkovic", md);
-    out["ida_quaternion"] = ida_case(o, "quaternion", md);
+    out["ida"] = ida_case(o, param::id_of<param::WienerMilenkovic>(), md);
+    out["ida_quaternion"] = ida_case(o, param::id_of<param::Quaternion>(), md);
     std::vector<std::string> sfiles, stitles;
     out["space"] = space_case(o, md, sfiles, stitles);
     for (const auto& [base, f, t, x, y, xl, yl, ttl, refx, slope] :

@@ -128,8 +128,9 @@ std::string path_data(const StudyOptions& o, const std::string& name, const Path
 }
 
 std::string panel_of(const Combination& c) {
-    return c.formulation == "mixed" ? std::string("mixed")
-                                    : "displacement, " + c.interpolation + " interpolation";
+    return c.formulation == Formulation::mixed
+               ? std::string("mixed")
+               : "displacement, " + std::string(choice_name(*c.interpolation)) + " interpolation";
 }
 
 void path_plots(const StudyOptions& o, const PathCase& c, const PanelFigure& figure,
@@ -193,7 +194,7 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, const StudyRe
         figure.add(
             panel_of(comb),
             path_data(o, "singularity_" + c.key + "_" + std::to_string(figure.files.size()), p),
-            comb.rotation);
+            comb.rotation_name());
     }
     if (!figure.files.empty()) path_plots(o, c, figure, out["figures"]);
     return out;
@@ -234,7 +235,7 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, const StudyResults& re
     for (size_t i = 0; i < meshes.size(); ++i) md << "---|";
     md << "\n";
     for (const Combination& comb : all_combinations(false)) {
-        if (comb.formulation != "mixed") continue;
+        if (comb.formulation != Formulation::mixed) continue;
         std::ostringstream data, row;
         data << "# elements lambda_star\n";
         bool any = false;
@@ -261,9 +262,9 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, const StudyResults& re
         }
         if (!any) continue;
         md << "| " << comb.label() << " |" << row.str() << "\n";
-        write_text(o, "data/lambda_star_" + comb.rotation + ".dat", data.str());
+        write_text(o, "data/lambda_star_" + comb.rotation_name() + ".dat", data.str());
         figure.add("mixed formulation (λ* = 4: every step converged)",
-                   out_path(o, "data/lambda_star_" + comb.rotation + ".dat"), comb.label());
+                   out_path(o, "data/lambda_star_" + comb.rotation_name() + ".dat"), comb.label());
     }
     if (!figure.files.empty()) {
         plot_panels(
@@ -295,7 +296,7 @@ std::vector<StudyRun> singularity_plan(const StudyOptions& o) {
         }
     }
     for (const Combination& comb : all_combinations(false)) {
-        if (comb.formulation != "mixed") continue;
+        if (comb.formulation != Formulation::mixed) continue;
         for (int n : singularity_meshes(o.quick)) {
             plan.push_back(
                 {mesh_key(comb, n), StudyRun::Kind::case_run, path_spec(mesh_case(), comb, n)});

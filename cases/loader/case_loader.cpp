@@ -10,6 +10,7 @@
 
 #include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
+#include "combinations/registry.hpp"
 #include "core/errors.hpp"
 
 namespace rotbeam {
@@ -236,10 +237,21 @@ void check_memory(const YamlReader& r, const YAML::Node& root, const Model& mode
 // Cholesky-based solver then turns round-off into frequencies of any size). Refused here rather
 // than replaced: the mass rule changes the frequencies at the level of the discretization error,
 // and the user asked for this one (docs/displacement-modal.md, "Mass rule").
+// The integrator a dynamic case names must be one its formulation takes
+// (combinations/registry.hpp).
+void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    const Formulation f = model.discretization.formulation;
+    const Integrator asked = model.analysis.dynamics.integrator;
+    if (model.analysis.kind != AnalysisKind::dynamic || comb::takes_integrator(f, asked)) return;
+    r.fail(root["analysis"]["integrator"], "analysis.integrator",
+           "the " + std::string(choice_name(f)) + " formulation integrates with " +
+               comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
+}
+
 void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& model) {
     const Discretization& d = model.discretization;
-    if (!model.needs_inertia() || d.formulation != "displacement" || d.mass_rule != "midpoint" ||
-        d.order < 2) {
+    if (!model.needs_inertia() || d.formulation != Formulation::displacement ||
+        d.mass_rule != "midpoint" || d.order < 2) {
         return;
     }
     r.fail(root["discretization"]["mass_rule"], "discretization.mass_rule",
@@ -271,6 +283,7 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     cases::read_references(r, root, model);
     check_topology(r, root, model);
     check_mass_rule(r, root, model);
+    check_integrator(r, root, model);
     // Inertia is needed by dynamics, modal analysis and gravity: every section must have mass.
     if (model.needs_inertia() || model.gravity.norm() > 0.0) {
         for (const Member& m : model.members) {

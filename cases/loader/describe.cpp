@@ -5,6 +5,7 @@
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/limits.hpp"
 #include "core/geometry.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam {
 
@@ -110,7 +111,8 @@ void describe_analysis(const Model& model, std::ostream& os) {
     os << "analysis: ";
     if (a.kind == AnalysisKind::dynamic) {
         os << "dynamic, Δt " << a.dynamics.time_step << ", end " << a.dynamics.end_time << ", ρ∞ "
-           << a.dynamics.rho_infinity << ", initial state " << a.dynamics.initial_state << "\n";
+           << a.dynamics.rho_infinity << ", initial state " << choice_name(a.dynamics.initial_state)
+           << "\n";
     } else if (a.kind == AnalysisKind::modal && a.statics.load_factors.empty()) {
         os << "modal, " << a.modal.modes << " modes about the "
            << (a.modal.about_static_state ? "unloaded static state" : "reference configuration")
@@ -124,11 +126,13 @@ void describe_analysis(const Model& model, std::ostream& os) {
         os << "]\n";
     }
     const Discretization& d = model.discretization;
-    os << "discretization: " << d.formulation << ", " << d.rotation << ", order " << d.order
-       << ", interpolation " << d.interpolation << ", update " << d.update << ", mass rule "
-       << d.mass_rule << (d.rescale ? ", rescale" : ", no rescale") << "\n";
-    os << "solver: " << model.solver.driver << ", residual tol " << model.solver.residual_tolerance
-       << ", max " << model.solver.max_iterations << " iterations\n";
+    os << "discretization: " << choice_name(d.formulation) << ", " << param::name_of(d.rotation)
+       << ", order " << d.order << ", interpolation " << choice_name(d.interpolation) << ", update "
+       << choice_name(d.update) << ", mass rule " << d.mass_rule
+       << (d.rescale ? ", rescale" : ", no rescale") << "\n";
+    os << "solver: " << choice_name(model.solver.driver) << ", residual tol "
+       << model.solver.residual_tolerance << ", max " << model.solver.max_iterations
+       << " iterations\n";
     os << "references: " << model.references.size();
     int gated = 0;
     for (const ReferenceValue& r : model.references) gated += r.gated ? 1 : 0;

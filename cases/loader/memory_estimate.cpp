@@ -39,7 +39,7 @@ MemoryEstimate estimate_memory(const Model& model) {
     for (const Member& m : model.members) elements += m.elements;
     const double points = static_cast<double>(model.points.size());
     const double members = static_cast<double>(model.members.size());
-    const bool mixed = d.formulation == "mixed";
+    const bool mixed = d.formulation == Formulation::mixed;
     const double p = std::max(1, d.order);
     double n = 0.0, nonzeros = 0.0, mesh = 0.0;
     if (mixed) {
@@ -59,7 +59,7 @@ MemoryEstimate estimate_memory(const Model& model) {
     std::vector<std::pair<double, std::string>> parts = {
         {nonzeros * kBytesPerNonzero, "the sparse Jacobian and its LU factors"},
         {mesh, "the mesh"}};
-    if (model.solver.linear_solver == "dense") {
+    if (model.solver.linear_solver == LinearSolver::dense) {
         parts.push_back(
             {2.0 * 8.0 * n * n, "the dense Jacobian and its LU (solver.linear_solver)"});
     }

@@ -29,12 +29,19 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model);
 // `references` and `expected_stops` (references.cpp).
 void read_references(const YamlReader& r, const YAML::Node& root, Model& model);
 
-// Values shared by discretization and references.applies_to.
-extern const std::vector<std::string> kFormulations;
-extern const std::vector<std::string> kRotations;
+// Values shared by discretization and references.applies_to (the enum choices: choice_names).
 extern const std::vector<std::string> kQuadratures;
-extern const std::vector<std::string> kInterpolations;
-extern const std::vector<std::string> kUpdates;
 extern const std::vector<std::string> kMassRules;
+
+// The enum E named by `node` (one of choice_names<E>(), else fails naming the key and the choices):
+// where a case's names become enums (core/choices.hpp).
+template <class E>
+E read_choice(const YamlReader& r, const YAML::Node& node, const std::string& key) {
+    return *parse_choice<E>(r.choice(node, key, choice_names<E>()));
+}
+
+// The parameterization named by `node` (one of the registry's names).
+ParameterizationId read_rotation(const YamlReader& r, const YAML::Node& node,
+                                 const std::string& key);
 
 }  // namespace rotbeam::cases

@@ -5,6 +5,8 @@
 
 #include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
+#include "combinations/registry.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam::cases {
 
@@ -17,13 +19,13 @@ const std::vector<std::string> kCombinationKeys = {"formulation", "rotation", "i
 
 std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::string& key,
                           const std::string& name) {
-    if (name == "formulation") return r.choice(v, key, kFormulations);
-    if (name == "rotation") return r.choice(v, key, kRotations);
+    if (name == "formulation") return r.choice(v, key, choice_names<Formulation>());
+    if (name == "rotation") return r.choice(v, key, param::parameterization_names());
     if (name == "quadrature") return r.choice(v, key, kQuadratures);
-    if (name == "interpolation") return r.choice(v, key, kInterpolations);
-    if (name == "update") return r.choice(v, key, kUpdates);
+    if (name == "interpolation") return r.choice(v, key, choice_names<Interpolation>());
+    if (name == "update") return r.choice(v, key, choice_names<Update>());
     if (name == "mass_rule") return r.choice(v, key, kMassRules);
-    if (name == "wm_map") return r.choice(v, key, {"plain", "continuous"});
+    if (name == "wm_map") return r.choice(v, key, choice_names<WmMap>());
     if (name == "rescale") return r.boolean(v, key) ? "true" : "false";
     if (name == "elements")
         return std::to_string(r.positive_integer(v, key, kMaxElementsPerMember));
@@ -49,17 +51,25 @@ std::map<std::string, std::string> read_applies_to(const YamlReader& r, const YA
         }
     }
     // Keys that no combination has would select nothing (verify_plan.cpp: gate_combinations).
-    const auto named = [&](const char* k, const char* v) {
-        const auto it = out.find(k);
-        return it != out.end() && it->second == v;
-    };
-    if (out.count("interpolation") && named("formulation", "mixed")) {
-        r.fail(at["interpolation"], key + ".applies_to.interpolation",
-               "the mixed formulation has no interpolation strategy: no combination is selected");
+    // The values were checked above: they parse.
+    std::optional<Formulation> formulation;
+    if (out.count("formulation")) formulation = parse_choice<Formulation>(out["formulation"]);
+    bool any_wm_map = false;  // a combination the named keys allow takes wm_map
+    for (const Formulation f : comb::formulations()) {
+        if (formulation && f != *formulation) continue;
+        for (const ParameterizationId p : param::parameterization_ids()) {
+            if (out.count("rotation") && p != param::parse_parameterization(out["rotation"]))
+                continue;
+            any_wm_map = any_wm_map || comb::has_wm_map(f, p);
+        }
     }
-    if (out.count("wm_map") &&
-        (named("formulation", "displacement") ||
-         (out.count("rotation") && !named("rotation", "wiener-milenkovic")))) {
+    if (out.count("interpolation") && formulation &&
+        comb::traits(*formulation).interpolations.empty()) {
+        r.fail(at["interpolation"], key + ".applies_to.interpolation",
+               "the " + out["formulation"] +
+                   " formulation has no interpolation strategy: no combination is selected");
+    }
+    if (out.count("wm_map") && !any_wm_map) {
         r.fail(at["wm_map"], key + ".applies_to.wm_map",
                "only the mixed formulation with wiener-milenkovic has a map: no combination is "
                "selected");

@@ -1,20 +1,23 @@
 // Case loader: analysis, discretization and solver (docs/case-format.md).
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
+#include "combinations/registry.hpp"
+#include "parameterizations/registry.hpp"
 
 namespace rotbeam::cases {
 
-const std::vector<std::string> kFormulations = {"displacement", "mixed"};
-const std::vector<std::string> kRotations = {"quaternion", "wiener-milenkovic", "rodrigues",
-                                             "rotation-vector", "euler-angles"};
 const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll"};
-const std::vector<std::string> kInterpolations = {"relative", "direct"};
-const std::vector<std::string> kUpdates = {"multiplicative", "additive"};
 const std::vector<std::string> kMassRules = {"consistent", "midpoint", "lumped"};
+
+ParameterizationId read_rotation(const YamlReader& r, const YAML::Node& node,
+                                 const std::string& key) {
+    return *param::parse_parameterization(r.choice(node, key, param::parameterization_names()));
+}
 
 namespace {
 
@@ -90,10 +93,24 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
             r.fail(n["rho_infinity"], "analysis.rho_infinity", "must lie in [0, 1]");
         }
     }
-    if (n["integrator"]) d.integrator = r.string(n["integrator"], "analysis.integrator");
+    if (n["integrator"]) {
+        // Any formulation's name here; case_loader.cpp checks it against the case's formulation.
+        const std::string name = r.string(n["integrator"], "analysis.integrator");
+        const std::optional<Integrator> integrator = parse_choice<Integrator>(name);
+        if (!integrator) {
+            std::string valid;
+            for (const comb::FormulationTraits& f : comb::kFormulations) {
+                valid += (valid.empty() ? "" : "; ") + std::string(choice_name(f.id)) + ": " +
+                         comb::integrator_names(f.id);
+            }
+            r.fail(n["integrator"], "analysis.integrator",
+                   "unknown integrator '" + name + "' (" + valid + ")");
+        }
+        d.integrator = *integrator;
+    }
     if (n["initial_state"]) {
         d.initial_state =
-            r.choice(n["initial_state"], "analysis.initial_state", {"rest", "static"});
+            read_choice<InitialState>(r, n["initial_state"], "analysis.initial_state");
     }
     if (n["initial_velocity"])
         d.initial_velocity = r.vec3(n["initial_velocity"], "analysis.initial_velocity");
@@ -105,7 +122,7 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
         const std::string key = std::string("analysis.") + name;
         const double v = r.positive(n[name], key);
         if (v < 1e-14 || v >= 1.0) r.fail(n[name], key, "must lie in [1e-14, 1)");
-        if (d.integrator != "ida") {
+        if (d.integrator != Integrator::ida) {
             r.fail(n[name], key, "used only by analysis.integrator: ida (the tolerances of IDA)");
         }
         (std::string(name) == "relative_tolerance" ? d.relative_tolerance : d.absolute_tolerance) =
@@ -166,8 +183,8 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
                   "interpolation", "update", "rescale", "mass_rule", "wm_map"});
     Discretization& d = model.discretization;
     if (n["formulation"])
-        d.formulation = r.choice(n["formulation"], k + ".formulation", kFormulations);
-    if (n["rotation"]) d.rotation = r.choice(n["rotation"], k + ".rotation", kRotations);
+        d.formulation = read_choice<Formulation>(r, n["formulation"], k + ".formulation");
+    if (n["rotation"]) d.rotation = read_rotation(r, n["rotation"], k + ".rotation");
     if (n["order"]) d.order = r.positive_integer(n["order"], k + ".order", kMaxOrder);
     if (n["quadrature"]) {
         const std::string q = r.choice(n["quadrature"], k + ".quadrature", kQuadratures);
@@ -179,17 +196,16 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
         d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points",
                                                  kMaxQuadraturePoints);
     if (n["interpolation"])
-        d.interpolation = r.choice(n["interpolation"], k + ".interpolation", kInterpolations);
-    if (n["update"]) d.update = r.choice(n["update"], k + ".update", kUpdates);
+        d.interpolation = read_choice<Interpolation>(r, n["interpolation"], k + ".interpolation");
+    if (n["update"]) d.update = read_choice<Update>(r, n["update"], k + ".update");
     if (n["rescale"]) d.rescale = r.boolean(n["rescale"], k + ".rescale");
     if (n["mass_rule"]) d.mass_rule = r.choice(n["mass_rule"], k + ".mass_rule", kMassRules);
     // The mixed element's momenta are element unknowns: nothing to lump (docs/mixed-dynamics.md).
-    if (d.formulation == "mixed" && d.mass_rule == "lumped") {
+    if (!comb::traits(d.formulation).lumped_mass && d.mass_rule == "lumped") {
         r.fail(n["mass_rule"], k + ".mass_rule",
-               "'lumped' is not available in the mixed formulation (element momenta, no nodal "
-               "masses); consistent | midpoint");
+               std::string(comb::traits(d.formulation).no_lumped_mass_reason));
     }
-    if (n["wm_map"]) d.wm_map = r.choice(n["wm_map"], k + ".wm_map", {"plain", "continuous"});
+    if (n["wm_map"]) d.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
 }
 
 void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
@@ -211,9 +227,9 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
     if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
     if (n["mip"]) s.mip = r.boolean(n["mip"], k + ".mip");
     if (n["linear_solver"]) {
-        s.linear_solver = r.choice(n["linear_solver"], k + ".linear_solver", {"sparse", "dense"});
+        s.linear_solver = read_choice<LinearSolver>(r, n["linear_solver"], k + ".linear_solver");
     }
-    if (n["driver"]) s.driver = r.choice(n["driver"], k + ".driver", {"newton", "kinsol"});
+    if (n["driver"]) s.driver = read_choice<Driver>(r, n["driver"], k + ".driver");
     if (n["force_scale"]) s.force_scale = r.non_negative(n["force_scale"], k + ".force_scale");
     if (n["length_scale"]) s.length_scale = r.non_negative(n["length_scale"], k + ".length_scale");
     if (n["assemble_all_terms"])

@@ -195,7 +195,7 @@ int command_list(const Args& args) {
     std::cout << "parameterizations:\n";
     for (const std::string& p : param::parameterization_names()) std::cout << "  " << p << "\n";
     std::cout << "formulations:\n";
-    for (const std::string& f : formulation_names()) std::cout << "  " << f << "\n";
+    for (const Formulation f : comb::formulations()) std::cout << "  " << choice_name(f) << "\n";
     return 0;
 }
 

@@ -22,6 +22,7 @@
 
 #include "arguments.hpp"
 #include "cases/loader/case_loader.hpp"
+#include "combinations/registry.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
@@ -93,7 +94,8 @@ std::vector<PlannedRun> modal_variants(const std::string& name, const std::strin
             continue;
         }
         seen.push_back(ref.applies_to);
-        PlannedRun run{name, path, model.discretization.rotation, model.discretization.formulation};
+        PlannedRun run{name, path, std::string(param::name_of(model.discretization.rotation)),
+                       std::string(choice_name(model.discretization.formulation))};
         run.overrides = reference_overrides(ref);
         const auto get = [&](const char* key, std::string& value) {
             const auto it = ref.applies_to.find(key);
@@ -108,7 +110,8 @@ std::vector<PlannedRun> modal_variants(const std::string& name, const std::strin
                      "_" + run.formulation;
         variants.push_back(run);
     }
-    PlannedRun refined{name, path, model.discretization.rotation, model.discretization.formulation};
+    PlannedRun refined{name, path, std::string(param::name_of(model.discretization.rotation)),
+                       std::string(choice_name(model.discretization.formulation))};
     refined.elements_per_member = kConvergedElementsPerMember;
     refined.output = name + "-" + std::to_string(kConvergedElementsPerMember) + "-per-member_" +
                      refined.rotation + "_" + refined.formulation;
@@ -125,15 +128,14 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
         if (quick && name != "cantilever-moment" && name != "bend-45") continue;
         const Model model = load_case(path, {});
         const std::string text = read_file(path);
-        for (const std::string& formulation : formulation_names()) {
-            for (const std::string& rotation : param::parameterization_names()) {
-                PlannedRun run{name, path, rotation, formulation};
-                run.output = (fs::path(out_dir) / "runs" /
-                              (name + "_" + rotation + "_" + formulation + ".json"))
-                                 .string();
-                run.key = input_key(text, run);
-                runs.push_back(run);
-            }
+        for (const comb::Combination& c : comb::all_combinations(false)) {
+            PlannedRun run{name, path, std::string(param::name_of(c.rotation)),
+                           std::string(choice_name(c.formulation))};
+            run.output = (fs::path(out_dir) / "runs" /
+                          (name + "_" + run.rotation + "_" + run.formulation + ".json"))
+                             .string();
+            run.key = input_key(text, run);
+            runs.push_back(run);
         }
         if (!quick && model.analysis.kind == AnalysisKind::modal) {
             for (PlannedRun& run : modal_variants(name, path, model)) {

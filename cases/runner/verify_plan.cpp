@@ -1,6 +1,7 @@
 #include "verify_plan.hpp"
 
 #include "cases/loader/case_loader.hpp"
+#include "combinations/registry.hpp"
 #include "core/errors.hpp"
 #include "parameterizations/registry.hpp"
 #include "runs/run_case.hpp"
@@ -23,15 +24,20 @@ bool is_combination_key(const std::string& key) {
 // that differ between members).
 std::string model_setting(const Model& model, const std::string& key) {
     const Discretization& d = model.discretization;
-    if (key == "formulation") return d.formulation;
-    if (key == "rotation") return d.rotation;
-    if (key == "interpolation") return d.formulation == "displacement" ? d.interpolation : "";
+    if (key == "formulation") return std::string(choice_name(d.formulation));
+    if (key == "rotation") return std::string(param::name_of(d.rotation));
+    if (key == "interpolation") {
+        return comb::traits(d.formulation).interpolations.empty()
+                   ? ""
+                   : std::string(choice_name(d.interpolation));
+    }
     if (key == "wm_map") {
-        return d.formulation == "mixed" && d.rotation == "wiener-milenkovic" ? d.wm_map : "";
+        return comb::has_wm_map(d.formulation, d.rotation) ? std::string(choice_name(d.wm_map))
+                                                           : "";
     }
     if (key == "order") return std::to_string(d.order);
     if (key == "quadrature_points") return std::to_string(d.quadrature_points);
-    if (key == "update") return d.update;
+    if (key == "update") return std::string(choice_name(d.update));
     if (key == "mass_rule") return d.mass_rule;
     if (key == "rescale") return d.rescale ? "true" : "false";
     if (key == "quadrature") {
@@ -54,18 +60,12 @@ std::string model_setting(const Model& model, const std::string& key) {
 
 std::vector<Settings> gate_combinations() {
     std::vector<Settings> list;
-    for (const std::string& f : formulation_names()) {
-        for (const std::string& r : param::parameterization_names()) {
-            if (f == "displacement") {
-                for (const char* i : {"relative", "direct"})
-                    list.push_back({{"formulation", f}, {"rotation", r}, {"interpolation", i}});
-            } else if (r == "wiener-milenkovic") {
-                for (const char* m : {"plain", "continuous"})
-                    list.push_back({{"formulation", f}, {"rotation", r}, {"wm_map", m}});
-            } else {
-                list.push_back({{"formulation", f}, {"rotation", r}});
-            }
-        }
+    for (const comb::Combination& c : comb::all_combinations(true, true)) {
+        Settings s = {{"formulation", std::string(choice_name(c.formulation))},
+                      {"rotation", std::string(param::name_of(c.rotation))}};
+        if (c.interpolation) s["interpolation"] = std::string(choice_name(*c.interpolation));
+        if (c.wm_map) s["wm_map"] = std::string(choice_name(*c.wm_map));
+        list.push_back(s);
     }
     return list;
 }

@@ -51,20 +51,10 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
             }
         }
     }
-    const std::string& interpolation = model.discretization.interpolation;
-    if (interpolation != "relative" && interpolation != "direct") {
-        throw InputError("unknown rotation interpolation '" + interpolation +
-                         "' (relative | direct)");
-    }
-    relative_ = interpolation == "relative";
+    relative_ = model.discretization.interpolation == Interpolation::relative;
     rescale_nodes_ = relative_ && model.discretization.rescale && P::kCanRescale;
     rescale_refused_ = !relative_ && model.discretization.rescale && P::kCanRescale;
-    const std::string& update = model.discretization.update;
-    if (update != "multiplicative" && update != "additive") {
-        throw InputError("discretization.update: unknown update '" + update +
-                         "' (multiplicative | additive)");
-    }
-    additive_ = update == "additive";
+    additive_ = model.discretization.update == Update::additive;
     if (model.solver.mip && additive_) {
         throw InputError(
             "solver.mip: the mixed-integration-point Newton needs the "

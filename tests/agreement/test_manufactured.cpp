@@ -67,7 +67,7 @@ template <class P>
 Error mixed(int elements, double lambda_end) {
     Model m = oracle::manufactured_model(rod(), elements, 20);
     for (double& l : m.analysis.statics.load_factors) l *= lambda_end;
-    m.discretization.formulation = "mixed";
+    m.discretization.formulation = Formulation::mixed;
     form::MixedStaticsOf<P> problem(m);
     return solve_and_measure(problem, m);
 }

@@ -11,6 +11,7 @@
 
 #include "core/oracles/manufactured_motion.hpp"
 #include "core/so3.hpp"
+#include "parameterizations/registry.hpp"
 #include "studies/manufactured_motion_runs.hpp"
 
 using namespace rotbeam;
@@ -130,13 +131,14 @@ BOOST_AUTO_TEST_CASE(ends_are_free_of_load_and_the_rotation_passes_two_pi) {
 
 namespace {
 
+// The run of a combination given by its names (parsed here, as the case loader would).
 cli::MotionRunSpec spec_for(const std::string& formulation, const std::string& rotation,
                             const std::string& wm_map = "plain") {
     cli::MotionRunSpec spec;
-    spec.formulation = formulation;
-    spec.rotation = rotation;
-    spec.wm_map = wm_map;
-    spec.motion = cli::motion_within_reach(formulation, rotation);
+    spec.formulation = parse_choice<Formulation>(formulation).value();
+    spec.rotation = param::parse_parameterization(rotation).value();
+    spec.wm_map = parse_choice<WmMap>(wm_map).value();
+    spec.motion = cli::motion_within_reach(spec.formulation, spec.rotation);
     return spec;
 }
 
@@ -204,11 +206,11 @@ BOOST_AUTO_TEST_CASE(mixed_trapezoidal_scheme_is_second_order_in_time) {
     for (const auto& [rotation, map] : types) {
         cli::MotionRunSpec spec = spec_for("mixed", rotation, map);
         spec.elements = 8;
-        spec.integrator = "trapezoidal";
+        spec.integrator = Integrator::trapezoidal;
         const Orders o = time_orders(spec, 0.05);
         BOOST_TEST(std::abs(o.u - 2.0) < 0.2, spec.label());
         BOOST_TEST(std::abs(o.R - 2.0) < 0.2, spec.label());
-        if (rotation == "quaternion") {
+        if (spec.rotation == param::id_of<param::Quaternion>()) {
             // The quaternion follows the full motion: the spin passes 2π within the run.
             BOOST_TEST(spec.motion.max_angle(0.0) < 2.0 * kPi);
             BOOST_TEST(spec.motion.max_angle(spec.end_time) > 2.0 * kPi);
@@ -223,7 +225,7 @@ BOOST_AUTO_TEST_CASE(ida_error_falls_with_its_tolerance) {
     for (const char* rotation : {"wiener-milenkovic", "quaternion"}) {
         cli::MotionRunSpec spec = spec_for("mixed", rotation);
         spec.elements = 8;
-        spec.integrator = "ida";
+        spec.integrator = Integrator::ida;
         spec.dt = 0.05;
         spec.tolerance = 1e-6;
         const cli::MotionRunResult ref = cli::run_manufactured_motion(spec);
@@ -277,7 +279,7 @@ BOOST_AUTO_TEST_CASE(space_orders_at_a_small_time_step) {
     BOOST_TEST(std::abs(dR - 2.0) < 0.2);
     for (const char* rotation : {"wiener-milenkovic", "quaternion"}) {
         cli::MotionRunSpec m = spec_for("mixed", rotation);
-        m.integrator = "trapezoidal";
+        m.integrator = Integrator::trapezoidal;
         const auto [mu, mR] = series(m, {2, 4, 8}, 0.0025);
         std::printf("mixed %s space orders: %.3f %.3f\n", rotation, mu, mR);
         BOOST_TEST(std::abs(mu - 2.0) < 0.2, rotation);

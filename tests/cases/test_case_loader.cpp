@@ -10,6 +10,7 @@
 #include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
+#include "parameterizations/registry.hpp"
 
 using namespace rotbeam;
 
@@ -217,7 +218,7 @@ BOOST_AUTO_TEST_CASE(overrides_set_values_lists_and_new_keys) {
     BOOST_TEST(m.members[0].elements == 8);
     BOOST_TEST((m.analysis.statics.load_factors == std::vector<double>{0.4, 2.0}));
     BOOST_TEST(m.has_follower_loads());
-    BOOST_TEST(m.discretization.rotation == "rodrigues");
+    BOOST_TEST((m.discretization.rotation == param::id_of<param::Rodrigues>()));
     // A key absent from the file (and a section absent from the file) can be set.
     const Model t = load_case(
         case_path("tip-load-cantilever"),

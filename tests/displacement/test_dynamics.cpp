@@ -34,7 +34,7 @@ template <class P>
 TipHistory simulate(const Model& model, double dt, double end, double rho, bool record_energy) {
     form::DisplacementDynamics<P> d(model);
     const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
-    if (model.analysis.dynamics.initial_state == "static") {
+    if (model.analysis.dynamics.initial_state == InitialState::static_equilibrium) {
         d.statics().set_time(0.0);
         const StaticOutcome s = run_static(d.statics(), {1.0}, newton, {});
         BOOST_TEST_REQUIRE(has_solution(s.status));
@@ -156,7 +156,7 @@ BOOST_AUTO_TEST_CASE(energy_is_bounded_without_drift_at_large_amplitude_over_100
     p.time.values = {1.0, 0.0};
     m.point_loads = {p};
     m.analysis.kind = AnalysisKind::dynamic;
-    m.analysis.dynamics.initial_state = "static";
+    m.analysis.dynamics.initial_state = InitialState::static_equilibrium;
     constexpr double kPeriod = 0.12, kEnd = 12.0, kDt = 5e-4;
     const TipHistory r = simulate<param::Quaternion>(m, kDt, kEnd, 1.0, true);
     const double E0 = r.energy[0];
@@ -211,7 +211,7 @@ BOOST_AUTO_TEST_CASE(
     first_mode_vibrates_at_the_modal_frequency_with_trapezoidal_period_elongation) {
     Model m = free_vibration();
     m.point_loads.clear();
-    m.analysis.dynamics.initial_state = "rest";
+    m.analysis.dynamics.initial_state = InitialState::rest;
     for (double h : {1e-3, 5e-4}) {
         form::DisplacementDynamics<param::RotationVector> d(m);
         VecX r;
@@ -265,7 +265,7 @@ BOOST_AUTO_TEST_CASE(stiffness_proportional_damping_decays_the_first_mode_at_its
     constexpr double kMu = 1e-4;  // s
     Model m = free_vibration();
     m.point_loads.clear();
-    m.analysis.dynamics.initial_state = "rest";
+    m.analysis.dynamics.initial_state = InitialState::rest;
     m.members[0].sections[0].section.damping = Vec6::Constant(kMu);
     form::DisplacementDynamics<param::RotationVector> d(m);
     VecX r;

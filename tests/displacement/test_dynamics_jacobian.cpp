@@ -7,6 +7,7 @@
 #include <iostream>
 #include <type_traits>
 
+#include "combinations/registry.hpp"
 #include "core/finite_difference.hpp"
 #include "dynamic_state.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
@@ -61,7 +62,7 @@ BOOST_AUTO_TEST_SUITE(displacement_dynamics_jacobian)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_matrix_matches_central_differences_at_a_moving_state, P,
                               AllParams) {
-    for (const char* interpolation : {"relative", "direct"}) {
+    for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         for (bool damping : {false, true}) {
             Model m = test::moving_model(2, 3, damping);
             m.discretization.interpolation = interpolation;
@@ -70,7 +71,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_matrix_matches_central_differences_at_a_
             d.save_state(kBase);
             const double worst = max_column_error(d);
             const AssemblyCounters c = d.counters();
-            std::cout << P::kName << " " << interpolation << (damping ? ", damped" : ", undamped")
+            std::cout << P::kName << " " << choice_name(interpolation) << (damping ? ", damped" : ", undamped")
                       << ": tip rotation " << d.statics().max_rotation_angle()
                       << " rad, worst column error " << worst << ", inertial terms "
                       << c.inertial_terms << ", damping terms " << c.damping_terms << "\n";

@@ -1,19 +1,19 @@
 // The exact consistent Jacobian of the displacement statics, checked column by column against
 // central finite differences taken through the retraction (x ⊕ h e_k), and the linearization
 // order check, at the strongly deformed state of deformed.hpp.
+#include <boost/mpl/list.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <iostream>
 
+#include "combinations/registry.hpp"
 #include "core/finite_difference.hpp"
-#include <boost/mpl/list.hpp>
-
+#include "deformed.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "parameterizations/euler_angles.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
-#include "deformed.hpp"
 
 using namespace rotbeam;
 using Statics = form::DisplacementStatics<param::Quaternion>;
@@ -76,10 +76,9 @@ void check_jacobian(const Model& m, const char* label, double min_angle = 2.0) {
     BOOST_TEST_REQUIRE(s.max_rotation_angle() > min_angle);
     double worst_abs = 0.0;
     const double worst = max_column_error(s, worst_abs);
-    std::cout << P::kName << " " << m.discretization.interpolation << ", " << label
-              << ": tip rotation " << s.max_rotation_angle()
-              << " rad, worst column error " << worst << " (relative to the column), "
-              << worst_abs << " (relative to max |J|)\n";
+    std::cout << P::kName << " " << choice_name(m.discretization.interpolation) << ", " << label
+              << ": tip rotation " << s.max_rotation_angle() << " rad, worst column error " << worst
+              << " (relative to the column), " << worst_abs << " (relative to max |J|)\n";
     BOOST_TEST(worst < 1e-7);
 }
 
@@ -96,7 +95,7 @@ using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, p
                                    param::RotationVector, param::EulerAngles>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_every_parameterization_and_interpolation,
                               P, AllParams) {
-    for (const char* interpolation : {"relative", "direct"}) {
+    for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         Model m = test::curved_twisted(2, 4, true, true);
         m.discretization.interpolation = interpolation;
         check_jacobian<P>(m, "p=4, 2 elements, follower+gravity");
@@ -111,10 +110,10 @@ using ThreeParams = boost::mpl::list<param::WienerMilenkovic, param::Rodrigues,
                                      param::RotationVector, param::EulerAngles>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(additive_update_jacobian_matches_central_differences, P,
                               ThreeParams) {
-    for (const char* interpolation : {"relative", "direct"}) {
+    for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         Model m = test::curved_twisted(2, 4, true, true);
         m.discretization.interpolation = interpolation;
-        m.discretization.update = "additive";
+        m.discretization.update = Update::additive;
         check_jacobian<P>(m, "additive update, p=4, 2 elements, follower+gravity", 1.5);
     }
 }

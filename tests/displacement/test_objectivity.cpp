@@ -24,7 +24,7 @@ using namespace rotbeam;
 namespace {
 
 // Free–free beam (no supports, no loads) of length 10 with the §6 section, 4 elements of order 4.
-Model free_beam(const std::string& interpolation) {
+Model free_beam(Interpolation interpolation) {
     Model m =
         test::cantilever(Vec3(10, 0, 0), test::diagonal_section(1e6, 1e6, 1e6, 50, 100, 200), 4, 4);
     m.constraints.clear();
@@ -55,7 +55,7 @@ double violation_at_current_state(form::DisplacementStatics<P>& problem);
 
 // max over nodes |r(Q·state) − Q r(state)| / max |r(state)| for the precessing twist–bend field.
 template <class P>
-double objectivity_violation(const std::string& interpolation, double span) {
+double objectivity_violation(Interpolation interpolation, double span) {
     form::DisplacementStatics<P> problem(free_beam(interpolation));
     const form::Mesh& mesh = problem.mesh();
     VecX deform = VecX::Zero(problem.size());
@@ -72,7 +72,7 @@ double objectivity_violation(const std::string& interpolation, double span) {
 // 80 steps — rotations that do not commute), 4 elements of order 4; its nodal states are copied
 // into the same mesh without supports or loads, so the residual is the internal force alone.
 template <class P>
-double precessing_helix_violation(const std::string& interpolation) {
+double precessing_helix_violation(Interpolation interpolation) {
     Model loaded = free_beam(interpolation);
     Constraint root;
     root.point = 0;
@@ -130,8 +130,8 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(relative_is_objective_and_direct_three_parameter_i
                               ThreeParameter) {
     double previous = 0.0;
     for (const double span : {0.4, 1.6, 4.0}) {
-        const double relative = objectivity_violation<P>("relative", span);
-        const double direct = objectivity_violation<P>("direct", span);
+        const double relative = objectivity_violation<P>(Interpolation::relative, span);
+        const double direct = objectivity_violation<P>(Interpolation::direct, span);
         BOOST_TEST_MESSAGE(P::kName << ", rotation per element " << span / 4.0 << " rad: relative "
                                     << relative << ", direct " << direct);
         BOOST_TEST(relative <= 1e-12);
@@ -148,8 +148,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(relative_is_objective_and_direct_three_parameter_i
 // costs the quaternion is not objectivity but the element span limit of the sign alignment.
 BOOST_AUTO_TEST_CASE(direct_quaternion_interpolation_is_objective) {
     for (const double span : {0.4, 1.6, 4.0}) {
-        BOOST_TEST(objectivity_violation<param::Quaternion>("relative", span) <= 1e-12);
-        BOOST_TEST(objectivity_violation<param::Quaternion>("direct", span) <= 1e-12);
+        BOOST_TEST(objectivity_violation<param::Quaternion>(Interpolation::relative, span) <=
+                   1e-12);
+        BOOST_TEST(objectivity_violation<param::Quaternion>(Interpolation::direct, span) <= 1e-12);
     }
 }
 
@@ -162,8 +163,8 @@ BOOST_AUTO_TEST_CASE(direct_quaternion_interpolation_is_objective) {
 // has an internal-force residual of 105× (WM) and 50× (rotation vector) the applied moment —
 // measured; asserted ≥ 1.
 BOOST_AUTO_TEST_CASE_TEMPLATE(objectivity_holds_on_the_solved_precessing_helix, P, ThreeParameter) {
-    const double relative = precessing_helix_violation<P>("relative");
-    const double direct = precessing_helix_violation<P>("direct");
+    const double relative = precessing_helix_violation<P>(Interpolation::relative);
+    const double direct = precessing_helix_violation<P>(Interpolation::direct);
     BOOST_TEST_MESSAGE(P::kName << ", precessing helix at κL = 2π: relative " << relative
                                 << ", direct " << direct);
     BOOST_TEST(relative <= 1e-8);
@@ -171,8 +172,8 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(objectivity_holds_on_the_solved_precessing_helix, 
 }
 
 BOOST_AUTO_TEST_CASE(direct_quaternion_is_objective_on_the_solved_precessing_helix) {
-    const double relative = precessing_helix_violation<param::Quaternion>("relative");
-    const double direct = precessing_helix_violation<param::Quaternion>("direct");
+    const double relative = precessing_helix_violation<param::Quaternion>(Interpolation::relative);
+    const double direct = precessing_helix_violation<param::Quaternion>(Interpolation::direct);
     BOOST_TEST_MESSAGE("quaternion, precessing helix at κL = 2π: relative "
                        << relative << ", direct " << direct);
     BOOST_TEST(relative <= 1e-8);

@@ -19,7 +19,7 @@ namespace {
 template <class P>
 StaticOutcome reach(double& worst) {
     Model m = test::rollup(16, 4);
-    m.discretization.interpolation = "relative";
+    m.discretization.interpolation = Interpolation::relative;
     m.discretization.rescale = true;
     form::DisplacementStatics<P> problem(m);
     NewtonSettings s;

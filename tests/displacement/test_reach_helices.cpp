@@ -14,8 +14,10 @@
 #include <cstdio>
 #include <set>
 #include <string>
+#include <type_traits>
 
 #include "cases/loader/case_loader.hpp"
+#include "combinations/registry.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/helix.hpp"
 #include "core/static_driver.hpp"
@@ -30,7 +32,7 @@ using AllTypes = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, pa
 
 constexpr double kLength = 10.0;  // both helices: L = 10 (docs/benchmarks.md §5, §6)
 
-Model catalog_case(const std::string& name, const std::string& interpolation) {
+Model catalog_case(const std::string& name, Interpolation interpolation) {
     Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/" + name + ".yaml");
     m.members.at(0).elements = 8;
     m.discretization.order = 8;
@@ -63,25 +65,27 @@ Reach follow(const Model& m, const Reference& reference) {
 // one must stop: Rodrigues at π; with `direct` interpolation WM and the rotation vector cannot
 // rescale a node without splitting its elements' chart, so on the isotropic helix, whose nodes
 // turn past 2π, they stop at their singular angle.
-bool reaches_end(const std::string& name, const std::string& interpolation, bool precessing) {
-    if (name == "rodrigues") return false;
-    if (precessing || interpolation == "relative") return true;
-    return name == "quaternion";
+template <class P>
+bool reaches_end(Interpolation interpolation, bool precessing) {
+    if (std::is_same_v<P, param::Rodrigues>) return false;
+    if (precessing || interpolation == Interpolation::relative) return true;
+    return std::is_same_v<P, param::Quaternion>;
 }
 
 template <class P>
-void check(const std::string& case_name, const std::string& interpolation, const Reach& r) {
+void check(const std::string& case_name, Interpolation interpolation, const Reach& r) {
     const std::string name(P::kName);
     std::printf("%-18s %-9s %-17s %-9s last λ = %7.4f, worst |du|/L = %.2e\n", name.c_str(),
-                interpolation.c_str(), case_name.c_str(), to_string(r.outcome.status),
-                r.outcome.last_converged_load_factor, r.worst);
-    const bool expected = reaches_end(name, interpolation, case_name == "helix-precessing");
-    BOOST_TEST(has_solution(r.outcome.status) == expected,
-               name << " " << interpolation << " " << case_name << ": " << r.outcome.message);
-    BOOST_TEST(r.worst <= 1e-6, name << " " << interpolation << " " << case_name);
+                std::string(choice_name(interpolation)).c_str(), case_name.c_str(),
+                to_string(r.outcome.status), r.outcome.last_converged_load_factor, r.worst);
+    const bool expected = reaches_end<P>(interpolation, case_name == "helix-precessing");
+    BOOST_TEST(has_solution(r.outcome.status) == expected, name << " " << choice_name(interpolation)
+                                                                << " " << case_name << ": "
+                                                                << r.outcome.message);
+    BOOST_TEST(r.worst <= 1e-6, name << " " << choice_name(interpolation) << " " << case_name);
     // A stop of WM or the rotation vector with `direct` interpolation near 2π must say that the
     // rescale it needed was refused, not only that Newton failed.
-    if (!expected && name != "rodrigues") {
+    if (!expected && !std::is_same_v<P, param::Rodrigues>) {
         BOOST_TEST(r.outcome.message.find("would split the chart") != std::string::npos,
                    r.outcome.message);
     }
@@ -92,7 +96,7 @@ void check(const std::string& case_name, const std::string& interpolation, const
 BOOST_AUTO_TEST_SUITE(displacement_reach_helices)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(isotropic_helix_to_4pi_is_exact_or_stops_truthfully, P, AllTypes) {
-    for (const std::string interpolation : {"relative", "direct"}) {
+    for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         const Model m = catalog_case("helix", interpolation);
         const Vec3 axis(0.6, 0.0, 0.8);
         const Reach r = follow<P>(m, [&](int, double lambda) {
@@ -104,11 +108,11 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(isotropic_helix_to_4pi_is_exact_or_stops_truthfull
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(precessing_helix_to_4pi_matches_the_continuum_or_stops_truthfully, P,
                               AllTypes) {
-    const Model base = catalog_case("helix-precessing", "relative");
+    const Model base = catalog_case("helix-precessing", Interpolation::relative);
     static const ContinuumOutcome reference = solve_continuum(base);
     BOOST_TEST_REQUIRE(reference.status == "converged", reference.message);
     const int tip = base.point_index("tip");
-    for (const std::string interpolation : {"relative", "direct"}) {
+    for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         const Model m = catalog_case("helix-precessing", interpolation);
         const Reach r = follow<P>(m, [&](int k, double) {
             return reference.steps.at(static_cast<size_t>(k))

@@ -1,0 +1,114 @@
+// The named choices of a case (formulation, schemes and strategies) as enums, with their names.
+//
+// A name is parsed into its enum once, where it enters the program (the case loader, which also
+// reads the command line's overrides); everything past that point compares enums. The names are
+// those of the case format (docs/case-format.md) and of the result files, in enum order:
+// choice_name(e) is what a result file prints, parse_choice<E>(name) its inverse.
+//
+// The parameterization is chosen by a ParameterizationId: an index into the parameterization
+// registry (parameterizations/registry.hpp), which core does not know, so it has no enumerators
+// here; the registry turns names into ids and ids into types. Which formulation takes which
+// scheme or strategy is listed in combinations/registry.hpp.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rotbeam {
+
+// Index of a parameterization in param::AllParameterizations; 0 is the first listed (the
+// quaternion), the default of a case that names none.
+enum class ParameterizationId : int {};
+
+enum class Formulation { displacement, mixed };
+
+// How the displacement formulation interpolates rotations between nodes (docs/architecture.md).
+enum class Interpolation { relative, direct };
+
+// How a Newton increment updates the nodal rotations of the displacement formulation.
+enum class Update { multiplicative, additive };
+
+// The mixed formulation's Wiener–Milenković rescaling map: `plain` (seed 002 as published) or
+// `continuous` (GXBeam's, parameterizations/wiener_milenkovic_continuous.hpp).
+enum class WmMap { plain, continuous };
+
+// The time integrator; `automatic` (no name in the case) is the formulation's first listed.
+enum class Integrator { automatic, generalized_alpha, trapezoidal, ida };
+
+// Where a dynamic analysis starts: at rest in the reference configuration, or at rest from the
+// static equilibrium of the loads at t = 0.
+enum class InitialState { rest, static_equilibrium };
+
+enum class LinearSolver { sparse, dense };
+
+// The static nonlinear solver: the in-house Newton or KINSOL (additive systems only).
+enum class Driver { newton, kinsol };
+
+// The names of each choice, in enum order (ChoiceNames<E>::kNames[static_cast<size_t>(e)]).
+template <class E>
+struct ChoiceNames;
+
+template <>
+struct ChoiceNames<Formulation> {
+    static constexpr std::array<std::string_view, 2> kNames = {"displacement", "mixed"};
+};
+template <>
+struct ChoiceNames<Interpolation> {
+    static constexpr std::array<std::string_view, 2> kNames = {"relative", "direct"};
+};
+template <>
+struct ChoiceNames<Update> {
+    static constexpr std::array<std::string_view, 2> kNames = {"multiplicative", "additive"};
+};
+template <>
+struct ChoiceNames<WmMap> {
+    static constexpr std::array<std::string_view, 2> kNames = {"plain", "continuous"};
+};
+template <>
+struct ChoiceNames<Integrator> {
+    // `automatic` has no name in a case file: parse_choice never returns it.
+    static constexpr std::array<std::string_view, 4> kNames = {"", "generalized-alpha",
+                                                               "trapezoidal", "ida"};
+};
+template <>
+struct ChoiceNames<InitialState> {
+    static constexpr std::array<std::string_view, 2> kNames = {"rest", "static"};
+};
+template <>
+struct ChoiceNames<LinearSolver> {
+    static constexpr std::array<std::string_view, 2> kNames = {"sparse", "dense"};
+};
+template <>
+struct ChoiceNames<Driver> {
+    static constexpr std::array<std::string_view, 2> kNames = {"newton", "kinsol"};
+};
+
+template <class E>
+constexpr std::string_view choice_name(E e) {
+    return ChoiceNames<E>::kNames[static_cast<std::size_t>(e)];
+}
+
+// The enum named `name`, or nothing for an unknown (or empty) name.
+template <class E>
+constexpr std::optional<E> parse_choice(std::string_view name) {
+    for (std::size_t i = 0; i < ChoiceNames<E>::kNames.size(); ++i) {
+        if (!name.empty() && ChoiceNames<E>::kNames[i] == name) return static_cast<E>(i);
+    }
+    return std::nullopt;
+}
+
+// Every non-empty name of E, in enum order (the valid values a message lists).
+template <class E>
+std::vector<std::string> choice_names() {
+    std::vector<std::string> names;
+    for (std::string_view n : ChoiceNames<E>::kNames) {
+        if (!n.empty()) names.emplace_back(n);
+    }
+    return names;
+}
+
+}  // namespace rotbeam
