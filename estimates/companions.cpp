@@ -54,7 +54,7 @@ CompanionPlan h_plan(const Model& model) {
 
 CompanionPlan plan_companions(const Model& model) {
     CompanionPlan plan =
-        model.discretization.formulation == "mixed" ? h_plan(model) : p_plan(model);
+        model.discretization.formulation == Formulation::mixed ? h_plan(model) : p_plan(model);
     if (model.analysis.kind == AnalysisKind::dynamic) {
         plan.companions.clear();
         plan.refusal = "dynamic analyses are not estimated (time histories: not covered yet)";

@@ -39,7 +39,7 @@ json static_result(const std::string& status, const std::vector<double>& tip_x) 
     return {{"status", status}, {"message", ""}, {"steps", steps}};
 }
 
-Model two_point_model(const std::string& formulation) {
+Model two_point_model(Formulation formulation) {
     Model m;
     m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(2.0, 0.0, 0.0)}};
     Member beam;
@@ -103,17 +103,17 @@ BOOST_AUTO_TEST_CASE(p_refinement_is_the_difference_and_states_its_assumption) {
 }
 
 BOOST_AUTO_TEST_CASE(the_plan_chooses_the_method_per_formulation) {
-    const CompanionPlan p = plan_companions(two_point_model("displacement"));
+    const CompanionPlan p = plan_companions(two_point_model(Formulation::displacement));
     BOOST_TEST(p.method == "p+1");
     BOOST_TEST_REQUIRE(p.companions.size() == 1u);
     BOOST_TEST(p.companions[0].model.discretization.order == 4);
     BOOST_TEST(p.companions[0].model.members[0].elements == 4);
-    const CompanionPlan h = plan_companions(two_point_model("mixed"));
+    const CompanionPlan h = plan_companions(two_point_model(Formulation::mixed));
     BOOST_TEST(h.method == "h/2,h/4");
     BOOST_TEST_REQUIRE(h.companions.size() == 2u);
     BOOST_TEST(h.companions[0].model.members[0].elements == 8);
     BOOST_TEST(h.companions[1].model.members[0].elements == 16);
-    Model dynamic = two_point_model("displacement");
+    Model dynamic = two_point_model(Formulation::displacement);
     dynamic.analysis.kind = AnalysisKind::dynamic;
     BOOST_TEST(!plan_companions(dynamic).refusal.empty());
     BOOST_TEST(plan_companions(dynamic).companions.empty());
@@ -123,7 +123,7 @@ BOOST_AUTO_TEST_CASE(an_untrustworthy_run_gets_no_companions_and_says_why) {
     json result = static_result("diverged", {0.1});
     int calls = 0;
     add_estimate(
-        two_point_model("mixed"), result,
+        two_point_model(Formulation::mixed), result,
         [&](const Model&) {
             ++calls;
             return json();
@@ -143,7 +143,7 @@ BOOST_AUTO_TEST_CASE(a_companion_that_stops_early_leaves_the_later_steps_without
                                           static_result("diverged", {1.01})};
     std::size_t next = 0;
     add_estimate(
-        two_point_model("mixed"), result, [&](const Model&) { return companions.at(next++); },
+        two_point_model(Formulation::mixed), result, [&](const Model&) { return companions.at(next++); },
         kNoModes);
     BOOST_TEST(next == 2u);
     const json& first = result["steps"][0]["estimate"]["tip"]["displacement"];
@@ -161,7 +161,7 @@ BOOST_AUTO_TEST_CASE(a_companion_that_stops_early_leaves_the_later_steps_without
 BOOST_AUTO_TEST_CASE(a_companion_the_formulation_refuses_gives_no_estimate_and_says_why) {
     json result = static_result("converged", {0.5});
     add_estimate(
-        two_point_model("displacement"), result,
+        two_point_model(Formulation::displacement), result,
         [](const Model&) -> json { throw InputError("refused: no such combination"); }, kNoModes);
     BOOST_TEST(result["estimate"]["status"] == "not-estimated");
     BOOST_TEST(result["estimate"]["companions"][0]["status"] == "error");

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "parameterizations/registry.hpp"
 #include "studies/studies.hpp"
 #include "studies/study_runs.hpp"
 
@@ -48,9 +49,16 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_number_of_threads) {
     // Two small roll-ups and one continuum reference: cheap, and of both kinds.
     const std::vector<StudyRun> plan = {
         {"q", StudyRun::Kind::case_run,
-         RunSpec{"cantilever-moment", {"displacement", "quaternion", ""}, {}, 2}},
+         RunSpec{"cantilever-moment",
+                 {rotbeam::Formulation::displacement,
+                  rotbeam::param::id_of<rotbeam::param::Quaternion>()},
+                 {},
+                 2}},
         {"r", StudyRun::Kind::case_run,
-         RunSpec{"cantilever-moment", {"mixed", "rodrigues", ""}, {}, 4}},
+         RunSpec{"cantilever-moment",
+                 {rotbeam::Formulation::mixed, rotbeam::param::id_of<rotbeam::param::Rodrigues>()},
+                 {},
+                 4}},
         {"ref", StudyRun::Kind::continuum_reference,
          RunSpec{"cantilever-moment", {}, {"analysis.load_factors=[0.5]"}, 0}},
     };
@@ -64,7 +72,11 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_number_of_threads) {
 }
 
 BOOST_AUTO_TEST_CASE(a_repeated_or_missing_key_is_api_misuse) {
-    const RunSpec spec{"cantilever-moment", {"displacement", "quaternion", ""}, {}, 2};
+    const RunSpec spec{
+        "cantilever-moment",
+        {rotbeam::Formulation::displacement, rotbeam::param::id_of<rotbeam::param::Quaternion>()},
+        {},
+        2};
     const std::vector<StudyRun> twice = {{"a", StudyRun::Kind::case_run, spec},
                                          {"a", StudyRun::Kind::case_run, spec}};
     BOOST_CHECK_THROW(results_by_key(twice, {nlohmann::json(), nlohmann::json()}),
