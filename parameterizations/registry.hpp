@@ -23,6 +23,11 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 
+// Variants: WienerMilenkovicContinuous (parameterizations/wiener_milenkovic_continuous.hpp) is
+// Wiener–Milenković with GXBeam's continuous map, chosen by `discretization.wm_map`, not a
+// parameterization of its own; it is not in the list (the CTest check `parameterizations_registered`
+// reads this line's first word after "Variants:").
+//
 // X(Type) for every parameterization, in registry order (the first is a case's default), e.g.
 // `#define INSTANTIATE(P) template class Beam<param::P>;`. The one list of parameterizations.
 #define ROTBEAM_FOR_EACH_PARAMETERIZATION(X) \

@@ -344,10 +344,11 @@ BOOST_AUTO_TEST_CASE(the_complete_example_of_the_documentation_loads) {
     const Model m = load_case_text(doc.substr(start + 8, end - start - 8), "case-format.md");
     BOOST_TEST(m.name == "example");
     BOOST_TEST(m.members[0].sections.size() == 2u);
-    BOOST_TEST(!m.members[0].sections[1].section.stiffness.has_value());  // rigid shear rows
+    // The compliance's shear rows are finite, so the displacement formulation has its stiffness.
+    BOOST_TEST(m.members[0].sections[1].section.stiffness.has_value());
     BOOST_TEST(m.distributed_loads.size() == 1u);
     BOOST_TEST(m.has_follower_loads());
-    BOOST_TEST(m.references.at(0).applies_to.at("order") == "3");
+    BOOST_TEST(m.references.empty());  // a reference is never read off the case's own run
 }
 
 BOOST_AUTO_TEST_CASE(edit_distance_suggests_close_keys_only) {
