@@ -3,9 +3,9 @@
 // A mixed element relates its end nodes' rotations through its curvature κ (seed 002 Eq. 48): in
 // SO(3), R_b = R_a exp(ΔL C^ab κ) up to the element's discretization error, which is O(t³) for an
 // element turning by t = |ΔL κ| (the quaternion's Cayley step turns by 4 atan(t/4), short of t by
-// t³/48, docs/mixed-formulation.md). The three-parameter charts (Rodrigues, WM, rotation vector)
-// impose Eq. 48 on their parameters with the tangent inverse H⁻¹ evaluated at the element's
-// parameter mid-point. Past π the charts are
+// t³/48, docs/mixed-formulation.md). The three-parameter charts (Rodrigues, WM, rotation vector,
+// Euler angles) impose Eq. 48 on their parameters with the tangent inverse H⁻¹ evaluated at the
+// element's parameter mid-point. Past π the charts are
 // strongly distorted (the rotation vector's H⁻¹ scales the part of κ across ψ by (φ/2)cot(φ/2),
 // which changes sign at π and diverges at 2π), so with the axis varying along the beam the
 // constant of that O(t³) grows tenfold (measured on the precessing helix: defect ≈ 0.22 t³ for the

@@ -1,6 +1,6 @@
 // Wiener–Milenković parameters with GXBeam's continuous rescaling map, as a parameterization of
 // its own (used by the mixed formulation, selected by discretization.wm_map: continuous; it is not
-// in the registry's list, which names the four parameterizations of every formulation).
+// in the registry's list, which names the parameterizations every formulation takes).
 //
 // The unknown θ is unbounded; the rotation is that of the WM parameters (seed 002 Eq. 14)
 //     c(θ) = s θ,  s = 1 − 8m/|θ|,  m = round(|θ|/8)   (m = 0, c = θ for |θ| ≤ 4, i.e. φ ≤ π),

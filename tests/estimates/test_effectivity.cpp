@@ -7,9 +7,9 @@
 //
 // What is asserted, and why the tolerance is what it is:
 // - Where the true errors show the asymptotic regime, the effectivity of the tip displacement and
-//   rotation lies in [0.5, 2] (the work item's band). Asymptotic is decided from the exact errors,
-//   independently of the estimator: for p+1, e_{p+1} ≤ e_p / 2 (then |e_p − e_{p+1}| lies within
-//   [1/2, 3/2] e_p by the triangle inequality, so the band holds exactly when the estimator
+//   rotation lies in [0.5, 2] (docs/error-estimates.md). Asymptotic is decided from the exact
+//   errors, independently of the estimator: for p+1, e_{p+1} ≤ e_p / 2 (then |e_p − e_{p+1}| lies
+//   within [1/2, 3/2] e_p by the triangle inequality, so the band holds exactly when the estimator
 //   compares the right states); for h/2, h/4, the true errors at h, h/2, h/4 fall monotonically
 //   with observed orders within kOrderWindow of 2 (there Richardson's factor is off by at most
 //   ~20 %), and the estimator must then also call its estimate reliable.
@@ -25,12 +25,12 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
-#include "runs/run_case.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/so3.hpp"
 #include "core/static_driver.hpp"
 #include "estimates/quantity_estimate.hpp"
+#include "runs/run_case.hpp"
 
 namespace rotbeam {
 
