@@ -18,7 +18,10 @@ struct Companion {
     Model model;
 };
 
-struct CompanionPlan {
+// bugprone-exception-escape: the implicit special members may throw through Model's (its
+// containers' moves are not all noexcept); a plan is built and returned once, never moved inside a
+// noexcept context, so nothing relies on them not throwing.
+struct CompanionPlan {  // NOLINT(bugprone-exception-escape)
     std::string method;  // "p+1" | "h/2,h/4"
     std::vector<Companion> companions;
     // The theoretical order of each estimated quantity (docs/error-estimates.md): numbers of

@@ -16,7 +16,7 @@ if [ "${1:-}" = "--compare" ]; then
     { change = ($3 - $2) / $2; if (change < 0) a = -change; else a = change
       if (a > worst) { worst = a; where = $1 }
       flag = (a > 0.03) ? "  MOVED" : ""; if (a > 0.03) bad++
-      printf "%-55s %14d %14d %+8.3f%%%s\n", $1, $2, $3, 100 * change, flag }
+      printf "%-55s %14.0f %14.0f %+8.3f%%%s\n", $1, $2, $3, 100 * change, flag }
     END { printf "largest change %.3f%% (%s); %d of %d beyond 3%%\n", 100 * worst, where, bad, NR
           exit (bad > 0) }'
   exit $?

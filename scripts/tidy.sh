@@ -44,7 +44,7 @@ set +e
 printf '%s\n' "${files[@]}" |
   xargs -P "$(nproc)" -n 1 clang-tidy -p build/release --quiet -checks="$checks" \
     --warnings-as-errors='*' \
-    --header-filter="^$root/(core|cases|formulations|parameterizations|tests)/" 2>&1 |
+    --header-filter="^$root/(core|parameterizations|formulations|combinations|cases|estimates|runs|studies|benches|reports|tests)/" 2>&1 |
   grep -v -E '^[0-9]+ warnings? (and [0-9]+ errors? )?generated\.$|^Suppressed [0-9]+ warnings|^Use -header-filter'
 status=${PIPESTATUS[1]}
 set -e
