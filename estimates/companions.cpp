@@ -52,12 +52,16 @@ CompanionPlan h_plan(const Model& model) {
 
 }  // namespace
 
+CompanionPlan plan_space_companions(const Model& model) {
+    return model.discretization.formulation == Formulation::mixed ? h_plan(model) : p_plan(model);
+}
+
 CompanionPlan plan_companions(const Model& model) {
-    CompanionPlan plan =
-        model.discretization.formulation == Formulation::mixed ? h_plan(model) : p_plan(model);
+    CompanionPlan plan = plan_space_companions(model);
     if (model.analysis.kind == AnalysisKind::dynamic) {
         plan.companions.clear();
-        plan.refusal = "dynamic analyses are not estimated (time histories: not covered yet)";
+        plan.refusal =
+            "a dynamic analysis is estimated by add_dynamic_estimate (history_estimate.hpp)";
     }
     return plan;
 }

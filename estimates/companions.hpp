@@ -21,7 +21,7 @@ struct Companion {
 // bugprone-exception-escape: the implicit special members may throw through Model's (its
 // containers' moves are not all noexcept); a plan is built and returned once, never moved inside a
 // noexcept context, so nothing relies on them not throwing.
-struct CompanionPlan {  // NOLINT(bugprone-exception-escape)
+struct CompanionPlan {   // NOLINT(bugprone-exception-escape)
     std::string method;  // "p+1" | "h/2,h/4"
     std::vector<Companion> companions;
     // The theoretical order of each estimated quantity (docs/error-estimates.md): numbers of
@@ -31,6 +31,10 @@ struct CompanionPlan {  // NOLINT(bugprone-exception-escape)
     std::string refusal;
 };
 
+// The companions in space alone, whatever the analysis (a dynamic one keeps its time grid).
+CompanionPlan plan_space_companions(const Model& model);
+// plan_space_companions, refused for a dynamic analysis (its estimate also needs a companion in
+// time: dynamic_companions.hpp).
 CompanionPlan plan_companions(const Model& model);
 
 }  // namespace rotbeam::estimate

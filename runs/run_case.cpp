@@ -16,6 +16,7 @@
 #include "core/time_limit.hpp"
 #include "core/version.hpp"
 #include "estimates/estimate.hpp"
+#include "estimates/history_estimate.hpp"
 #include "make_problem.hpp"
 #include "mode_matching.hpp"
 
@@ -220,15 +221,19 @@ std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
 }  // namespace
 
 void add_run_estimate(const RunRequest& request, nlohmann::json& result) {
-    estimate::add_estimate(
-        request.model, result,
-        [&](const Model& companion) {
-            return run_case(
-                RunRequest{request.case_path, companion, false, request.time_limit_seconds});
-        },
-        [](const nlohmann::json& modes, const nlohmann::json& companion) {
-            return match_modes(mode_stations(modes), mode_stations(companion), kMatchMac);
-        });
+    const estimate::CompanionRun companion_run = [&](const Model& companion) {
+        return run_case(
+            RunRequest{request.case_path, companion, false, request.time_limit_seconds});
+    };
+    if (request.model.analysis.kind == AnalysisKind::dynamic) {
+        estimate::add_dynamic_estimate(request.model, result, companion_run);
+        return;
+    }
+    estimate::add_estimate(request.model, result, companion_run,
+                           [](const nlohmann::json& modes, const nlohmann::json& companion) {
+                               return match_modes(mode_stations(modes), mode_stations(companion),
+                                                  kMatchMac);
+                           });
 }
 
 nlohmann::json estimate_off() { return estimate::estimate_off(); }

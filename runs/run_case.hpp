@@ -24,8 +24,9 @@ struct RunRequest {
 // refuses (e.g. a rigid section in the displacement formulation).
 nlohmann::json run_case(const RunRequest& request);
 
-// Adds the result's error estimate (docs/error-estimates.md, estimates/estimate.hpp): companion
-// runs of the same request, modes paired across meshes by shape.
+// Adds the result's error estimate (docs/error-estimates.md): companion runs of the same request;
+// statics and modes by estimates/estimate.hpp (modes paired across meshes by shape), dynamics by
+// estimates/history_estimate.hpp (which may set the status `inaccurate`).
 void add_run_estimate(const RunRequest& request, nlohmann::json& result);
 // The `estimate` of a run with the estimate switched off.
 nlohmann::json estimate_off();

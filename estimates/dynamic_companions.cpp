@@ -1,0 +1,50 @@
+#include "estimates/dynamic_companions.hpp"
+
+#include <cmath>
+
+#include "cases/loader/limits.hpp"
+
+namespace rotbeam::estimate {
+
+namespace {
+
+bool uses_ida(const Model& model) {
+    return model.discretization.formulation == Formulation::mixed &&
+           model.analysis.dynamics.integrator == Integrator::ida;
+}
+
+}  // namespace
+
+DynamicPlan plan_dynamic_companions(const Model& model) {
+    DynamicPlan plan;
+    plan.space = plan_space_companions(model);
+    const DynamicSettings& d = model.analysis.dynamics;
+    Model companion = model;
+    DynamicSettings& c = companion.analysis.dynamics;
+    if (c.output_interval <= 0.0) c.output_interval = d.time_step;
+    if (uses_ida(model)) {
+        // BDF with a local error test per step: the global error is proportional to the tolerance
+        // (Hairer, Nørsett & Wanner, tolerance proportionality), so the ratio 4 gives the same
+        // Richardson factor 1/(1 − 1/4) as halving a second-order step.
+        plan.time_method = "tolerance/4";
+        plan.time_order = 1.0;
+        plan.time_ratio = 4.0;
+        c.relative_tolerance = d.relative_tolerance / plan.time_ratio;
+        c.absolute_tolerance = d.absolute_tolerance / plan.time_ratio;
+        plan.time.push_back({"tolerance/4", std::move(companion)});
+        return plan;
+    }
+    plan.time_method = "dt/2";
+    plan.time_order = 2.0;
+    plan.time_ratio = 2.0;
+    c.time_step = d.time_step / plan.time_ratio;
+    if (d.end_time / c.time_step > cases::kMaxTimeSteps) {
+        plan.time_refusal = "the dt/2 companion would exceed the largest number of time steps, " +
+                            std::to_string(static_cast<long>(cases::kMaxTimeSteps));
+        return plan;
+    }
+    plan.time.push_back({"dt/2", std::move(companion)});
+    return plan;
+}
+
+}  // namespace rotbeam::estimate
