@@ -150,7 +150,9 @@ std::optional<json> quantity_entry(const Context& cx, std::size_t i, const std::
     const std::optional<QuantityEstimate> s = space_estimate(cx, i, name, point, q);
     const std::optional<double> dt = time_difference(cx, i, name, point, q);
     if (!s || !dt) return std::nullopt;
-    QuantityEstimate t = time_verdict;
+    QuantityEstimate t;
+    t.reliable = time_verdict.reliable;
+    if (!t.reliable) t.reason = "the phase criterion fails (estimate.time_reason)";
     t.error = cx.time_factor * *dt;
     const double error = s->error + t.error;
     h.max_space = std::max(h.max_space, s->error);

@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "estimate_columns.hpp"
+
 namespace rotbeam {
 
 bool has_time_history(const nlohmann::json& result) {
@@ -14,6 +16,7 @@ std::string history_csv(const nlohmann::json& result) {
     std::ostringstream os;
     os << std::setprecision(17);
     const nlohmann::json& steps = result["steps"];
+    const bool estimate = has_estimate_columns(result);
     os << "time";
     if (!steps.empty()) {
         for (const auto& [name, point] : steps[0]["points"].items()) {
@@ -30,6 +33,7 @@ std::string history_csv(const nlohmann::json& result) {
             }
         }
         if (steps[0].contains("energy")) os << ",kinetic_energy,strain_energy";
+        if (estimate) write_estimate_header(result, os);
     }
     os << "\n";
     for (const nlohmann::json& step : steps) {
@@ -49,6 +53,7 @@ std::string history_csv(const nlohmann::json& result) {
             os << "," << step["energy"]["kinetic"].get<double>() << ","
                << step["energy"]["strain"].get<double>();
         }
+        if (estimate) write_estimate_row(result, step, os);
         os << "\n";
     }
     return os.str();

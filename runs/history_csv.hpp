@@ -1,7 +1,9 @@
 // A dynamic run's CSV time history (docs/architecture.md, The program and its results), built from
 // the result JSON's `steps`: one row per output time; per named point the displacement, the
 // principal rotation vector and the unwrapped rotation angle; then, when the steps carry them,
-// each support's reaction (force and moment on the beam) and the kinetic and strain energy.
+// each support's reaction (force and moment on the beam) and the kinetic and strain energy; last,
+// when the run was estimated, the estimate columns in space, in time and combined
+// (estimate_columns.hpp).
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -17,6 +17,7 @@
 #include "runs/continuum_json.hpp"
 #include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
+#include "runs/steps_csv.hpp"
 #include "study_commands.hpp"
 
 namespace rotbeam::cli {
@@ -108,6 +109,26 @@ void print_point_estimate(const nlohmann::json& e, const std::string& method, st
        << " rad (" << method << " estimate)\n";
 }
 
+// A dynamic estimate's maxima over the history, relative to each history's amplitude, the phase
+// criterion and the cost ratios.
+void print_history_estimate(const nlohmann::json& e, std::ostream& os) {
+    os << std::setprecision(2);
+    for (const auto& [name, point] : e["history"].items()) {
+        for (const auto& [quantity, h] : point.items()) {
+            if (!h.contains("relative")) continue;
+            os << "  " << name << " " << quantity << " history: max error "
+               << h["relative"].get<double>() << " of its amplitude "
+               << h["amplitude"].get<double>() << " (space " << h["relative_space"].get<double>()
+               << ", time " << h["relative_time"].get<double>() << ")\n";
+        }
+    }
+    os << "  phase error " << e["phase_error_rad"].get<double>() << " rad ("
+       << e["phase_of"].get<std::string>() << "): time estimate "
+       << (e["time_reliable"].get<bool>() ? "reliable" : "not reliable") << "; companions cost "
+       << e["cost"]["wall_ratio"].get<double>() << "x the run's wall time, "
+       << e["cost"]["work_ratio"].get<double>() << "x its Newton work\n";
+}
+
 // The estimate's method, companions and cost, or why there is none.
 void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
     os << "estimate: " << e["status"].get<std::string>();
@@ -122,6 +143,7 @@ void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
     }
     if (e.contains("reason")) os << " — " << e["reason"].get<std::string>();
     os << "\n";
+    if (e.contains("history")) print_history_estimate(e, os);
 }
 
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
@@ -162,14 +184,15 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
 }
 
 void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
-    // A dynamic run also writes its time history as CSV next to each JSON file.
+    // A dynamic run also writes its time history as CSV next to each JSON file, a static run its
+    // load steps.
     const bool history = has_time_history(r);
+    const bool load_steps = has_load_steps(r);
     auto write = [&](const fs::path& json_path) {
         write_file_atomically(json_path.string(), r.dump(2) + "\n");
-        if (history) {
-            write_file_atomically(fs::path(json_path).replace_extension(".csv").string(),
-                                  history_csv(r));
-        }
+        const std::string csv = fs::path(json_path).replace_extension(".csv").string();
+        if (history) write_file_atomically(csv, history_csv(r));
+        if (load_steps) write_file_atomically(csv, steps_csv(r));
     };
     if (const auto file = a.value("json")) write(*file);
     if (const auto dir = a.value("out")) {
