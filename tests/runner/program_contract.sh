@@ -232,8 +232,10 @@ PY
 "$rotbeam" run joined-beam-follower --rotation wiener-milenkovic --set analysis.end_time=0.01 \
     --json "$work/dyn.json" >/dev/null 2>&1 || fail "dynamic run exited non-zero"
 [ -s "$work/dyn.csv" ] || fail "dynamic run wrote no CSV history"
-head -1 "$work/dyn.csv" | grep -q "^time,.*joint_uz.*root1_Fz.*kinetic_energy,strain_energy$" ||
-    fail "CSV header lacks the joint, reaction or energy columns: $(head -1 "$work/dyn.csv")"
+# The estimate (on by default) adds its columns last: in space (p+1), in time (dt/2) and combined.
+head -1 "$work/dyn.csv" |
+    grep -q "^time,.*joint_uz.*root1_Fz.*kinetic_energy,strain_energy,joint_u_err_p+1\[length\],joint_u_err_dt/2\[length\],joint_u_err\[length\],.*root2_angle_err\[rad\]$" ||
+    fail "CSV header lacks the joint, reaction, energy or estimate columns: $(head -1 "$work/dyn.csv")"
 [ "$(wc -l <"$work/dyn.csv")" -eq 12 ] || fail "CSV should hold t = 0 … 0.01 s at 1 ms (11 rows)"
 python3 - "$work/dyn.json" <<'PY' || fail "dynamic run JSON does not follow the contract"
 import json, math, sys
