@@ -173,6 +173,7 @@ std::optional<json> quantity_entry(const Context& cx, std::size_t i, const std::
 json step_entry(const Context& cx, std::size_t i, const json& step,
                 const QuantityEstimate& time_verdict, Histories& h, Tally& tally) {
     json out = json::object();
+    int unreliable = 0;
     for (const auto& [name, point] : step["points"].items()) {
         for (int q = 0; q < 2; ++q) {
             std::optional<json> e =
@@ -183,11 +184,12 @@ json step_entry(const Context& cx, std::size_t i, const json& step,
                         {"reason", "a companion has no state at t = " +
                                        std::to_string(step["time"].get<double>())}};
             }
-            ++tally.estimated;
-            if (!(*e)["reliable"].get<bool>()) ++tally.unreliable;
+            if (!(*e)["reliable"].get<bool>()) ++unreliable;
             out[name][kQuantities[q]] = std::move(*e);
         }
     }
+    tally.estimated += 2 * static_cast<int>(out.size());
+    tally.unreliable += unreliable;
     return out;
 }
 
@@ -245,6 +247,17 @@ Ran run_companion(const Companion& c, const CompanionRun& run, const json& steps
     return {c.label, std::move(r), std::move(index)};
 }
 
+// The companions' wall time, CPU time and work against the run's.
+json cost_json(const json& result, double wall_seconds, double cpu_seconds, double companion_work) {
+    const double run_seconds = result.value("wall_seconds", 0.0);
+    const double run_work = work(result);
+    return {{"run_wall_seconds", run_seconds},
+            {"wall_ratio", run_seconds > 0.0 ? wall_seconds / run_seconds : 0.0},
+            {"cpu_seconds", cpu_seconds},
+            {"work_ratio", run_work > 0.0 ? companion_work / run_work : 0.0},
+            {"work", "Newton iterations x unknowns of the companions over the run's"}};
+}
+
 json header(const DynamicPlan& plan) {
     json order = plan.space.theoretical_order;
     order["time"] = plan.time_order;
@@ -254,6 +267,16 @@ json header(const DynamicPlan& plan) {
             {"theoretical_order", order},
             {"companions", json::array()},
             {"wall_seconds", 0.0}};
+}
+
+// The largest distance between two named points (1 when they coincide): the displacement floor's
+// scale, as for the statics.
+double length_scale(const Model& model) {
+    double l = 0.0;
+    for (const Point& a : model.points) {
+        for (const Point& b : model.points) l = std::max(l, (a.position - b.position).norm());
+    }
+    return l > 0.0 ? l : 1.0;
 }
 
 // The largest accumulated phase error among the responding histories, and whose.
@@ -326,12 +349,7 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
     }
     const std::clock_t cpu = std::clock();
     Context cx{plan, {}, {}};
-    double length = 0.0;
-    for (const Point& a : model.points) {
-        for (const Point& b : model.points)
-            length = std::max(length, (a.position - b.position).norm());
-    }
-    cx.floor_displacement = kRoundOffFloor * (length > 0.0 ? length : 1.0);
+    cx.floor_displacement = kRoundOffFloor * length_scale(model);
     cx.time_factor = 1.0 / (1.0 - std::pow(plan.time_ratio, -plan.time_order));
     const json& steps = result["steps"];
     const double dt = model.analysis.dynamics.time_step;
@@ -347,14 +365,8 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
     for (std::size_t i = 0; i < steps.size(); ++i) {
         result["steps"][i]["estimate"] = step_entry(cx, i, steps[i], verdict, h, tally);
     }
-    const double run_seconds = result.value("wall_seconds", 0.0);
-    const double run_work = work(result);
-    e["cost"] = {
-        {"run_wall_seconds", run_seconds},
-        {"wall_ratio", run_seconds > 0.0 ? e["wall_seconds"].get<double>() / run_seconds : 0.0},
-        {"cpu_seconds", static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC},
-        {"work_ratio", run_work > 0.0 ? companion_work / run_work : 0.0},
-        {"work", "Newton iterations x unknowns of the companions over the run's"}};
+    e["cost"] = cost_json(result, e["wall_seconds"].get<double>(),
+                          static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC, companion_work);
     e["history"] = history_json(h);
     e["phase_error_rad"] = phase.first;
     e["phase_of"] = phase.second;
