@@ -86,12 +86,18 @@ struct Level {
     double dt = 0.0;
     double true_u = 0.0, true_R = 0.0;          // exact errors (max over times and points)
     double estimate_u = 0.0, estimate_R = 0.0;  // the estimate's max_error, same maxima
+    double space_u = 0.0, time_u = 0.0;         // the estimate's parts (displacement)
     bool reliable = true;                       // every quantity's estimate reliable
     std::string status;
 };
 
+// `dt` is the time step, or for IDA the tolerance (rtol = atol), the step then being the spec's.
 Level estimated_run(cli::MotionRunSpec spec, double dt) {
-    spec.dt = dt;
+    if (spec.integrator == Integrator::ida) {
+        spec.tolerance = dt;
+    } else {
+        spec.dt = dt;
+    }
     const cli::MotionRunResult r = cli::run_manufactured_motion(spec);
     BOOST_TEST_REQUIRE(r.ok(), spec.label() << " dt " << dt << ": " << r.message);
     json result = result_json(r, spec);
@@ -114,12 +120,16 @@ Level estimated_run(cli::MotionRunSpec spec, double dt) {
             std::max(l.estimate_u, e["history"][p]["displacement"]["max_error"].get<double>());
         l.estimate_R =
             std::max(l.estimate_R, e["history"][p]["rotation"]["max_error"].get<double>());
+        l.space_u = std::max(l.space_u, e["history"][p]["displacement"]["max_space"].get<double>());
+        l.time_u = std::max(l.time_u, e["history"][p]["displacement"]["max_time"].get<double>());
     }
     l.reliable = e["unreliable"].get<int>() == 0;
     l.status = result["status"].get<std::string>();
     return l;
 }
 
+// Halving steps (order 2 in Δt), or tolerances divided by 4 (order 1 in the tolerance): the
+// same error ratio 4 per level when asymptotic.
 bool asymptotic(double e0, double e1, double e2) {
     const double q0 = std::log2(e0 / e1), q1 = std::log2(e1 / e2);
     return e1 < e0 && e2 < e1 && std::abs(q0 - 2.0) <= 0.5 && std::abs(q1 - 2.0) <= 0.5;
@@ -135,9 +145,10 @@ int check_sequence(const cli::MotionRunSpec& spec, const std::vector<double>& dt
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const Level& l = levels[i];
         std::cout << "  dt " << l.dt << "  u: true " << l.true_u << " est " << l.estimate_u
-                  << " eff " << l.estimate_u / l.true_u << "  R: true " << l.true_R << " est "
-                  << l.estimate_R << " eff " << l.estimate_R / l.true_R
-                  << (l.reliable ? "" : "  (not reliable)") << "  " << l.status << "\n";
+                  << " eff " << l.estimate_u / l.true_u << " (space " << l.space_u << ", time "
+                  << l.time_u << ")  R: true " << l.true_R << " est " << l.estimate_R << " eff "
+                  << l.estimate_R / l.true_R << (l.reliable ? "" : "  (not reliable)") << "  "
+                  << l.status << "\n";
         if (l.reliable) {
             BOOST_TEST(l.true_u <= 3.0 * l.estimate_u, spec.label() << " dt " << l.dt);
             BOOST_TEST(l.true_R <= 3.0 * l.estimate_R, spec.label() << " dt " << l.dt);
@@ -192,6 +203,20 @@ BOOST_AUTO_TEST_CASE(effectivity_in_time_mixed_manufactured) {
     s.motion = cli::motion_within_reach(Formulation::mixed, s.rotation);
     const int checked = check_sequence(s, {0.1, 0.05, 0.025, 0.0125});
     BOOST_TEST_MESSAGE("mixed asymptotic points: " << checked);
+}
+
+// Mixed formulation, IDA (BDF ≤ 2) with the tolerance/4 companion: a sequence of tolerances
+// (each a quarter of the previous, the ratio 4 of the asymptotic check), 8 elements per member.
+BOOST_AUTO_TEST_CASE(effectivity_in_tolerance_mixed_ida_manufactured) {
+    cli::MotionRunSpec s;
+    s.formulation = Formulation::mixed;
+    s.rotation = param::id_of<param::Quaternion>();
+    s.integrator = Integrator::ida;
+    s.elements = 8;
+    s.dt = 0.05;
+    s.motion = cli::motion_within_reach(Formulation::mixed, s.rotation);
+    const int checked = check_sequence(s, {1.6e-3, 4e-4, 1e-4, 2.5e-5});
+    BOOST_TEST_MESSAGE("IDA asymptotic points: " << checked);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
