@@ -49,6 +49,7 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
     deck.root_position = {in.number("GlbPos(1)"), in.number("GlbPos(2)"), in.number("GlbPos(3)")};
     in.comment("(direction cosine matrix)");
     in.comment("(direction cosine matrix)");
+    deck.dcm_line = in.line() + 1;
     for (auto& row : deck.root_dcm) {
         const auto r = in.row("GlbDCM", 3);
         row = {r[0], r[1], r[2]};

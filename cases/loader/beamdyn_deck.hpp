@@ -51,7 +51,7 @@ struct BeamDynDeck {
     std::vector<BeamDynStation> stations;
     // The files and lines where the values came from, for messages about them.
     std::string driver_name, primary_name, blade_name;
-    int stations_line = 0, key_points_line = 0, order_line = 0;
+    int dcm_line = 0, stations_line = 0, key_points_line = 0, order_line = 0;
 };
 
 // Reads the driver file at `driver_path` and the files it names (relative to the file naming

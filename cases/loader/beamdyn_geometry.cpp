@@ -48,7 +48,8 @@ BeamDynMemberLine::BeamDynMemberLine(const std::vector<BeamDynKeyPoint>& key_poi
     const Eigen::PartialPivLU<MatX> lu(normal);
     const MatX c = lu.solve(rhs);
     if (!c.allFinite()) {
-        throw InputError("the least-squares fit of the key points is singular");
+        throw InputError(
+            "the least-squares fit of the key points is singular (key points at the same z)");
     }
     for (int i = 0; i < q; ++i) {
         position_values_.emplace_back(c(i, 0), c(i, 1), c(i, 2));
