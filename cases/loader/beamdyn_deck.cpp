@@ -36,9 +36,7 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
     in.comment("(title)");
     in.comment("SIMULATION CONTROL");
     const bool dynamic = in.flag("DynamicSolve");
-    refuse_if(dynamic, in, "DynamicSolve",
-              "a dynamic solve is not imported (static decks only; the dynamic decks need a "
-              "prescribed rotating root, which rotbeam does not model)");
+    const int dynamic_line = in.line();
     // Used only by a dynamic solve; a static one repeats the same solve at each time.
     in.number("t_initial");
     in.number("t_final");
@@ -55,13 +53,36 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
         row = {r[0], r[1], r[2]};
     }
     const bool root_frame = in.flag("GlbRotBladeT0");
-    refuse_if(!root_frame, in, "GlbRotBladeT0",
-              "False (calculations in the global frame instead of the initial blade root's) is not "
-              "modelled");
+    const int root_frame_line = in.line();
     in.comment("ROOT VELOCITY PARAMETER");
-    for (const char* key : {"RootVel(4)", "RootVel(5)", "RootVel(6)"}) {
-        refuse_if(in.number(key) != 0.0, in, key,
-                  "a rotating root (prescribed angular velocity) is not modelled");
+    std::array<double, 3> root_velocity{};
+    std::array<int, 3> root_velocity_line{};
+    for (size_t i = 0; i < 3; ++i) {
+        root_velocity[i] = in.number("RootVel(" + std::to_string(i + 4) + ")");
+        root_velocity_line[i] = in.line();
+    }
+    auto refuse_at = [&](int line, const std::string& key, const std::string& why) {
+        throw InputError(in.name() + ":" + std::to_string(line) + ": " + key + ": " + why);
+    };
+    // A dynamic deck is refused at its DynamicSolve line, naming what else it would need.
+    if (dynamic) {
+        const bool rotating = root_velocity != std::array<double, 3>{};
+        refuse_at(dynamic_line, "DynamicSolve",
+                  std::string("a dynamic solve is not imported (static decks only)") +
+                      (rotating ? "; this deck also drives its root at a constant angular "
+                                  "velocity (RootVel), which rotbeam does not model"
+                                : ""));
+    }
+    if (!root_frame) {
+        refuse_at(root_frame_line, "GlbRotBladeT0",
+                  "False (calculations in the global frame instead of the initial blade root's) "
+                  "is not modelled");
+    }
+    for (size_t i = 0; i < 3; ++i) {
+        if (root_velocity[i] != 0.0) {
+            refuse_at(root_velocity_line[i], "RootVel(" + std::to_string(i + 4) + ")",
+                      "a rotating root (prescribed angular velocity) is not modelled");
+        }
     }
     in.comment("APPLIED FORCE");
     for (int i = 0; i < 6; ++i) {
@@ -93,8 +114,8 @@ std::string parse_primary(DeckLines& in, BeamDynDeck& deck) {
     const int quadrature = in.integer("quadrature", 1, 2);
     refuse_if(quadrature == 2, in, "quadrature",
               "trapezoidal quadrature (2) is not modelled: rotbeam integrates with Gauss points");
-    in.integer("refine", 1, 1000000);  // used only with trapezoidal quadrature
     double unused = 0.0;
+    in.number_or_default("refine", unused);  // used only with trapezoidal quadrature
     // Solver controls: rotbeam's own convergence criteria apply (docs/beamdyn-import.md).
     for (const char* key : {"n_fact", "DTBeam", "load_retries", "NRMax", "stop_tol"}) {
         in.number_or_default(key, unused);
