@@ -24,13 +24,14 @@ BeamDynMemberLine::BeamDynMemberLine(const std::vector<BeamDynKeyPoint>& key_poi
     nodes_ = gauss_lobatto_legendre(q).points;
     const LagrangeBasis basis(nodes_);
     const BeamDynKeyPoint& a = key_points[static_cast<size_t>(first)];
-    const BeamDynKeyPoint& b = key_points[static_cast<size_t>(first + count - 1)];
+    const BeamDynKeyPoint& b =
+        key_points[static_cast<size_t>(first) + static_cast<size_t>(count) - 1];
     // Shp(i, k): fit function i at key point k, in the z-parameter.
     MatX shp(q, count);
     MatX data(count, 4);
     VecX values(q);
     for (int k = 0; k < count; ++k) {
-        const BeamDynKeyPoint& p = key_points[static_cast<size_t>(first + k)];
+        const BeamDynKeyPoint& p = key_points[static_cast<size_t>(first) + static_cast<size_t>(k)];
         const double xi = 2.0 * (p.z - a.z) / (b.z - a.z) - 1.0;
         basis.values(xi, values);
         shp.col(k) = values;

@@ -149,7 +149,8 @@ MemberText Importer::member(size_t m, int first, const BeamDynMemberLine& line, 
                             double eta1) const {
     const int count = deck_.member_key_points[m];
     const BeamDynKeyPoint& a = deck_.key_points[static_cast<size_t>(first)];
-    const BeamDynKeyPoint& b = deck_.key_points[static_cast<size_t>(first + count - 1)];
+    const BeamDynKeyPoint& b =
+        deck_.key_points[static_cast<size_t>(first) + static_cast<size_t>(count) - 1];
     const Vec3 x0(a.x, a.y, a.z);
     const Vec3 x1(b.x, b.y, b.z);
     const double chord = (x1 - x0).norm();
@@ -256,7 +257,8 @@ std::string Importer::text(const std::string& name) {
     for (size_t m = 0; m < deck_.member_key_points.size(); ++m) {
         const int count = deck_.member_key_points[m];
         const BeamDynKeyPoint& a = deck_.key_points[static_cast<size_t>(first)];
-        const BeamDynKeyPoint& b = deck_.key_points[static_cast<size_t>(first + count - 1)];
+        const BeamDynKeyPoint& b =
+            deck_.key_points[static_cast<size_t>(first) + static_cast<size_t>(count) - 1];
         if (!(b.z > a.z))
             fail_member(m, "kp_zr", "the last key point must lie above the first in z");
         try {

@@ -153,6 +153,22 @@ BOOST_AUTO_TEST_CASE(curved_line_reproduces_the_beamdyn_fit) {
     BOOST_TEST(worst < 1e-12 * fit.length());
 }
 
+// `rotbeam import beamdyn` writes the text that `rotbeam run DRIVER.inp` loads: the written case,
+// loaded as a file of its own, describes the same model.
+BOOST_AUTO_TEST_CASE(imported_text_is_the_case_that_runs) {
+    for (const char* deck : kStaticDecks) {
+        const std::string text = cases::import_beamdyn(driver(deck));
+        const std::filesystem::path file =
+            std::filesystem::temp_directory_path() / (std::string(deck) + "-imported.yaml");
+        std::ofstream(file) << text;
+        BOOST_TEST_CONTEXT(deck) {
+            BOOST_TEST(describe_model(load_case(file.string())) ==
+                       describe_model(load_case(driver(deck))));
+        }
+        std::filesystem::remove(file);
+    }
+}
+
 // The roll-up deck: a pure end moment M = 12.5664 N·m on EI = 100 N·m², L = 10 m bends the beam
 // into a circular arc of radius EI/M (exact for any EA and GA: no axial or shear force), about
 // −x, so the tip moves to y = ρ(1 − cos θ), z = ρ sin θ − L with θ = ML/EI.
