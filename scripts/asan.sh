@@ -62,7 +62,7 @@ fi
 step "ctest"
 
 expect 0 -- "$rotbeam" --help
-for c in bench check list reference run study suite verify; do
+for c in bench check import list reference run study suite verify; do
   expect 0 -- "$rotbeam" "$c" --help
 done
 step "every --help"

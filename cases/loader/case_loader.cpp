@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "cases/loader/beamdyn_import.hpp"
 #include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "combinations/registry.hpp"
@@ -395,6 +396,10 @@ void read_published_references(const std::string& file, const std::vector<std::s
 
 Model load_case(const std::string& path, const std::vector<std::string>& overrides,
                 CaseParts parts) {
+    // A BeamDyn driver file is imported into the case text it stands for (docs/beamdyn-import.md).
+    if (cases::is_beamdyn_driver_path(path)) {
+        return load_case_text(cases::import_beamdyn(path), path + " (imported)", overrides);
+    }
     const std::string text = read_text_file(path, "case file");
     const std::filesystem::path published = published_references_path(path);
     std::vector<std::string> case_overrides;

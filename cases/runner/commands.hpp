@@ -27,6 +27,7 @@ std::string published_references_markdown(const std::vector<std::string>& cases)
 std::vector<std::string> reference_overrides(const ReferenceValue& ref);
 int command_reference(const Args& args);
 int command_study(const Args& args);
-int command_bench(const Args& args);  // bench_command.cpp
+int command_bench(const Args& args);   // bench_command.cpp
+int command_import(const Args& args);  // import_command.cpp
 
 }  // namespace rotbeam::cli

@@ -25,6 +25,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
     static const std::map<std::string, std::pair<Command, const char*>> table = {
         {"list", {command_list, "list cases, parameterizations and formulations"}},
         {"check", {command_check, "validate a case file and describe the model"}},
+        {"import", {command_import, "translate a BeamDyn input deck into a case file"}},
         {"run", {command_run, "run a case with one parameterization and formulation"}},
         {"suite", {command_suite, "run the benchmark suite and write the report"}},
         {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},

@@ -83,6 +83,7 @@ const std::map<std::string, CommandSpec>& specs() {
            {"studies", "", ""},
            {"no-studies", "", ""}}}},
         {"verify", {"verify", "[CASE ...]", 0, -1, "", {{"json", "FILE", ""}}}},
+        {"import", {"import", "beamdyn DRIVER.inp", 2, 2, "", {{"out", "CASE.yaml", ""}}}},
         {"bench",
          {"bench",
           "",
