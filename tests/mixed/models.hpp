@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/model.hpp"
+#include "tests/displacement/models.hpp"
 
 namespace rotbeam::test {
 
@@ -27,9 +28,9 @@ inline Member member(const std::string& name, int start, int end, const Section&
     return m;
 }
 
-// §1: L = 12, EI = 2.5e6, tip moment −λ π EI / L e_y at load factor λ.
-inline constexpr double kRollupLength = 12.0;
-inline constexpr double kRollupEI = 2.5e6;
+// §1: L = 12, EI = 2.5e6 (kRollupL, kRollupEI, rollup_exact_tip: tests/displacement/models.hpp),
+// tip moment −λ π EI / L e_y at load factor λ.
+inline constexpr double kRollupLength = kRollupL;
 
 inline Model rollup_model(int elements) {
     Model m;
@@ -47,13 +48,6 @@ inline Model rollup_model(int elements) {
     load.moment = Vec3(0, -kPi * kRollupEI / kRollupLength, 0);
     m.point_loads = {load};
     return m;
-}
-
-// Exact tip displacement of the roll-up at λ (docs/benchmarks.md §1).
-inline Vec3 rollup_exact_tip(double lambda) {
-    const double rho = kRollupLength / (lambda * kPi);
-    return Vec3(rho * std::sin(lambda * kPi) - kRollupLength, 0.0,
-                rho * (1.0 - std::cos(lambda * kPi)));
 }
 
 // §2: the 45° bend, R = 100, E = 1e7, ν = 0, J = 0.140577, shear factor 5/6; dead tip force
