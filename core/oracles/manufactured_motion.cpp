@@ -135,10 +135,6 @@ void ManufacturedMotion::loads(double s, double t, Vec3& force, Vec3& moment) co
     const Vec3 k1 = f.alpha.s2 * kE1 + f.beta.s2 * Ae3 + f.beta.s1 * f.alpha.s1 * kE1.cross(Ae3);
     const Vec3 x1 = kE1 + f.u.s1;
     const SpatialResultants r = spatial_resultants(R, k, k1, x1, f.u.s2, stiffness);
-    const Vec3& n = r.n;
-    const Vec3& m = r.m;
-    const Vec3& n1 = r.n1;
-    const Vec3& m1 = r.m1;
     // Inertial part: [P; H] = M*[V; Ω], V = Rᵀu̇, Ω = Rᵀω; V̇ = Rᵀü − Ω × V, Ω̇ = Rᵀω̇ (the
     // Ω × Ω term vanishes); ṗ = ω × p + R Ṗ, ḣ = ω × h + R Ḣ.
     const Vec3 V = Rt * st.u_dot, W = Rt * st.omega;
@@ -151,8 +147,8 @@ void ManufacturedMotion::loads(double s, double t, Vec3& force, Vec3& moment) co
     const Vec3 h = R * PH.tail<3>();
     const Vec3 p1 = st.omega.cross(p) + R * PH1.head<3>();
     const Vec3 h1 = st.omega.cross(h) + R * PH1.tail<3>();
-    force = p1 - n1;
-    moment = h1 + st.u_dot.cross(p) - m1 - x1.cross(n);
+    force = p1 - r.n1;
+    moment = h1 + st.u_dot.cross(p) - r.m1 - x1.cross(r.n);
 }
 
 double ManufacturedMotion::max_angle(double t) const {

@@ -7,6 +7,7 @@
 
 #include "deformed.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "tests/harness/jacobian_check.hpp"
 
 using namespace rotbeam;
 using Statics = form::DisplacementStatics<param::Quaternion>;
@@ -14,16 +15,6 @@ using Statics = form::DisplacementStatics<param::Quaternion>;
 namespace {
 
 constexpr int kBase = 0;  // checkpoint slot holding the deformed state
-
-template <class S>
-VecX residual_at(S& s, const VecX& dx) {
-    s.restore_state(kBase);
-    s.retract(dx);
-    VecX r;
-    s.evaluate(r, nullptr);
-    s.restore_state(kBase);
-    return r;
-}
 
 // Deformed problem at load factor 1 with its state saved in kBase.
 template <class S>
@@ -51,7 +42,7 @@ BOOST_AUTO_TEST_CASE(linearization_remainder_is_second_order) {
     double previous = 0.0;
     for (int k = 0; k < 5; ++k) {
         const double h = 1e-2 / std::pow(2.0, k);
-        const double e = (residual_at(s, h * d) - r0 - h * Jd).norm();
+        const double e = (test::residual_after_retraction(s, kBase, h * d) - r0 - h * Jd).norm();
         if (k > 0) {
             const double ratio = previous / e;
             std::cout << "h = " << h << ": remainder " << e << ", ratio " << ratio << '\n';

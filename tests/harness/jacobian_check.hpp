@@ -57,6 +57,19 @@ inline JacobianError compare_with_central_differences(const MatX& J,
     return e;
 }
 
+// The residual of a formulation that keeps its state in checkpoint slots (the displacement
+// statics and dynamics) at the slot's state ⊕ dx, through its retraction; the state is back at
+// the slot's afterwards.
+template <class S>
+VecX residual_after_retraction(S& s, int slot, const VecX& dx) {
+    s.restore_state(slot);
+    s.retract(dx);
+    VecX r;
+    s.evaluate(r, nullptr);
+    s.restore_state(slot);
+    return r;
+}
+
 // The mixed formulation's steps: max(1, |x_k|) (core/finite_difference.hpp).
 inline VecX additive_scale(const VecX& x) { return x.cwiseAbs().cwiseMax(1.0); }
 

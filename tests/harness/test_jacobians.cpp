@@ -56,25 +56,14 @@ std::vector<DisplacementState> displacement_states(const comb::Combination& c) {
     return states;
 }
 
-// The displacement statics and dynamics keep their state in checkpoint slots: the residual at
-// x ⊕ δ, back to the slot's state afterwards.
-template <class S>
-VecX residual_after(S& s, int slot, const VecX& dx) {
-    s.restore_state(slot);
-    s.retract(dx);
-    VecX r;
-    s.evaluate(r, nullptr);
-    s.restore_state(slot);
-    return r;
-}
-
 template <class S>
 JacobianError displacement_jacobian_error(S& s, int slot) {
     VecX r;
     SparseMatrix J;
     s.evaluate(r, &J);
     return compare_with_central_differences(
-        MatX(J), [&](const VecX& d) { return residual_after(s, slot, d); }, s.increment_scale());
+        MatX(J), [&](const VecX& d) { return residual_after_retraction(s, slot, d); },
+        s.increment_scale());
 }
 
 // Unknowns scaled by increment_scale (displacements by L, rotations by 1), so one step

@@ -18,6 +18,7 @@
 #include "tests/displacement/models.hpp"
 #include "tests/harness/coverage.hpp"
 #include "tests/harness/harness.hpp"
+#include "tests/harness/jacobian_check.hpp"
 
 using namespace rotbeam;
 
@@ -38,16 +39,6 @@ Vec3 nodal_rotation_vector(const Vec3& x0, double span) {
     const double t = x0[0] / 10.0;
     const Vec3 axis = Vec3(0.6 * std::cos(3.0 * t), 0.6 * std::sin(3.0 * t), 0.8).normalized();
     return span * t * axis;
-}
-
-template <class P>
-VecX residual_after(form::DisplacementStatics<P>& problem, const VecX& dx) {
-    problem.save_state(NonlinearSystem::kStepSlot);
-    problem.retract(dx);
-    VecX r;
-    problem.evaluate(r, nullptr);
-    problem.restore_state(NonlinearSystem::kStepSlot);
-    return r;
 }
 
 template <class P>
@@ -108,7 +99,8 @@ double violation_at_current_state(form::DisplacementStatics<P>& problem) {
         superpose.segment<3>(n.dof) = Q * x - x;
         superpose.segment<3>(n.dof + 3) = so3::log_map(Q);  // spatial: R_j → Q R_j
     }
-    const VecX rq = residual_after(problem, superpose);
+    problem.save_state(NonlinearSystem::kStepSlot);
+    const VecX rq = test::residual_after_retraction(problem, NonlinearSystem::kStepSlot, superpose);
     double worst = 0.0;
     for (Eigen::Index k = 0; k < r.size(); k += 3) {
         worst = std::max(worst, (rq.segment<3>(k) - Q * r.segment<3>(k)).cwiseAbs().maxCoeff());

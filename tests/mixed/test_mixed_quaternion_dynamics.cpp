@@ -14,6 +14,7 @@
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/deformed_state.hpp"
 #include "tests/mixed/dynamic_models.hpp"
+#include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
 using Q = param::Quaternion;
@@ -117,52 +118,24 @@ BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
     dyn.set_translational_momenta(x0, Vec3(0.3, -0.2, 0.5));
     const VecX xd0 = VecX::Zero(dyn.size());
     const double t0 = 0.4;
-    VecX r;
-    dyn.evaluate(t0, x0, xd0, r, nullptr, nullptr);
-    const double r0 = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    BOOST_TEST(r0 > 0.1);
-
-    VecX xn = x0, xdn = xd0;
-    const NewtonOutcome newton =
-        consistent_initial_conditions(dyn, t0, xn, xdn, time_step_newton_settings(), 1e-3);
-    BOOST_REQUIRE(newton.converged);
-
-    VecX xi = x0, xdi = xd0;
-    DaeSettings s;
-    s.start_time = t0;
-    s.end_time = t0 + 1e-3;
-    s.time_step = 1e-3;
-    s.relative_tolerance = 1e-10;
-    s.absolute_tolerance = 1e-10;
-    VecX x_ic, xd_ic;
-    const DaeOutcome out =
-        integrate_ida(dyn, xi, xdi, s, [&](double t, const VecX& x, const VecX& xd, int) {
-            if (t == t0) {
-                x_ic = x;
-                xd_ic = xd;
-            }
-        });
-    BOOST_REQUIRE(out.status == SolveStatus::converged);
-    BOOST_REQUIRE(x_ic.size() == dyn.size());
-    dyn.evaluate(t0, x_ic, xd_ic, r, nullptr, nullptr);
-    const double r_ic = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    const double dx = ((x_ic - xn).array() / dyn.state_scale().array()).abs().maxCoeff();
-    const double dxd = (xd_ic - xdn).cwiseAbs().maxCoeff() / xdn.cwiseAbs().maxCoeff();
+    const test::TwoInitialConditions ic = test::consistent_twice(dyn, t0, x0, xd0);
+    BOOST_TEST(ic.r0 > 0.1);
     double kept = 0.0, tangent = 0.0;
     for (int e = 0; e < dyn.element_count(); ++e) {
-        const int c = dyn.element_column(e) + dyn.numbering().c();
-        kept = std::max(kept, (x_ic.segment<4>(c) - x0.segment<4>(c)).cwiseAbs().maxCoeff());
-        tangent = std::max(tangent, std::abs(x_ic.segment<4>(c).dot(xd_ic.segment<4>(c))));
+        const int col = dyn.element_column(e) + dyn.numbering().c();
+        const VecX& x = ic.x_ic;
+        kept = std::max(kept, (x.segment<4>(col) - x0.segment<4>(col)).cwiseAbs().maxCoeff());
+        tangent = std::max(tangent, std::abs(x.segment<4>(col).dot(ic.xd_ic.segment<4>(col))));
     }
-    BOOST_TEST_MESSAGE("quaternion: scaled residual before " << r0 << ", after IDACalcIC " << r_ic
-                                                             << "; IDACalcIC vs Newton: X " << dx
-                                                             << ", Ẋ " << dxd);
-    BOOST_TEST(r_ic < 1e-8);
-    BOOST_TEST(dx < 1e-8);
-    BOOST_TEST(dxd < 1e-8);
+    BOOST_TEST_MESSAGE("quaternion: scaled residual before "
+                       << ic.r0 << ", after IDACalcIC " << ic.r_ic << "; IDACalcIC vs Newton: X "
+                       << ic.dx << ", Ẋ " << ic.dxd);
+    BOOST_TEST(ic.r_ic < 1e-8);
+    BOOST_TEST(ic.dx < 1e-8);
+    BOOST_TEST(ic.dxd < 1e-8);
     BOOST_TEST(kept < 1e-12);  // the element rotations (a consistent norm) are kept
     BOOST_TEST(tangent < 1e-12);
-    BOOST_TEST(xdn.cwiseAbs().maxCoeff() > 0.1);
+    BOOST_TEST(ic.xd_newton.cwiseAbs().maxCoeff() > 0.1);
 }
 
 // Along a fixed-step run from a non-equilibrium start (rigid velocity, sine loads), rotating the

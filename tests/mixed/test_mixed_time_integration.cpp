@@ -18,6 +18,7 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/mixed/dynamic_models.hpp"
+#include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
 using ThreeParameterTypes =
@@ -192,49 +193,21 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(calc_ic_makes_a_non_equilibrium_start_consistent, 
     dyn.set_translational_momenta(x0, Vec3(0.3, -0.2, 0.5));
     const VecX xd0 = VecX::Zero(dyn.size());
     const double t0 = 0.4;
-    VecX r;
-    dyn.evaluate(t0, x0, xd0, r, nullptr, nullptr);
-    const double r0 = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    BOOST_TEST(r0 > 0.1);  // the start is not consistent
-
-    VecX xn = x0, xdn = xd0;
-    const NewtonSettings ns = time_step_newton_settings();
-    const NewtonOutcome newton = consistent_initial_conditions(dyn, t0, xn, xdn, ns, 1e-3);
-    BOOST_REQUIRE(newton.converged);
-
-    VecX xi = x0, xdi = xd0;
-    DaeSettings s;
-    s.start_time = t0;
-    s.end_time = t0 + 1e-3;
-    s.time_step = 1e-3;
-    s.relative_tolerance = 1e-10;
-    s.absolute_tolerance = 1e-10;
-    VecX x_ic, xd_ic;
-    const DaeOutcome out =
-        integrate_ida(dyn, xi, xdi, s, [&](double t, const VecX& x, const VecX& xd, int) {
-            if (t == t0) {
-                x_ic = x;
-                xd_ic = xd;
-            }
-        });
-    BOOST_REQUIRE(out.status == SolveStatus::converged);
-    BOOST_REQUIRE(x_ic.size() == dyn.size());
-    dyn.evaluate(t0, x_ic, xd_ic, r, nullptr, nullptr);
-    const double r_ic = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
+    const test::TwoInitialConditions ic = test::consistent_twice(dyn, t0, x0, xd0);
+    BOOST_TEST(ic.r0 > 0.1);  // the start is not consistent
     // IDACalcIC stops when its weighted correction is below 0.0033 (epiccon) × (rtol|y| + atol):
     // with 1e-10 tolerances on unit-order unknowns the residual is ≲ 1e-12 · ‖J‖ ≲ 1e-10.
-    const double dx = ((x_ic - xn).array() / dyn.state_scale().array()).abs().maxCoeff();
-    const double dxd = (xd_ic - xdn).cwiseAbs().maxCoeff() / xdn.cwiseAbs().maxCoeff();
-    BOOST_TEST_MESSAGE(P::kName << ": scaled residual before " << r0 << ", after IDACalcIC " << r_ic
-                                << "; IDACalcIC vs Newton: X " << dx << ", Ẋ " << dxd);
-    BOOST_TEST(r_ic < 1e-8);
-    BOOST_TEST(dx < 1e-8);
-    BOOST_TEST(dxd < 1e-8);
+    BOOST_TEST_MESSAGE(P::kName << ": scaled residual before " << ic.r0 << ", after IDACalcIC "
+                                << ic.r_ic << "; IDACalcIC vs Newton: X " << ic.dx << ", Ẋ "
+                                << ic.dxd);
+    BOOST_TEST(ic.r_ic < 1e-8);
+    BOOST_TEST(ic.dx < 1e-8);
+    BOOST_TEST(ic.dxd < 1e-8);
     // The differential unknowns were kept; the rates are not zero (the start was not at rest).
     for (int i = 0; i < dyn.size(); ++i) {
-        if (dyn.differential()[i] != 0.0) BOOST_TEST(x_ic[i] == x0[i]);
+        if (dyn.differential()[i] != 0.0) BOOST_TEST(ic.x_ic[i] == x0[i]);
     }
-    BOOST_TEST(xdn.cwiseAbs().maxCoeff() > 0.1);
+    BOOST_TEST(ic.xd_newton.cwiseAbs().maxCoeff() > 0.1);
 }
 
 // Observed orders of the fixed-step scheme on the free-vibration cantilever: tip u_z at ten
