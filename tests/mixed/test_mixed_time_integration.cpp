@@ -17,6 +17,7 @@
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "tests/cases/catalog_model.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 #include "tests/mixed/initial_conditions.hpp"
 
@@ -29,25 +30,9 @@ namespace {
 // docs/benchmarks.md §8 (cases/free-vibration.yaml): L = 1 m, h = 0.01 m, E = 2.1e11, ν = 0.3,
 // ρ = 7850, tip force 1 N released at t = 0 (table 1 → 0 within 1e-12 s).
 Model free_vibration(int elements) {
-    Model m;
-    m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(1, 0, 0)}};
-    const double E = 2.1e11, G = E / 2.6, h = 0.01, A = h * h, I = h * h * h * h / 12.0;
-    const double k = 5.0 / 6.0, rho = 7850;
-    Section s = test::diagonal_section(
-        (Vec6() << E * A, k * G * A, k * G * A, G * 1.40577e-9, E * I, E * I).finished());
-    s.mass = Mat6((Vec6() << rho * A, rho * A, rho * A, 2 * rho * I, rho * I, rho * I)
-                      .finished()
-                      .asDiagonal());
-    m.members = {test::member("beam", 0, 1, s, elements)};
-    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
-    PointLoad release;
-    release.point = 1;
-    release.force = Vec3(0, 0, 1);
-    release.time.kind = TimeFunction::Kind::table;
-    release.time.times = {0.0, 1e-12};
-    release.time.values = {1.0, 0.0};
-    m.point_loads = {release};
-    return m;
+    return test::catalog_model("free-vibration",
+                               {"discretization.formulation=mixed", "discretization.order=1",
+                                "members.beam.elements=" + std::to_string(elements)});
 }
 
 // The static state under the load at t = 0, as the dynamic state at rest.
