@@ -1,11 +1,12 @@
-// Objectivity of the displacement formulation's rotation interpolation (docs/displacement-
-// formulation.md). A rigid rotation Q superposed on a deformed, unloaded configuration
-// (x → Q x, R_j → Q R_j) must rotate the internal-force residual with it, r → Q r, node by node:
-// the material strains (RR^r)ᵀε, (RR^r)ᵀκ and hence the material section forces are unchanged.
-// `relative` interpolation is objective (round-off); `direct` interpolates parameters that Q
-// changes non-linearly, so it is not — the test quantifies the violation against the rotation
-// span inside an element. The state is a precessing twist–bend field on the anisotropic section of
-// the precessing helix (docs/benchmarks.md §6), so rotations at different sections do not commute.
+// Objectivity of the displacement formulation's rotation interpolation, for every displacement
+// combination of the registry (docs/displacement-formulation.md). A rigid rotation Q superposed on
+// a deformed, unloaded configuration (x → Q x, R_j → Q R_j) must rotate the internal-force residual
+// with it, r → Q r, node by node: the material strains (RR^r)ᵀε, (RR^r)ᵀκ and hence the material
+// section forces are unchanged. `relative` interpolation is objective (round-off); `direct`
+// interpolates parameters that Q changes non-linearly (all but the quaternion's, below), so it is
+// not — the test quantifies the violation against the rotation span inside an element. The state is
+// a precessing twist–bend field on the anisotropic section of the precessing helix
+// (docs/benchmarks.md §6), so rotations at different sections do not commute.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <string>
