@@ -166,6 +166,18 @@ nlohmann::json best_per_budget(const std::vector<Candidate>& tried) {
 
 }  // namespace
 
+const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows) {
+    const nlohmann::json* fastest = nullptr;
+    for (const auto& r : rows) {
+        if (r["status"] != "reached") continue;
+        if (fastest == nullptr || r["whole_process_seconds"].get<double>() <
+                                      (*fastest)["whole_process_seconds"].get<double>()) {
+            fastest = &r;
+        }
+    }
+    return fastest;
+}
+
 std::vector<BenchTarget> bench_targets() {
     const char* rollup = "‖Δu_tip‖/L vs exact";
     return {{"rollup-0.4", "cantilever-moment", 0.4, 1e-9, rollup, 0.0, {}},

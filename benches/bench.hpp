@@ -41,4 +41,9 @@ std::vector<GridPoint> bench_grid(Formulation formulation, bool quick);
 nlohmann::json bench_combination(const BenchTarget& target, const Combination& c,
                                  const nlohmann::json& reference, bool quick, int repeats);
 
+// The row of `rows` (bench_combination's, or the joined-beam bench's) with the smallest
+// whole-process time among those whose status is "reached", the first of equal ones; nullptr
+// when none reached.
+const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows);
+
 }  // namespace rotbeam::cli

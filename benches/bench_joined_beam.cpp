@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "benches/bench.hpp"
 #include "core/static_driver.hpp"
 #include "runs/catalog.hpp"
 #include "runs/timing.hpp"
@@ -178,17 +179,13 @@ void print_row(const nlohmann::json& r) {
 }
 
 void print_summary(const nlohmann::json& rows, double target_seconds) {
-    double best = kNoValue, best_cpu = kNoValue;
-    std::string who = "none";
-    for (const auto& r : rows) {
-        if (r["status"] != "reached") continue;
-        const double s = r["whole_process_seconds"].get<double>();
-        if (!(s >= best)) {
-            best = s;
-            best_cpu = r["whole_process_cpu_seconds"].get<double>();
-            who = r["formulation"].get<std::string>() + "/" + r["rotation"].get<std::string>();
-        }
-    }
+    const nlohmann::json* fastest = fastest_reaching_run(rows);
+    const double best = fastest ? (*fastest)["whole_process_seconds"].get<double>() : kNoValue;
+    const double best_cpu =
+        fastest ? (*fastest)["whole_process_cpu_seconds"].get<double>() : kNoValue;
+    const std::string who = fastest ? (*fastest)["formulation"].get<std::string>() + "/" +
+                                          (*fastest)["rotation"].get<std::string>()
+                                    : "none";
     std::cout << "  best: " << who;
     if (std::isfinite(best)) std::cout << " " << ms(best) << " ms (CPU " << ms(best_cpu) << " ms)";
     std::cout << "   target ≤ " << ms(target_seconds)

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "cases/loader/closest_match.hpp"
+
 namespace rotbeam::cli {
 
 // Catalog folder: $ROTBEAM_CASES, else the source tree's cases/ (compile-time).
@@ -13,7 +15,7 @@ std::string catalog_directory();
 std::string resolve_case_path(const std::string& argument);
 std::vector<std::string> catalog_cases();
 
-// Closest candidate by edit distance (empty if none is close).
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+// The program's "did you mean" is the case loader's (cases/loader/closest_match.hpp).
+using cases::closest_match;
 
 }  // namespace rotbeam::cli

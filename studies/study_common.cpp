@@ -162,6 +162,18 @@ std::string sci(double value, int digits) {
     return s.str();
 }
 
+std::string fixed(double value, int digits) {
+    if (!std::isfinite(value)) return "—";
+    return fixed_as_printed(value, digits);
+}
+
+std::string fixed_as_printed(double value, int digits) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << std::fixed << value;
+    return s.str();
+}
+
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
 }  // namespace rotbeam::cli

@@ -100,6 +100,10 @@ std::string out_path(const StudyOptions& o, const std::string& relative_path);
 // Throws when gnuplot fails (gnuplot.hpp).
 void plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
 std::string sci(double value, int digits = 2);  // "—" for NaN
-std::string quoted(const std::string& s);       // for gnuplot data-file titles
+// `value` with `digits` decimals ("0.50"); "—" for a non-finite value, like sci.
+std::string fixed(double value, int digits = 2);
+// The same, with a non-finite value as the stream prints it ("nan", "inf").
+std::string fixed_as_printed(double value, int digits);
+std::string quoted(const std::string& s);  // for gnuplot data-file titles
 
 }  // namespace rotbeam::cli

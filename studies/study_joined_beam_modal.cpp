@@ -148,14 +148,6 @@ std::vector<double> limits(const ModalSeries& s) {
     return v;
 }
 
-std::string fixed(double x, int digits) {
-    if (!std::isfinite(x)) return "—";
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << x;
-    return s.str();
-}
-
 }  // namespace
 
 namespace {

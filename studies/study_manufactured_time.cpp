@@ -60,14 +60,6 @@ std::vector<TimeSeries> time_series(bool quick) {
     return out;
 }
 
-std::string fixed(double v, int digits = 2) {
-    if (!std::isfinite(v)) return "—";
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << v;
-    return s.str();
-}
-
 std::string file_label(std::string s) {
     for (char& c : s) {
         if (c == '/' || c == '.') c = '_';
@@ -186,7 +178,8 @@ nlohmann::json space_case(const StudyOptions& o, std::ostringstream& md,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125},
         {Formulation::mixed, param::id_of<param::Quaternion>(), 1,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125}};
-    md << "\n**Space** (quaternion / WM and quaternion trapezoidal, Δt fixed; error against the exact motion):\n\n"
+    md << "\n**Space** (quaternion / WM and quaternion trapezoidal, Δt fixed; error against the "
+          "exact motion):\n\n"
           "| combination | Δt | elements per member | ‖Δu‖/L | rotation [rad] | order (last "
           "pair) u / R |\n|---|---|---|---|---|---|\n";
     for (const Refinement& r : list) {

@@ -104,13 +104,6 @@ PathRun path_run(const PathCase& c, const Combination& comb, int elements, const
     return p;
 }
 
-std::string fixed(double x, int digits = 3) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << std::fixed << x;
-    return s.str();
-}
-
 }  // namespace
 
 namespace {
@@ -186,8 +179,9 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, const StudyRe
                << message << " |\n";
             continue;
         }
-        md << "| " << c.key << " | " << comb.label() << " | " << fixed(p.reach.load_factor) << " | "
-           << fixed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
+        md << "| " << c.key << " | " << comb.label() << " | "
+           << fixed_as_printed(p.reach.load_factor, 3) << " | "
+           << fixed_as_printed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
            << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : message)
            << " |\n";
         if (p.lambda.empty()) continue;
@@ -252,8 +246,8 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, const StudyResults& re
             double max_error = 0.0;
             for (double e : p.error) max_error = std::max(max_error, e);
             data << n << " " << star << "\n";
-            row << " " << fixed(star, 4) << (has_solution(p.status) ? " (all)" : "") << ", "
-                << sci(max_error, 1) << " |";
+            row << " " << fixed_as_printed(star, 4) << (has_solution(p.status) ? " (all)" : "")
+                << ", " << sci(max_error, 1) << " |";
             out.push_back({{"combination", comb.label()},
                            {"elements", n},
                            {"lambda_star", star},

@@ -8,12 +8,6 @@ namespace rotbeam::cases {
 
 namespace {
 
-std::vector<std::string> point_names(const Model& model) {
-    std::vector<std::string> names;
-    for (const Point& p : model.points) names.push_back(p.name);
-    return names;
-}
-
 std::vector<std::string> member_names(const Model& model) {
     std::vector<std::string> names;
     for (const Member& m : model.members) names.push_back(m.name);

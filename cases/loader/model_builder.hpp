@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "cases/loader/yaml_reader.hpp"
 #include "core/model.hpp"
@@ -15,6 +16,8 @@ namespace rotbeam::cases {
 using SectionTable = std::map<std::string, Section>;
 
 void read_points(const YamlReader& r, const YAML::Node& root, Model& model);
+// The names of the model's points, in order: the valid values of a key that names a point.
+std::vector<std::string> point_names(const Model& model);
 SectionTable read_sections(const YamlReader& r, const YAML::Node& root);
 void read_members(const YamlReader& r, const YAML::Node& root, const SectionTable& sections,
                   Model& model);

@@ -11,13 +11,13 @@
 
 namespace rotbeam::cases {
 
-namespace {
-
 std::vector<std::string> point_names(const Model& model) {
     std::vector<std::string> names;
     for (const Point& p : model.points) names.push_back(p.name);
     return names;
 }
+
+namespace {
 
 // Symmetry to round-off of printed data: 1e-9 of the largest entry.
 bool symmetric(const Mat6& M) {

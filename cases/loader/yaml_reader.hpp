@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/loader/closest_match.hpp"
 #include "core/types.hpp"
 
 namespace rotbeam::cases {
@@ -24,11 +25,6 @@ std::string one_line(const std::string& text);
 
 // "a.b" + "c" → "a.b.c"; an empty parent gives the child.
 std::string child_key(const std::string& parent, const std::string& child);
-
-// Levenshtein distance, and the closest candidate within a distance that still reads as a typo
-// (≤ max(1, |word|/3)); empty when none is close.
-int edit_distance(const std::string& a, const std::string& b);
-std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 class YamlReader {
   public:

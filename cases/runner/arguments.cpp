@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 #include "core/errors.hpp"
 
@@ -140,6 +141,21 @@ std::string help_text(const CommandSpec& spec) {
     }
     s << "  --help                       print this help\n";
     return s.str();
+}
+
+std::vector<std::string> case_overrides(const ParsedArguments& a) {
+    std::vector<std::string> overrides;
+    const std::pair<const char*, const char*> shorthands[] = {
+        {"rotation", "discretization.rotation"},
+        {"formulation", "discretization.formulation"},
+        {"order", "discretization.order"},
+        {"elements", "members.*.elements"},
+        {"interpolation", "discretization.interpolation"}};
+    for (const auto& [option, key] : shorthands) {
+        if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
+    }
+    for (const std::string& s : a.values("set")) overrides.push_back(s);
+    return overrides;
 }
 
 }  // namespace rotbeam::cli

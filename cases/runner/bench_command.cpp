@@ -136,16 +136,11 @@ void print_row(const nlohmann::json& r, std::ostream& os) {
 
 // The best whole-process time among the combinations that reached a target.
 void print_target_summary(const BenchTarget& t, const nlohmann::json& rows, std::ostream& os) {
-    double best = kNoValue;
-    std::string who = "none";
-    for (const auto& r : rows) {
-        if (r["status"] != "reached") continue;
-        const double s = r["whole_process_seconds"].get<double>();
-        if (!(s >= best)) {
-            best = s;
-            who = r["formulation"].get<std::string>() + "/" + r["rotation"].get<std::string>();
-        }
-    }
+    const nlohmann::json* fastest = fastest_reaching_run(rows);
+    const double best = fastest ? (*fastest)["whole_process_seconds"].get<double>() : kNoValue;
+    const std::string who = fastest ? (*fastest)["formulation"].get<std::string>() + "/" +
+                                          (*fastest)["rotation"].get<std::string>()
+                                    : "none";
     os << "  best: " << who;
     if (std::isfinite(best)) os << " " << ms(best) << " ms";
     if (t.target_seconds > 0.0) {

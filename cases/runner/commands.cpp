@@ -29,25 +29,9 @@ namespace {
 const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
                             "override any case key, validated like the file", true};
 
-// The shorthand options of `run` become --set overrides, validated by the loader.
-std::vector<std::string> overrides_from(const ParsedArguments& a) {
-    std::vector<std::string> overrides;
-    const std::pair<const char*, const char*> shorthands[] = {
-        {"rotation", "discretization.rotation"},
-        {"formulation", "discretization.formulation"},
-        {"order", "discretization.order"},
-        {"elements", "members.*.elements"},
-        {"interpolation", "discretization.interpolation"}};
-    for (const auto& [option, key] : shorthands) {
-        if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
-    }
-    for (const std::string& s : a.values("set")) overrides.push_back(s);
-    return overrides;
-}
-
 Model load_with_options(const std::string& path, const ParsedArguments& a,
                         CaseParts parts = CaseParts::all) {
-    return load_case(path, overrides_from(a), parts);
+    return load_case(path, case_overrides(a), parts);
 }
 
 // "± 3.1e-09" and, when the estimate is not reliable, why.

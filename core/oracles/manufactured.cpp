@@ -1,8 +1,8 @@
 #include "core/oracles/manufactured.hpp"
-#include "core/oracles/manufactured_rod.hpp"
 
 #include <cmath>
 
+#include "core/oracles/manufactured_rod.hpp"
 #include "core/so3.hpp"
 
 namespace rotbeam::oracle {
@@ -62,22 +62,9 @@ void ManufacturedRod::loads(double s, double lambda, Vec3& force, Vec3& moment) 
     const Vec3 k1 = g.alpha2 * kE1 + g.beta2 * Ae3 + g.beta1 * g.alpha1 * kE1.cross(Ae3);
     const Vec3 x1 = kE1 + lambda * w1;  // x′
     const Vec3 x2 = lambda * w2;        // x″
-    // Material strains and their derivatives: (Rᵀ)′ = −K̃ Rᵀ, so Γ′ = −K × Rᵀx′ + Rᵀx″ and
-    // K′ = −K × K + Rᵀk′ = Rᵀk′.
-    const Vec3 K = R.transpose() * k;
-    const Vec3 Rx1 = R.transpose() * x1;
-    Vec6 strain, strain1;
-    strain << Rx1 - kE1, K;
-    strain1 << -K.cross(Rx1) + R.transpose() * x2, R.transpose() * k1;
-    const Vec6 NM = stiffness * strain;
-    const Vec6 NM1 = stiffness * strain1;
-    // Spatial resultants and their derivatives: (R v)′ = k × (R v) + R v′.
-    const Vec3 n = R * NM.head<3>();
-    const Vec3 m = R * NM.tail<3>();
-    const Vec3 n1 = k.cross(n) + R * NM1.head<3>();
-    const Vec3 m1 = k.cross(m) + R * NM1.tail<3>();
-    force = -n1;
-    moment = -m1 - x1.cross(n);
+    const SpatialResultants r = spatial_resultants(R, k, k1, x1, x2, stiffness);
+    force = -r.n1;
+    moment = -r.m1 - x1.cross(r.n);
 }
 
 Mat6 manufactured_section() {

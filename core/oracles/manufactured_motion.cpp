@@ -1,8 +1,8 @@
 #include "core/oracles/manufactured_motion.hpp"
-#include "core/oracles/manufactured_rod.hpp"
 
 #include <cmath>
 
+#include "core/oracles/manufactured_rod.hpp"
 #include "core/so3.hpp"
 
 namespace rotbeam::oracle {
@@ -129,22 +129,12 @@ void ManufacturedMotion::loads(double s, double t, Vec3& force, Vec3& moment) co
     const Mat3& R = st.R;
     const Mat3 Rt = R.transpose();
     const Vec3 Ae3 = so3::exp_map(f.alpha.v * kE1) * kE3;
-    // Elastic part (as the static oracle, manufactured.cpp): k, k′, Γ′ = −K × Rᵀx′ + Rᵀx″,
-    // K′ = Rᵀk′, n′ = k × n + R C*_top[Γ′; K′].
+    // Elastic part (as the static oracle, manufactured.cpp): k, k′ and, with x″ = u″, the
+    // resultants and their derivatives (manufactured_rod.hpp).
     const Vec3 k = f.alpha.s1 * kE1 + f.beta.s1 * Ae3;
     const Vec3 k1 = f.alpha.s2 * kE1 + f.beta.s2 * Ae3 + f.beta.s1 * f.alpha.s1 * kE1.cross(Ae3);
     const Vec3 x1 = kE1 + f.u.s1;
-    const Vec3 K = Rt * k;
-    const Vec3 Rx1 = Rt * x1;
-    Vec6 strain, strain1;
-    strain << Rx1 - kE1, K;
-    strain1 << -K.cross(Rx1) + Rt * f.u.s2, Rt * k1;
-    const Vec6 NM = stiffness * strain;
-    const Vec6 NM1 = stiffness * strain1;
-    const Vec3 n = R * NM.head<3>();
-    const Vec3 m = R * NM.tail<3>();
-    const Vec3 n1 = k.cross(n) + R * NM1.head<3>();
-    const Vec3 m1 = k.cross(m) + R * NM1.tail<3>();
+    const SpatialResultants r = spatial_resultants(R, k, k1, x1, f.u.s2, stiffness);
     // Inertial part: [P; H] = M*[V; Ω], V = Rᵀu̇, Ω = Rᵀω; V̇ = Rᵀü − Ω × V, Ω̇ = Rᵀω̇ (the
     // Ω × Ω term vanishes); ṗ = ω × p + R Ṗ, ḣ = ω × h + R Ḣ.
     const Vec3 V = Rt * st.u_dot, W = Rt * st.omega;
@@ -157,8 +147,8 @@ void ManufacturedMotion::loads(double s, double t, Vec3& force, Vec3& moment) co
     const Vec3 h = R * PH.tail<3>();
     const Vec3 p1 = st.omega.cross(p) + R * PH1.head<3>();
     const Vec3 h1 = st.omega.cross(h) + R * PH1.tail<3>();
-    force = p1 - n1;
-    moment = h1 + st.u_dot.cross(p) - m1 - x1.cross(n);
+    force = p1 - r.n1;
+    moment = h1 + st.u_dot.cross(p) - r.m1 - x1.cross(r.n);
 }
 
 double ManufacturedMotion::max_angle(double t) const {

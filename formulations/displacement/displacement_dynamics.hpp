@@ -101,6 +101,10 @@ class DisplacementDynamics : public SecondOrderProblem {
     void update_iterate();
     void gather(const MeshElement& e);
     void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot) const;
+    // point(k, e, q, rot) at every quadrature point q of every element k of `elements`, with the
+    // element's nodal parameters gathered and the rotation interpolated at the point.
+    template <class Point>
+    void for_each_point(const std::vector<MeshElement>& elements, Point&& point);
     // Inertial forces on the mass mesh: r += F^I terms; J += kq ∂/∂q T + cv ∂/∂v + ca ∂/∂v˙.
     void assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv, double ca);
     void assemble_damping(VecX& r, SparseMatrix* J, double cv);

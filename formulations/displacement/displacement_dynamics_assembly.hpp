@@ -8,10 +8,10 @@
 #include "formulations/displacement/calculate_damping_forces.hpp"
 #include "formulations/displacement/calculate_elastic_forces.hpp"
 #include "formulations/displacement/calculate_inertial_forces.hpp"
-#include "formulations/displacement/rotation_columns.hpp"
 #include "formulations/displacement/calculate_strain.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/rotate_section.hpp"
+#include "formulations/displacement/rotation_columns.hpp"
 
 namespace rotbeam::form {
 
@@ -61,6 +61,21 @@ void DisplacementDynamics<P>::interpolate(const MeshElement& e, int q,
     }
 }
 
+template <param::RotationParameterization P>
+template <class Point>
+void DisplacementDynamics<P>::for_each_point(const std::vector<MeshElement>& elements,
+                                             Point&& point) {
+    for (int k = 0; k < static_cast<int>(elements.size()); ++k) {
+        const MeshElement& e = elements[k];
+        gather(e);
+        InterpolatedRotation<P> rot;
+        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
+            interpolate(e, q, rot);
+            point(k, e, q, rot);
+        }
+    }
+}
+
 // Σ_q w N_a F^I on the mass rule's points; block (a, b) of the iteration matrix:
 //   w N_a N_b (cv G^I + ca M) + kq w N_a K^I [0, 0; 0, A_b T_b],
 // A_b the spin map δθ(s) = Σ A_b δθ_b of the interpolation (K^I has no δu columns).
@@ -68,56 +83,51 @@ template <param::RotationParameterization P>
 void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv,
                                                double ca) {
     const bool relative = statics_.relative_interpolation();
-    for (int k = 0; k < static_cast<int>(mass_mesh_.elements.size()); ++k) {
-        const MeshElement& e = mass_mesh_.elements[k];
+    for_each_point(mass_mesh_.elements, [&](int k, const MeshElement& e, int q,
+                                            const InterpolatedRotation<P>& rot) {
         const int nn = static_cast<int>(e.nodes.size());
-        gather(e);
-        InterpolatedRotation<P> rot;
-        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            const QuadraturePoint& qp = e.qp[q];
-            const double* N = e.N.col(q).data();
-            interpolate(e, q, rot);
-            InertialState s;
-            s.Q = rot.R * qp.Rr;
-            s.u_ddot.setZero();
-            s.omega.setZero();
-            s.omega_dot.setZero();
-            for (int j = 0; j < nn; ++j) {
-                s.u_ddot += N[j] * vd_[e.nodes[j]].head<3>();
-                s.omega += N[j] * v_[e.nodes[j]].tail<3>();
-                s.omega_dot += N[j] * vd_[e.nodes[j]].tail<3>();
+        const QuadraturePoint& qp = e.qp[q];
+        const double* N = e.N.col(q).data();
+        InertialState s;
+        s.Q = rot.R * qp.Rr;
+        s.u_ddot.setZero();
+        s.omega.setZero();
+        s.omega_dot.setZero();
+        for (int j = 0; j < nn; ++j) {
+            s.u_ddot += N[j] * vd_[e.nodes[j]].head<3>();
+            s.omega += N[j] * v_[e.nodes[j]].tail<3>();
+            s.omega_dot += N[j] * vd_[e.nodes[j]].tail<3>();
+        }
+        const InertialBlocks B = calculate_inertial_blocks(qp.M_star, s);
+        ++inertial_terms_;
+        for (int a = 0; a < nn; ++a) {
+            const int d = mesh().nodes[e.nodes[a]].dof;
+            if (d >= 0) r.segment<6>(d) += qp.weight * N[a] * B.F;
+        }
+        if (J == nullptr) return;
+        if (kq != 0.0) {
+            Mat3 sum = Mat3::Zero();
+            for (int b = 0; b < nn; ++b) {
+                A_[b] = N[b] * rot.Hs * Me_[b];
+                if (relative) A_[b] = R0_ * A_[b] * R0_.transpose();
+                sum += A_[b];
             }
-            const InertialBlocks B = calculate_inertial_blocks(qp.M_star, s);
-            ++inertial_terms_;
-            for (int a = 0; a < nn; ++a) {
-                const int d = mesh().nodes[e.nodes[a]].dof;
-                if (d >= 0) r.segment<6>(d) += qp.weight * N[a] * B.F;
-            }
-            if (J == nullptr) continue;
-            if (kq != 0.0) {
-                Mat3 sum = Mat3::Zero();
-                for (int b = 0; b < nn; ++b) {
-                    A_[b] = N[b] * rot.Hs * Me_[b];
-                    if (relative) A_[b] = R0_ * A_[b] * R0_.transpose();
-                    sum += A_[b];
+            if (relative) A_[0] += Mat3::Identity() - sum;
+        }
+        const Mat6 GM = cv * B.G + ca * B.M;
+        for (int a = 0; a < nn; ++a) {
+            if (mesh().nodes[e.nodes[a]].dof < 0) continue;
+            for (int b = 0; b < nn; ++b) {
+                if (mesh().nodes[e.nodes[b]].dof < 0) continue;
+                Mat6 blk = (qp.weight * N[a] * N[b]) * GM;
+                if (kq != 0.0) {
+                    blk.rightCols<3>() +=
+                        (kq * qp.weight * N[a]) * B.K.rightCols<3>() * A_[b] * T_[e.nodes[b]];
                 }
-                if (relative) A_[0] += Mat3::Identity() - sum;
-            }
-            const Mat6 GM = cv * B.G + ca * B.M;
-            for (int a = 0; a < nn; ++a) {
-                if (mesh().nodes[e.nodes[a]].dof < 0) continue;
-                for (int b = 0; b < nn; ++b) {
-                    if (mesh().nodes[e.nodes[b]].dof < 0) continue;
-                    Mat6 blk = (qp.weight * N[a] * N[b]) * GM;
-                    if (kq != 0.0) {
-                        blk.rightCols<3>() +=
-                            (kq * qp.weight * N[a]) * B.K.rightCols<3>() * A_[b] * T_[e.nodes[b]];
-                    }
-                    statics_.add_block(*J, k, a, b, blk);
-                }
+                statics_.add_block(*J, k, a, b, blk);
             }
         }
-    }
+    });
 }
 
 // Σ_q w (N_a′ F^D1 + N_a F^D2) on the stiffness points (seed 000 Eq. 10, errata). Nodal columns
@@ -127,86 +137,76 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double cv) {
     const bool relative = statics_.relative_interpolation();
-    for (int k = 0; k < static_cast<int>(mesh().elements.size()); ++k) {
-        const MeshElement& e = mesh().elements[k];
+    for_each_point(mesh().elements, [&](int k, const MeshElement& e, int q,
+                                        const InterpolatedRotation<P>& rot) {
         const int nn = static_cast<int>(e.nodes.size());
-        gather(e);
-        InterpolatedRotation<P> rot;
-        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            const QuadraturePoint& qp = e.qp[q];
-            const double* N = e.N.col(q).data();
-            const double* dN = e.dN.col(q).data();
-            interpolate(e, q, rot);
-            DampingState s;
-            s.D = rotate_section(qp.D_star, rot.R * qp.Rr);
-            Vec3 up = Vec3::Zero();
-            for (int j = 0; j < nn; ++j) {
-                const int node = e.nodes[j];
-                up += dN[j] * statics_.node_displacement(node);
-                s.omega += N[j] * v_[node].tail<3>();
-                s.omega_prime += dN[j] * v_[node].tail<3>();
-                s.u_dot_prime += dN[j] * v_[node].head<3>();
-            }
-            s.x_prime = qp.x0_prime + up;
-            s.Rx0p = rot.R * qp.x0_prime;
-            s.kappa = rot.kappa;
-            const DampingBlocks B = calculate_damping_blocks(s);
-            ++damping_terms_;
-            for (int a = 0; a < nn; ++a) {
-                const int d = mesh().nodes[e.nodes[a]].dof;
-                if (d >= 0) r.segment<6>(d) += qp.weight * (dN[a] * B.F1 + N[a] * B.F2);
-            }
-            if (J == nullptr) continue;
-            const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
-            for (int b = 0; b < nn; ++b)
-                rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K_[b]);
-            if (relative) relative_maps(R0_, rot.kappa, nn, A_.data(), K_.data());
-            const Mat3 kt = so3::skew(rot.kappa);
+        const QuadraturePoint& qp = e.qp[q];
+        const double* N = e.N.col(q).data();
+        const double* dN = e.dN.col(q).data();
+        DampingState s;
+        s.D = rotate_section(qp.D_star, rot.R * qp.Rr);
+        Vec3 up = Vec3::Zero();
+        for (int j = 0; j < nn; ++j) {
+            const int node = e.nodes[j];
+            up += dN[j] * statics_.node_displacement(node);
+            s.omega += N[j] * v_[node].tail<3>();
+            s.omega_prime += dN[j] * v_[node].tail<3>();
+            s.u_dot_prime += dN[j] * v_[node].head<3>();
+        }
+        s.x_prime = qp.x0_prime + up;
+        s.Rx0p = rot.R * qp.x0_prime;
+        s.kappa = rot.kappa;
+        const DampingBlocks B = calculate_damping_blocks(s);
+        ++damping_terms_;
+        for (int a = 0; a < nn; ++a) {
+            const int d = mesh().nodes[e.nodes[a]].dof;
+            if (d >= 0) r.segment<6>(d) += qp.weight * (dN[a] * B.F1 + N[a] * B.F2);
+        }
+        if (J == nullptr) return;
+        const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
+        for (int b = 0; b < nn; ++b) rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K_[b]);
+        if (relative) relative_maps(R0_, rot.kappa, nn, A_.data(), K_.data());
+        const Mat3 kt = so3::skew(rot.kappa);
+        for (int b = 0; b < nn; ++b) {
+            const Mat3& Tb = T_[e.nodes[b]];
+            const Mat3 At = A_[b] * Tb;
+            const Mat3 Kt = (K_[b] + kt * A_[b]) * Tb;
+            X1_[b] = cv * (dN[b] * B.D1 + N[b] * B.G1);
+            X1_[b].leftCols<3>() += dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>();
+            X1_[b].rightCols<3>() += B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At;
+            X2_[b] = cv * (dN[b] * B.D2 + N[b] * B.G2);
+            X2_[b].leftCols<3>() += dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>();
+            X2_[b].rightCols<3>() += B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At;
+        }
+        for (int a = 0; a < nn; ++a) {
+            if (mesh().nodes[e.nodes[a]].dof < 0) continue;
             for (int b = 0; b < nn; ++b) {
-                const Mat3& Tb = T_[e.nodes[b]];
-                const Mat3 At = A_[b] * Tb;
-                const Mat3 Kt = (K_[b] + kt * A_[b]) * Tb;
-                X1_[b] = cv * (dN[b] * B.D1 + N[b] * B.G1);
-                X1_[b].leftCols<3>() += dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>();
-                X1_[b].rightCols<3>() += B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At;
-                X2_[b] = cv * (dN[b] * B.D2 + N[b] * B.G2);
-                X2_[b].leftCols<3>() += dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>();
-                X2_[b].rightCols<3>() += B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At;
-            }
-            for (int a = 0; a < nn; ++a) {
-                if (mesh().nodes[e.nodes[a]].dof < 0) continue;
-                for (int b = 0; b < nn; ++b) {
-                    if (mesh().nodes[e.nodes[b]].dof < 0) continue;
-                    const Mat6 blk = qp.weight * (dN[a] * X1_[b] + N[a] * X2_[b]);
-                    statics_.add_block(*J, k, a, b, blk);
-                }
+                if (mesh().nodes[e.nodes[b]].dof < 0) continue;
+                const Mat6 blk = qp.weight * (dN[a] * X1_[b] + N[a] * X2_[b]);
+                statics_.add_block(*J, k, a, b, blk);
             }
         }
-    }
+    });
 }
 
 template <param::RotationParameterization P>
 double DisplacementDynamics<P>::damping_dissipation() {
     double power = 0.0;
-    InterpolatedRotation<P> rot;
-    for (const MeshElement& e : mesh().elements) {
-        const int nn = static_cast<int>(e.nodes.size());
-        gather(e);
-        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            interpolate(e, q, rot);
-            Vec3 omega = Vec3::Zero(), omega_p = Vec3::Zero(), udot_p = Vec3::Zero();
-            for (int j = 0; j < nn; ++j) {
-                omega += e.N(j, q) * v_[e.nodes[j]].tail<3>();
-                omega_p += e.dN(j, q) * v_[e.nodes[j]].tail<3>();
-                udot_p += e.dN(j, q) * v_[e.nodes[j]].head<3>();
-            }
-            Vec6 rates;
-            rates.head<3>() = udot_p - omega.cross(rot.R * e.qp[q].x0_prime);
-            rates.tail<3>() = omega.cross(rot.kappa) + omega_p;
-            const Mat6 D = rotate_section(e.qp[q].D_star, rot.R * e.qp[q].Rr);
-            power += e.qp[q].weight * rates.dot(D * rates);
-        }
-    }
+    for_each_point(mesh().elements,
+                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
+                       const int nn = static_cast<int>(e.nodes.size());
+                       Vec3 omega = Vec3::Zero(), omega_p = Vec3::Zero(), udot_p = Vec3::Zero();
+                       for (int j = 0; j < nn; ++j) {
+                           omega += e.N(j, q) * v_[e.nodes[j]].tail<3>();
+                           omega_p += e.dN(j, q) * v_[e.nodes[j]].tail<3>();
+                           udot_p += e.dN(j, q) * v_[e.nodes[j]].head<3>();
+                       }
+                       Vec6 rates;
+                       rates.head<3>() = udot_p - omega.cross(rot.R * e.qp[q].x0_prime);
+                       rates.tail<3>() = omega.cross(rot.kappa) + omega_p;
+                       const Mat6 D = rotate_section(e.qp[q].D_star, rot.R * e.qp[q].Rr);
+                       power += e.qp[q].weight * rates.dot(D * rates);
+                   });
     return power;
 }
 
@@ -215,30 +215,24 @@ double DisplacementDynamics<P>::damping_dissipation() {
 template <param::RotationParameterization P>
 BeamEnergy DisplacementDynamics<P>::energy() {
     BeamEnergy E;
-    InterpolatedRotation<P> rot;
-    for (const MeshElement& e : mass_mesh_.elements) {
-        const int nn = static_cast<int>(e.nodes.size());
-        gather(e);
-        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            interpolate(e, q, rot);
-            Vec6 v = Vec6::Zero();
-            for (int j = 0; j < nn; ++j) v += e.N(j, q) * v_[e.nodes[j]];
-            const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
-            E.kinetic += 0.5 * e.qp[q].weight * v.dot(M * v);
-        }
-    }
-    for (const MeshElement& e : mesh().elements) {
-        const int nn = static_cast<int>(e.nodes.size());
-        gather(e);
-        for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            interpolate(e, q, rot);
-            Vec3 up = Vec3::Zero();
-            for (int j = 0; j < nn; ++j) up += e.dN(j, q) * statics_.node_displacement(e.nodes[j]);
-            const Vec6 strain = calculate_strain(e.qp[q].x0_prime, up, rot.R, rot.kappa);
-            const Mat6 C = rotate_section(e.qp[q].C_star, rot.R * e.qp[q].Rr);
-            E.strain += 0.5 * e.qp[q].weight * strain.dot(C * strain);
-        }
-    }
+    for_each_point(mass_mesh_.elements,
+                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
+                       const int nn = static_cast<int>(e.nodes.size());
+                       Vec6 v = Vec6::Zero();
+                       for (int j = 0; j < nn; ++j) v += e.N(j, q) * v_[e.nodes[j]];
+                       const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
+                       E.kinetic += 0.5 * e.qp[q].weight * v.dot(M * v);
+                   });
+    for_each_point(mesh().elements,
+                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
+                       const int nn = static_cast<int>(e.nodes.size());
+                       Vec3 up = Vec3::Zero();
+                       for (int j = 0; j < nn; ++j)
+                           up += e.dN(j, q) * statics_.node_displacement(e.nodes[j]);
+                       const Vec6 strain = calculate_strain(e.qp[q].x0_prime, up, rot.R, rot.kappa);
+                       const Mat6 C = rotate_section(e.qp[q].C_star, rot.R * e.qp[q].Rr);
+                       E.strain += 0.5 * e.qp[q].weight * strain.dot(C * strain);
+                   });
     return E;
 }
 

@@ -87,14 +87,7 @@ MixedElement mixed_loaded_element(const Model& model, const MixedElement& elemen
     MixedElement el = element;
     for (const DistributedLoad& load : model.distributed_loads) {
         if (load.member != el.member) continue;
-        const double s = mixed_time_value(load.time, t, floor);
-        if (load.frame == LoadFrame::dead) {
-            el.f_dead += s * load.force;
-            el.m_dead += s * load.moment;
-        } else {
-            el.f_follower += s * load.force;
-            el.m_follower += s * load.moment;
-        }
+        el.add_load(load, mixed_time_value(load.time, t, floor));
     }
     return el;
 }

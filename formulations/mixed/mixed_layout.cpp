@@ -87,15 +87,8 @@ void add_distributed_loads(const Model& model, MixedLayout& layout) {
     for (const DistributedLoad& load : model.distributed_loads) {
         for (MixedElement& e : layout.elements) {
             if (e.member != load.member) continue;
-            const double t = load.time(0.0);
-            if (load.frame == LoadFrame::dead) {
-                e.f_dead += t * load.force;
-                e.m_dead += t * load.moment;
-            } else {
-                e.f_follower += t * load.force;
-                e.m_follower += t * load.moment;
-                layout.has_follower = true;
-            }
+            e.add_load(load, load.time(0.0));
+            if (load.frame == LoadFrame::follower) layout.has_follower = true;
         }
     }
 }

@@ -53,6 +53,18 @@ struct MixedElement {
     Vec3 m_dead = Vec3::Zero();
     Vec3 f_follower = Vec3::Zero();  // in the reference frame orientation: f = R_rel f0
     Vec3 m_follower = Vec3::Zero();
+
+    // Adds `factor` times a distributed load of the element's member to its dead or follower
+    // part.
+    void add_load(const DistributedLoad& load, double factor) {
+        if (load.frame == LoadFrame::dead) {
+            f_dead += factor * load.force;
+            m_dead += factor * load.moment;
+        } else {
+            f_follower += factor * load.force;
+            m_follower += factor * load.moment;
+        }
+    }
 };
 
 struct MixedLayout {

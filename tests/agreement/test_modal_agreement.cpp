@@ -19,6 +19,8 @@
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "runs/mode_matching.hpp"
 #include "tests/agreement/agreement_runs.hpp"
+#include "tests/displacement/modal_state.hpp"
+#include "tests/mixed/modal_state.hpp"
 
 using namespace rotbeam;
 
@@ -48,16 +50,9 @@ Model loaded_joined_beam(int elements, const std::string& formulation, int order
 Modes displacement_modes(int order) {
     const Model model = loaded_joined_beam(10, "displacement", order);
     form::DisplacementStatics<param::Quaternion> problem(model);
-    const StaticOutcome eq =
-        run_static(problem, {0.25, 0.5, 0.75, 1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    // A solved static state: the tolerances met, or stalled at round-off with its error bound.
-    BOOST_TEST_REQUIRE(has_solution(eq.status));
-    VecX r;
-    SparseMatrix K;
-    problem.evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(
-        model, form::build_mass_mesh(model),
-        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
+    SparseMatrix M;
+    const SparseMatrix K =
+        test::tangent_and_mass_at_equilibrium(model, problem, {0.25, 0.5, 0.75, 1.0}, M);
     const form::ModalSolution s = form::solve_modal(K, M, kComputed);
     BOOST_TEST(!s.symmetric);
     BOOST_TEST(s.accepted());
@@ -76,14 +71,10 @@ Modes displacement_modes(int order) {
 Modes mixed_modes(int elements) {
     using P = param::WienerMilenkovic;
     const Model model = loaded_joined_beam(elements, "mixed", 1);
-    form::MixedStatics<P> statics(model);
-    statics.set_load_factor(1.0);
-    BOOST_TEST_REQUIRE(solve_newton(statics, NewtonSettings{}).converged);
     form::MixedDynamics<P> dyn(form::frozen_loads(model, 1.0), 1.0);
-    const VecX x0 = dyn.from_static_state(statics.state_vector());
     VecX r;
     SparseMatrix A, B;
-    dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
+    test::linearize_about_static_equilibrium(model, dyn, r, A, B);
     const form::DaeModalSolution s = form::solve_dae_modal(A, B, kComputed);
     BOOST_TEST(s.accepted());
     Modes out;

@@ -33,15 +33,7 @@ scaling::Row seconds_per_iteration(int elements, int order) {
 void sweep(int order, const std::vector<int>& elements) {
     char name[64];
     std::snprintf(name, sizeof name, "displacement/quaternion, order %d", order);
-    scaling::print_header(name);
-    std::vector<scaling::Row> rows;
-    for (int n : elements) {
-        const bool reset = scaling::reset_peak_memory();
-        rows.push_back(seconds_per_iteration(n, order));
-        rows.back().peak_mb = scaling::peak_memory_mb();
-        scaling::print_row(rows.back(), reset);
-    }
-    scaling::print_slopes(rows);
+    scaling::sweep_sizes(name, elements, [&](int n) { return seconds_per_iteration(n, order); });
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/model.hpp"
+#include "tests/cases/catalog_model.hpp"
 
 namespace rotbeam::test {
 
@@ -44,21 +46,13 @@ inline Model cantilever(const Vec3& tip, const Section& section, int elements, i
     return m;
 }
 
-// docs/benchmarks.md §1: L = 12, E = 30e6, 1×1 square (EI = 2.5e6), ν = 0.3, shear factor 5/6;
-// tip moment −π EI / L e_y at load factor λ = 1.
+// docs/benchmarks.md §1, the catalog's cantilever-moment: L = 12, E = 30e6, 1×1 square
+// (EI = 2.5e6), ν = 0.3, shear factor 5/6; tip moment −π EI / L e_y at load factor λ = 1.
 inline constexpr double kRollupL = 12.0;
 inline constexpr double kRollupEI = 2.5e6;
 inline Model rollup(int elements, int order) {
-    const double E = 30e6, G = E / 2.6, A = 1.0, I = 1.0 / 12.0;
-    Model m = cantilever(Vec3(kRollupL, 0, 0),
-                         diagonal_section(E * A, 5.0 / 6.0 * G * A, 5.0 / 6.0 * G * A,
-                                          G * 0.140577, E * I, E * I),
-                         elements, order);
-    PointLoad l;
-    l.point = 1;
-    l.moment = Vec3(0.0, -kPi * kRollupEI / kRollupL, 0.0);
-    m.point_loads = {l};
-    return m;
+    return catalog_model("cantilever-moment", {"members.beam.elements=" + std::to_string(elements),
+                                               "discretization.order=" + std::to_string(order)});
 }
 
 // Exact roll-up tip displacement (u1, u2, u3) at λ.
@@ -67,22 +61,14 @@ inline Vec3 rollup_exact_tip(double lambda) {
     return Vec3(rho * std::sin(lambda * kPi) - kRollupL, 0.0, rho * (1.0 - std::cos(lambda * kPi)));
 }
 
-// docs/benchmarks.md §2: 45° arc of radius 100 in the x–y plane, centre (0, 100, 0), E = 1e7,
-// ν = 0, 1×1 square, J = 0.140577, shear factor 5/6, dead tip force P e_z (P = load factor).
+// docs/benchmarks.md §2, the catalog's bend-45: 45° arc of radius 100 in the x–y plane, centre
+// (0, 100, 0), E = 1e7, ν = 0, 1×1 square, shear factor 5/6, dead tip force P e_z (P = load
+// factor); the torsion constant J = 0.140577 of the tests' references instead of the catalog's
+// 1/6.
 inline Model bend45(int elements, int order) {
-    const double E = 1e7, G = 5e6, A = 1.0, I = 1.0 / 12.0;
-    const double c = std::sqrt(0.5);
-    Model m = cantilever(Vec3(100.0 * c, 100.0 * (1.0 - c), 0.0),
-                         diagonal_section(E * A, 5.0 / 6.0 * G * A, 5.0 / 6.0 * G * A,
-                                          G * 0.140577, E * I, E * I),
-                         elements, order);
-    m.members[0].line.kind = LineKind::arc;
-    m.members[0].line.center = Vec3(0.0, 100.0, 0.0);
-    PointLoad l;
-    l.point = 1;
-    l.force = Vec3(0.0, 0.0, 1.0);
-    m.point_loads = {l};
-    return m;
+    return catalog_model("bend-45", {"members.beam.elements=" + std::to_string(elements),
+                                     "discretization.order=" + std::to_string(order),
+                                     "sections.square.isotropic.J=0.140577"});
 }
 
 }  // namespace rotbeam::test

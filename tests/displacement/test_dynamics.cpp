@@ -98,6 +98,17 @@ void check_order(double rho) {
     }
 }
 
+// The first mode of the unloaded model in its reference configuration (rotations the identity).
+form::ModalSolution first_mode_at_rest(const Model& m,
+                                       form::DisplacementDynamics<param::RotationVector>& d) {
+    VecX r;
+    SparseMatrix K;
+    d.statics().evaluate(r, &K);
+    const SparseMatrix M = form::assemble_mass_matrix(m, form::build_mass_mesh(m),
+                                                      [](int) { return Mat3::Identity(); });
+    return form::solve_modal(K, M, 1);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(displacement_dynamics)
@@ -214,12 +225,7 @@ BOOST_AUTO_TEST_CASE(
     m.analysis.dynamics.initial_state = InitialState::rest;
     for (double h : {1e-3, 5e-4}) {
         form::DisplacementDynamics<param::RotationVector> d(m);
-        VecX r;
-        SparseMatrix K;
-        d.statics().evaluate(r, &K);
-        const SparseMatrix M = form::assemble_mass_matrix(m, form::build_mass_mesh(m),
-                                                          [](int) { return Mat3::Identity(); });
-        const form::ModalSolution modes = form::solve_modal(K, M, 1);
+        const form::ModalSolution modes = first_mode_at_rest(m, d);
         const double f1 = modes.frequencies_hz[0];
         const int tip = m.point_index("tip");
         const int tip_dof = d.mesh().nodes[d.mesh().point_node[tip]].dof;
@@ -268,12 +274,7 @@ BOOST_AUTO_TEST_CASE(stiffness_proportional_damping_decays_the_first_mode_at_its
     m.analysis.dynamics.initial_state = InitialState::rest;
     m.members[0].sections[0].section.damping = Vec6::Constant(kMu);
     form::DisplacementDynamics<param::RotationVector> d(m);
-    VecX r;
-    SparseMatrix K;
-    d.statics().evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(m, form::build_mass_mesh(m),
-                                                      [](int) { return Mat3::Identity(); });
-    const form::ModalSolution modes = form::solve_modal(K, M, 1);
+    const form::ModalSolution modes = first_mode_at_rest(m, d);
     const double omega = 2.0 * kPi * modes.frequencies_hz[0];
     const int tip_dof = d.mesh().nodes[d.mesh().point_node[m.point_index("tip")]].dof;
     VecX shape = modes.shapes[0];

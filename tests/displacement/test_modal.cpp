@@ -16,6 +16,7 @@
 #include "formulations/displacement/displacement_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rotation_vector.hpp"
+#include "tests/displacement/modal_state.hpp"
 #include "tests/displacement/models.hpp"
 
 using namespace rotbeam;
@@ -83,14 +84,8 @@ form::ModalSolution modes_under_follower_tip_force(double axial) {
     f.frame = LoadFrame::follower;
     model.point_loads = {f};
     form::DisplacementStatics<param::Quaternion> problem(model);
-    const StaticOutcome eq = run_static(problem, {1.0}, NewtonSettings{}, [](const StepRecord&) {});
-    BOOST_TEST_REQUIRE(has_solution(eq.status));
-    VecX r;
-    SparseMatrix K;
-    problem.evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(
-        model, form::build_mass_mesh(model),
-        [&](int node) { return param::Quaternion::matrix(problem.node_rotation(node)); });
+    SparseMatrix M;
+    const SparseMatrix K = test::tangent_and_mass_at_equilibrium(model, problem, {1.0}, M);
     return form::solve_modal(K, M, 4);
 }
 

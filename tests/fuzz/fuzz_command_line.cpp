@@ -119,22 +119,6 @@ const std::string& catalog_text(const std::string& name) {
     return it->second;
 }
 
-// `run`'s shorthand options become --set overrides (cases/runner/commands.cpp).
-std::vector<std::string> overrides_from(const ParsedArguments& a) {
-    std::vector<std::string> overrides;
-    const std::pair<const char*, const char*> shorthands[] = {
-        {"rotation", "discretization.rotation"},
-        {"formulation", "discretization.formulation"},
-        {"order", "discretization.order"},
-        {"elements", "members.*.elements"},
-        {"interpolation", "discretization.interpolation"}};
-    for (const auto& [option, key] : shorthands) {
-        if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
-    }
-    for (const std::string& s : a.values("set")) overrides.push_back(s);
-    return overrides;
-}
-
 void parse(const std::vector<std::string>& argv) {
     if (argv.empty()) return;
     const auto it = specs().find(argv[0]);
@@ -151,8 +135,8 @@ void parse(const std::vector<std::string>& argv) {
     (void)a.positive_int("study", "samples", rotbeam::cli::kMaxSamples, 2);
     (void)a.positive_number("run", "time-limit", rotbeam::cli::kMaxTimeLimit);
     if (spec.name == "check" || spec.name == "run" || spec.name == "reference") {
-        const rotbeam::Model model =
-            rotbeam::load_case_text(catalog_text(a.positional[0]), "case.yaml", overrides_from(a));
+        const rotbeam::Model model = rotbeam::load_case_text(
+            catalog_text(a.positional[0]), "case.yaml", rotbeam::cli::case_overrides(a));
         (void)rotbeam::describe_model(model);
     }
 }

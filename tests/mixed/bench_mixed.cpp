@@ -41,15 +41,9 @@ scaling::Row seconds_per_iteration(int elements) {
 template <class P>
 void sweep(const char* name, int largest, const char* only) {
     if (only != nullptr && std::strstr(name, only) != name) return;
-    scaling::print_header(name);
-    std::vector<scaling::Row> rows;
-    for (int n = 16; n <= largest; n *= 2) {
-        const bool reset = scaling::reset_peak_memory();
-        rows.push_back(seconds_per_iteration<P>(n));
-        rows.back().peak_mb = scaling::peak_memory_mb();
-        scaling::print_row(rows.back(), reset);
-    }
-    scaling::print_slopes(rows);
+    std::vector<int> sizes;
+    for (int n = 16; n <= largest; n *= 2) sizes.push_back(n);
+    scaling::sweep_sizes(name, sizes, [](int n) { return seconds_per_iteration<P>(n); });
 }
 
 }  // namespace

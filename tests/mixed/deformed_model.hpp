@@ -56,4 +56,14 @@ inline Model deformed_test_model() {
     return m;
 }
 
+// deformed_test_model with its tip also supported: a prescribed displacement and rotation
+// (scaled by the load factor), so the tip's rotation is ρ times the given one with ρ an unknown
+// (the quaternion's closure; mixed_layout.hpp).
+inline Model two_support_model() {
+    Model m = deformed_test_model();
+    m.constraints.push_back(Constraint{
+        2, Constraint::Kind::prescribed, Vec3(0.1, 0.2, -0.1), Vec3(0.3, -0.2, 0.5), {}});
+    return m;
+}
+
 }  // namespace rotbeam::test

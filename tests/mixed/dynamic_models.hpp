@@ -41,4 +41,18 @@ inline Model dynamic_test_model() {
     return m;
 }
 
+// dynamic_test_model with its tip also supported: a prescribed displacement and rotation moving
+// with a sine in time, so the tip's rotation is ρ times the given one with ρ an unknown.
+inline Model two_support_dynamic_model() {
+    Model m = dynamic_test_model();
+    TimeFunction sine;
+    sine.kind = TimeFunction::Kind::sine;
+    sine.value = 1.0;
+    sine.omega = 2.0;
+    sine.phase = 0.7;
+    m.constraints.push_back(Constraint{2, Constraint::Kind::prescribed, Vec3(0.1, 0.2, -0.1),
+                                       Vec3(0.3, -0.2, 0.5), sine});
+    return m;
+}
+
 }  // namespace rotbeam::test

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "core/model.hpp"
+#include "tests/displacement/models.hpp"
 
 namespace rotbeam::test {
 
@@ -27,56 +29,30 @@ inline Member member(const std::string& name, int start, int end, const Section&
     return m;
 }
 
-// §1: L = 12, EI = 2.5e6, tip moment −λ π EI / L e_y at load factor λ.
-inline constexpr double kRollupLength = 12.0;
-inline constexpr double kRollupEI = 2.5e6;
+// §1: L = 12, EI = 2.5e6 (kRollupL, kRollupEI, rollup_exact_tip: tests/displacement/models.hpp),
+// tip moment −λ π EI / L e_y at load factor λ.
+inline constexpr double kRollupLength = kRollupL;
 
 inline Model rollup_model(int elements) {
-    Model m;
-    m.name = "rollup";
-    m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(kRollupLength, 0, 0)}};
-    const double E = 30e6, G = E / 2.6, A = 1.0, I = 1.0 / 12.0;
-    // Torsion: St-Venant constant of the unit square (it does not enter the answer).
-    const Vec6 k =
-        (Vec6() << E * A, 5.0 / 6.0 * G * A, 5.0 / 6.0 * G * A, G * 0.140577, E * I, E * I)
-            .finished();
-    m.members = {member("beam", 0, 1, diagonal_section(k), elements)};
-    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
-    PointLoad load;
-    load.point = 1;
-    load.moment = Vec3(0, -kPi * kRollupEI / kRollupLength, 0);
-    m.point_loads = {load};
-    return m;
+    return catalog_model("cantilever-moment",
+                         {"discretization.formulation=mixed", "discretization.order=1",
+                          "members.beam.elements=" + std::to_string(elements)});
 }
 
-// Exact tip displacement of the roll-up at λ (docs/benchmarks.md §1).
-inline Vec3 rollup_exact_tip(double lambda) {
-    const double rho = kRollupLength / (lambda * kPi);
-    return Vec3(rho * std::sin(lambda * kPi) - kRollupLength, 0.0,
-                rho * (1.0 - std::cos(lambda * kPi)));
-}
-
-// §2: the 45° bend, R = 100, E = 1e7, ν = 0, J = 0.140577, shear factor 5/6; dead tip force
-// P e_z at load factor P.
+// §2: the 45° bend (the catalog's bend-45), R = 100, E = 1e7, ν = 0, dead tip force P e_z at load
+// factor P, with the given shear factor and torsion constant J.
 inline Model bend_model(int elements, double shear_factor = 5.0 / 6.0, double J = 0.140577) {
-    Model m;
-    m.name = "bend45";
-    const double R = 100.0;
-    m.points = {{"root", Vec3::Zero()},
-                {"tip", Vec3(R * std::sin(kPi / 4), R * (1 - std::cos(kPi / 4)), 0)}};
-    const double E = 1e7, G = 5e6, I = 1.0 / 12.0;
-    const Vec6 k =
-        (Vec6() << E, shear_factor * G, shear_factor * G, G * J, E * I, E * I).finished();
-    Member beam = member("beam", 0, 1, diagonal_section(k), elements);
-    beam.line.kind = LineKind::arc;
-    beam.line.center = Vec3(0, R, 0);
-    m.members = {beam};
-    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
-    PointLoad load;
-    load.point = 1;
-    load.force = Vec3(0, 0, 1.0);
-    m.point_loads = {load};
-    return m;
+    auto number = [](double v) {
+        std::ostringstream s;
+        s.precision(17);
+        s << v;
+        return s.str();
+    };
+    return catalog_model("bend-45", {"discretization.formulation=mixed", "discretization.order=1",
+                                     "members.beam.elements=" + std::to_string(elements),
+                                     "sections.square.isotropic.k2=" + number(shear_factor),
+                                     "sections.square.isotropic.k3=" + number(shear_factor),
+                                     "sections.square.isotropic.J=" + number(J)});
 }
 
 }  // namespace rotbeam::test

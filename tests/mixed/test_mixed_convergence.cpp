@@ -10,19 +10,14 @@
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "tests/core/tight_newton.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
 
 namespace {
 
-NewtonSettings tight() {
-    NewtonSettings s;
-    s.residual_tolerance = 1e-12;
-    s.increment_tolerance = 1e-12;
-    s.max_iterations = 60;
-    return s;
-}
+NewtonSettings tight() { return test::tight_newton(60); }
 
 template <class P>
 double rollup_error(int elements, double lambda) {

@@ -15,6 +15,7 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "tests/mixed/modal_state.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -171,14 +172,10 @@ BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
     f.force = Vec3(0, 0, 1e5);
     f.frame = LoadFrame::follower;
     model.point_loads = {f};
-    form::MixedStatics<P> statics(model);
-    statics.set_load_factor(1.0);
-    BOOST_REQUIRE(solve_newton(statics, NewtonSettings{}).converged);
     form::MixedDynamics<P> dyn(form::frozen_loads(model, 1.0), 1.0);
-    const VecX x0 = dyn.from_static_state(statics.state_vector());
     VecX r;
     SparseMatrix A, B;
-    dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
+    test::linearize_about_static_equilibrium(model, dyn, r, A, B);
     // The statics converged to 1e-12 of the scaled residual; the same rows here.
     BOOST_TEST((r.array() / dyn.residual_scale().array()).abs().maxCoeff() < 1e-10);
     const MatX Ad(A);

@@ -1,18 +1,19 @@
 // The mixed statics with four rotation unknowns (the quaternion; formulations/mixed/
 // mixed_statics.hpp with MixedNumbering's redundant parameter): the unknown count, exactness of the
-// reference configuration, the analytic Jacobian against central differences at a strongly deformed
-// state off the unit sphere (one support, and two supports with the scale ρ), no heap allocation
-// after the first evaluation, and the norm conservation of the discrete Eq. 48.
+// reference configuration, no heap allocation after the first evaluation, and the norm
+// conservation of the discrete Eq. 48 (the analytic Jacobian against central differences, one
+// support and two supports with the scale ρ, is the generic harness's:
+// tests/harness/test_jacobians.cpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "core/finite_difference.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/deformed_model.hpp"
+#include "tests/mixed/deformed_state.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -20,38 +21,6 @@ using Q = param::Quaternion;
 using Statics = form::MixedStatics<Q>;
 
 namespace {
-
-// deformed_test_model with its tip also supported: a prescribed displacement and rotation
-// (scaled by the load factor), so the tip's quaternion is ρ q_given with ρ an unknown.
-Model two_support_model() {
-    Model m = test::deformed_test_model();
-    m.constraints.push_back(Constraint{
-        2, Constraint::Kind::prescribed, Vec3(0.1, 0.2, -0.1), Vec3(0.3, -0.2, 0.5), {}});
-    return m;
-}
-
-// A deterministic state: rotations of 2.1–2.6 rad about axes varying along the structure, each
-// quaternion scaled off the unit sphere by 0.8–1.2 (R = C(q)/|q|² must not care, its derivatives
-// must carry the 1/|q|² terms), ρ = −0.9 (the other sign of a closure), unit-order other entries.
-VecX deformed_state(const Statics& problem) {
-    VecX x(problem.size());
-    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 0.5 * std::sin(0.37 * i + 0.2);
-    const form::MixedNumbering& layout = problem.numbering();
-    auto set_rotation = [&](int column, int k) {
-        const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
-        const double scale = 1.0 + 0.2 * std::sin(2.1 * k + 0.4);
-        x.segment<4>(column) =
-            scale * Q::from_rotation_vector((2.1 + 0.5 * std::sin(1.3 * k)) * axis);
-    };
-    for (int n = 0; n < layout.node_count(); ++n) {
-        if (!layout.supported(n)) set_rotation(layout.node_column(n) + 3, n);
-        if (layout.has_scale(n)) x[layout.node_column(n) + 6] = -0.9;
-    }
-    for (int e = 0; e < layout.element_count; ++e) {
-        set_rotation(layout.element_column(e) + 3, e + 7);
-    }
-    return x;
-}
 
 // The joined beam of docs/benchmarks.md §3 as a static case: two members from clamped roots
 // (0, ∓0.5, 0) to a common joint (1, 0, 0) m, the 0.1 × 0.05 m aluminium section, a follower force
@@ -85,28 +54,6 @@ Vec3 joined_beam_joint(Problem& problem) {
     return problem.point_state(2).displacement;
 }
 
-double jacobian_error(const Model& model) {
-    Statics problem(model);
-    problem.set_load_factor(1.3);
-    const VecX x0 = deformed_state(problem);
-    problem.set_state_vector(x0);
-    BOOST_TEST(problem.max_rotation_angle() > 2.0);
-    VecX r;
-    SparseMatrix J;
-    problem.evaluate(r, &J);
-    const MatX J_fd = central_difference_jacobian(
-        [&problem](const VecX& x) {
-            problem.set_state_vector(x);
-            VecX rx;
-            problem.evaluate(rx, nullptr);
-            return rx;
-        },
-        x0);
-    const MatX J_an = MatX(J);
-    BOOST_TEST(J_an.cwiseAbs().maxCoeff() > 1.0);  // the comparison is not vacuous
-    return (J_an - J_fd).cwiseAbs().maxCoeff();
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_quaternion_statics)
@@ -124,7 +71,7 @@ BOOST_AUTO_TEST_CASE(unknown_count_is_square_for_one_and_two_supports) {
     BOOST_TEST(e == 6);
     BOOST_TEST(one.size() == 13 * e + 7 * (nodes - 1) + 6);
     BOOST_TEST(one.size() == 14 * e + 6 * nodes);
-    const Statics two(two_support_model());
+    const Statics two(test::two_support_model());
     BOOST_TEST(two.size() == 13 * e + 7 * (nodes - 2) + 6 + 7);
     BOOST_TEST(two.size() == 14 * e + 6 * nodes);
 }
@@ -137,7 +84,7 @@ BOOST_AUTO_TEST_CASE(closed_loop_is_refused_with_an_input_error) {
 }
 
 BOOST_AUTO_TEST_CASE(reference_configuration_solves_the_unloaded_curved_structure) {
-    for (const Model& m : {test::deformed_test_model(), two_support_model()}) {
+    for (const Model& m : {test::deformed_test_model(), test::two_support_model()}) {
         Statics problem(m);
         problem.set_load_factor(0.0);
         VecX r;
@@ -147,24 +94,10 @@ BOOST_AUTO_TEST_CASE(reference_configuration_solves_the_unloaded_curved_structur
     }
 }
 
-// Everything is of unit order and |q| ∈ [0.8, 1.2]: the central-difference step h ≈ ∛ε ≈ 6e-6
-// leaves a truncation error h²|f'''|/6 ≲ 1e-9 for third derivatives ≲ 100 (R = C(q)/|q|² adds
-// factors 1/|q|ᵏ ≤ 1.25ᵏ to the three-parameter case's ≲ 30) and a round-off ε|f|/h ≲ 1e-10. 1e-6
-// keeps a margin of ≥ 100 while any wrong term (a sign, a missing 1/|q|² derivative, a
-// misplaced ρ column) is O(0.1–1).
-BOOST_AUTO_TEST_CASE(jacobian_matches_central_differences_at_deformed_state) {
-    const double one = jacobian_error(test::deformed_test_model());
-    const double two = jacobian_error(two_support_model());
-    BOOST_TEST_MESSAGE("quaternion: max |J − J_fd| = " << one << " (one support), " << two
-                                                       << " (two supports, ρ)");
-    BOOST_TEST(one < 1e-6);
-    BOOST_TEST(two < 1e-6);
-}
-
 BOOST_AUTO_TEST_CASE(evaluation_keeps_the_pattern_and_allocates_nothing_after_first_call) {
-    Statics problem(two_support_model());
+    Statics problem(test::two_support_model());
     problem.set_load_factor(0.8);
-    problem.set_state_vector(deformed_state(problem));
+    problem.set_state_vector(test::deformed_mixed_state<Q>(problem.numbering()));
     VecX r;
     SparseMatrix J;
     problem.evaluate(r, &J);

@@ -1,19 +1,20 @@
 // The mixed dynamics with the quaternion (formulations/mixed/mixed_dynamics.hpp): the
-// unknown count, ∂F/∂X and ∂F/∂Ẋ against central differences at a deformed, moving state off the
-// unit sphere (one support, and a second, prescribed and moving support with the scale ρ), the
-// radial rate entering nowhere, no allocation after the first evaluation, consistent initial
-// conditions from a non-equilibrium start by IDACalcIC and by the Newton on the initial-condition
-// chart, and the norm kept by the Cayley relations along a fixed-step run.
+// unknown count (one support, and a second, prescribed and moving support with the scale ρ), no
+// allocation after the first evaluation, consistent initial conditions from a non-equilibrium
+// start by IDACalcIC and by the Newton on the initial-condition chart, and the norm kept by the
+// Cayley relations along a fixed-step run (∂F/∂X and ∂F/∂Ẋ against central differences, and the
+// radial rate entering nowhere, are the generic harness's: tests/harness/test_jacobians.cpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "core/dae_driver.hpp"
-#include "core/finite_difference.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "tests/mixed/allocation_counter.hpp"
+#include "tests/mixed/deformed_state.hpp"
 #include "tests/mixed/dynamic_models.hpp"
+#include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
 using Q = param::Quaternion;
@@ -21,78 +22,11 @@ using Dynamics = form::MixedDynamics<Q>;
 
 namespace {
 
-// dynamic_test_model with its tip also supported: a prescribed displacement and rotation moving
-// with a sine in time, so the tip's quaternion is ρ q_given(t) with ρ an unknown.
-Model two_support_model() {
-    Model m = test::dynamic_test_model();
-    TimeFunction sine;
-    sine.kind = TimeFunction::Kind::sine;
-    sine.value = 1.0;
-    sine.omega = 2.0;
-    sine.phase = 0.7;
-    m.constraints.push_back(Constraint{2, Constraint::Kind::prescribed, Vec3(0.1, 0.2, -0.1),
-                                       Vec3(0.3, -0.2, 0.5), sine});
-    return m;
-}
-
-// Rotations of 2.1–2.6 rad about axes varying along the structure, each quaternion scaled off the
-// unit sphere by 0.8–1.2 (R = C(q)/|q|² must not care), ρ = −0.9, unit-order other entries and
-// unit-order rates of every unknown (the algebraic ones too: F must not depend on them).
+// The deformed, moving state of tests/mixed/deformed_state.hpp: quaternions off the unit sphere,
+// ρ = −0.9 at a second support, unit-order rates of every unknown.
 void moving_state(const Dynamics& dyn, VecX& x, VecX& xdot) {
-    x.resize(dyn.size());
-    xdot.resize(dyn.size());
-    for (int i = 0; i < dyn.size(); ++i) {
-        x[i] = 0.5 * std::sin(0.37 * i + 0.2);
-        xdot[i] = 0.7 * std::cos(0.53 * i + 0.1);
-    }
-    auto set_rotation = [&](int column, int k) {
-        const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
-        const double scale = 1.0 + 0.2 * std::sin(2.1 * k + 0.4);
-        x.segment<4>(column) =
-            scale * Q::from_rotation_vector((2.1 + 0.5 * std::sin(1.3 * k)) * axis);
-    };
-    for (int n = 0; n < dyn.node_count(); ++n) {
-        if (!dyn.supported(n)) set_rotation(dyn.node_column(n) + 3, n);
-        if (dyn.numbering().has_scale(n)) x[dyn.node_column(n) + 6] = -0.9;
-    }
-    for (int e = 0; e < dyn.element_count(); ++e) set_rotation(dyn.element_column(e) + 3, e + 7);
-}
-
-// ∂F/∂X and ∂F/∂Ẋ against central differences; returns the two max deviations.
-std::pair<double, double> jacobian_errors(Dynamics& dyn, const VecX& x0, const VecX& xd0,
-                                          double t) {
-    VecX r;
-    SparseMatrix Jx, Jxd;
-    dyn.evaluate(t, x0, xd0, r, &Jx, &Jxd);
-    const MatX Jx_fd = central_difference_jacobian(
-        [&](const VecX& x) {
-            VecX rx;
-            dyn.evaluate(t, x, xd0, rx, nullptr, nullptr);
-            return rx;
-        },
-        x0);
-    const MatX Jxd_fd = central_difference_jacobian(
-        [&](const VecX& xd) {
-            VecX rx;
-            dyn.evaluate(t, x0, xd, rx, nullptr, nullptr);
-            return rx;
-        },
-        xd0);
-    // Not vacuous: both Jacobians are of unit order, and F depends on the rates.
-    BOOST_TEST(MatX(Jx).cwiseAbs().maxCoeff() > 1.0);
-    BOOST_TEST(MatX(Jxd).cwiseAbs().maxCoeff() > 0.5);
-    // Algebraic unknowns have no rate in F, and neither has the radial direction of an element's
-    // q: ∂F/∂Ẋ q = 0 (H_m q = 0).
-    const MatX Jd = MatX(Jxd);
-    for (int j = 0; j < dyn.size(); ++j) {
-        if (dyn.differential()[j] == 0.0) BOOST_TEST(Jd.col(j).cwiseAbs().maxCoeff() == 0.0);
-    }
-    for (int e = 0; e < dyn.element_count(); ++e) {
-        const int c = dyn.element_column(e) + dyn.numbering().c();
-        const VecX radial = Jd.middleCols<4>(c) * x0.segment<4>(c);
-        BOOST_TEST(radial.cwiseAbs().maxCoeff() < 1e-14 * Jd.middleCols<4>(c).norm());
-    }
-    return {(MatX(Jx) - Jx_fd).cwiseAbs().maxCoeff(), (MatX(Jxd) - Jxd_fd).cwiseAbs().maxCoeff()};
+    x = test::deformed_mixed_state<Q>(dyn.numbering());
+    xdot = test::mixed_rates(dyn.size());
 }
 
 }  // namespace
@@ -102,7 +36,7 @@ BOOST_AUTO_TEST_SUITE(mixed_quaternion_dynamics)
 // 19 unknowns and 20 rows per element, 7 unknowns and 6 rows per free node, 6 at the first
 // support and 7 (ρ) at every further one: square on a tree (docs/mixed-dynamics.md).
 BOOST_AUTO_TEST_CASE(unknown_count_is_square_on_a_tree) {
-    for (const Model& m : {test::dynamic_test_model(), two_support_model()}) {
+    for (const Model& m : {test::dynamic_test_model(), test::two_support_dynamic_model()}) {
         const Dynamics dyn(m, 1.0);
         int free = 0, supports = 0;
         for (int n = 0; n < dyn.node_count(); ++n) (dyn.supported(n) ? supports : free) += 1;
@@ -111,27 +45,6 @@ BOOST_AUTO_TEST_CASE(unknown_count_is_square_on_a_tree) {
         BOOST_TEST(dyn.size() == columns);
         BOOST_TEST(dyn.size() == rows);
         BOOST_TEST(dyn.pattern().rows() == dyn.size());
-    }
-}
-
-// As the three-parameter test (test_mixed_dynamics_jacobian.cpp): unit-order quantities, step
-// ∛ε·max(1,|x|) ≲ 6e-5, truncation h²|f'''|/6 ≲ 1e-8, round-off ≲ 1e-10: 1e-6 keeps a margin of
-// 100 while a wrong term (a sign, a missing 1/|q|², a transpose of C^ab) is O(0.1–1).
-BOOST_AUTO_TEST_CASE(jacobians_match_central_differences_at_moving_deformed_state) {
-    for (const bool two_supports : {false, true}) {
-        Dynamics dyn(two_supports ? two_support_model() : test::dynamic_test_model(), 1.0);
-        VecX x0, xd0;
-        moving_state(dyn, x0, xd0);
-        const auto [ex, exd] = jacobian_errors(dyn, x0, xd0, 0.37);
-        BOOST_TEST_MESSAGE("quaternion, " << (two_supports ? "two supports (ρ)" : "one support")
-                                          << ", " << dyn.size() << " unknowns"
-                                          << ": max |∂F/∂X − FD| = " << ex
-                                          << ", max |∂F/∂Ẋ − FD| = " << exd << ", largest rotation "
-                                          << dyn.max_rotation_angle(x0));
-        BOOST_TEST(ex < 1e-6);
-        BOOST_TEST(exd < 1e-6);
-        BOOST_TEST(dyn.max_rotation_angle(x0) > 2.0);
-        BOOST_TEST(dyn.numbering().has_scale(2) == two_supports);  // the tip's ρ column
     }
 }
 
@@ -161,7 +74,7 @@ BOOST_AUTO_TEST_CASE(at_rest_the_residual_is_the_static_one) {
 }
 
 BOOST_AUTO_TEST_CASE(evaluation_allocates_nothing_after_first_call) {
-    Dynamics dyn(two_support_model(), 1.0);
+    Dynamics dyn(test::two_support_dynamic_model(), 1.0);
     VecX x, xd, r;
     moving_state(dyn, x, xd);
     SparseMatrix Jx, Jxd;
@@ -205,52 +118,24 @@ BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
     dyn.set_translational_momenta(x0, Vec3(0.3, -0.2, 0.5));
     const VecX xd0 = VecX::Zero(dyn.size());
     const double t0 = 0.4;
-    VecX r;
-    dyn.evaluate(t0, x0, xd0, r, nullptr, nullptr);
-    const double r0 = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    BOOST_TEST(r0 > 0.1);
-
-    VecX xn = x0, xdn = xd0;
-    const NewtonOutcome newton =
-        consistent_initial_conditions(dyn, t0, xn, xdn, time_step_newton_settings(), 1e-3);
-    BOOST_REQUIRE(newton.converged);
-
-    VecX xi = x0, xdi = xd0;
-    DaeSettings s;
-    s.start_time = t0;
-    s.end_time = t0 + 1e-3;
-    s.time_step = 1e-3;
-    s.relative_tolerance = 1e-10;
-    s.absolute_tolerance = 1e-10;
-    VecX x_ic, xd_ic;
-    const DaeOutcome out =
-        integrate_ida(dyn, xi, xdi, s, [&](double t, const VecX& x, const VecX& xd, int) {
-            if (t == t0) {
-                x_ic = x;
-                xd_ic = xd;
-            }
-        });
-    BOOST_REQUIRE(out.status == SolveStatus::converged);
-    BOOST_REQUIRE(x_ic.size() == dyn.size());
-    dyn.evaluate(t0, x_ic, xd_ic, r, nullptr, nullptr);
-    const double r_ic = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    const double dx = ((x_ic - xn).array() / dyn.state_scale().array()).abs().maxCoeff();
-    const double dxd = (xd_ic - xdn).cwiseAbs().maxCoeff() / xdn.cwiseAbs().maxCoeff();
+    const test::TwoInitialConditions ic = test::consistent_twice(dyn, t0, x0, xd0);
+    BOOST_TEST(ic.r0 > 0.1);
     double kept = 0.0, tangent = 0.0;
     for (int e = 0; e < dyn.element_count(); ++e) {
-        const int c = dyn.element_column(e) + dyn.numbering().c();
-        kept = std::max(kept, (x_ic.segment<4>(c) - x0.segment<4>(c)).cwiseAbs().maxCoeff());
-        tangent = std::max(tangent, std::abs(x_ic.segment<4>(c).dot(xd_ic.segment<4>(c))));
+        const int col = dyn.element_column(e) + dyn.numbering().c();
+        const VecX& x = ic.x_ic;
+        kept = std::max(kept, (x.segment<4>(col) - x0.segment<4>(col)).cwiseAbs().maxCoeff());
+        tangent = std::max(tangent, std::abs(x.segment<4>(col).dot(ic.xd_ic.segment<4>(col))));
     }
-    BOOST_TEST_MESSAGE("quaternion: scaled residual before " << r0 << ", after IDACalcIC " << r_ic
-                                                             << "; IDACalcIC vs Newton: X " << dx
-                                                             << ", Ẋ " << dxd);
-    BOOST_TEST(r_ic < 1e-8);
-    BOOST_TEST(dx < 1e-8);
-    BOOST_TEST(dxd < 1e-8);
+    BOOST_TEST_MESSAGE("quaternion: scaled residual before "
+                       << ic.r0 << ", after IDACalcIC " << ic.r_ic << "; IDACalcIC vs Newton: X "
+                       << ic.dx << ", Ẋ " << ic.dxd);
+    BOOST_TEST(ic.r_ic < 1e-8);
+    BOOST_TEST(ic.dx < 1e-8);
+    BOOST_TEST(ic.dxd < 1e-8);
     BOOST_TEST(kept < 1e-12);  // the element rotations (a consistent norm) are kept
     BOOST_TEST(tangent < 1e-12);
-    BOOST_TEST(xdn.cwiseAbs().maxCoeff() > 0.1);
+    BOOST_TEST(ic.xd_newton.cwiseAbs().maxCoeff() > 0.1);
 }
 
 // Along a fixed-step run from a non-equilibrium start (rigid velocity, sine loads), rotating the

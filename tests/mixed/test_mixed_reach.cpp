@@ -16,20 +16,14 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "tests/core/tight_newton.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
 
 namespace {
 
-NewtonSettings reach_settings() {
-    NewtonSettings s;
-    s.residual_tolerance = 1e-12;
-    s.increment_tolerance = 1e-12;
-    s.max_iterations = 60;
-    s.max_step_cuts = 8;
-    return s;
-}
+NewtonSettings reach_settings() { return test::tight_newton(60, 8); }
 
 double tip_error(const StaticProblem& problem, double lambda) {
     const Vec3 u = problem.point_state(1).displacement;

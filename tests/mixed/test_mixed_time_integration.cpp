@@ -17,7 +17,9 @@
 #include "parameterizations/rodrigues.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
+#include "tests/cases/catalog_model.hpp"
 #include "tests/mixed/dynamic_models.hpp"
+#include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
 using ThreeParameterTypes =
@@ -28,25 +30,9 @@ namespace {
 // docs/benchmarks.md §8 (cases/free-vibration.yaml): L = 1 m, h = 0.01 m, E = 2.1e11, ν = 0.3,
 // ρ = 7850, tip force 1 N released at t = 0 (table 1 → 0 within 1e-12 s).
 Model free_vibration(int elements) {
-    Model m;
-    m.points = {{"root", Vec3::Zero()}, {"tip", Vec3(1, 0, 0)}};
-    const double E = 2.1e11, G = E / 2.6, h = 0.01, A = h * h, I = h * h * h * h / 12.0;
-    const double k = 5.0 / 6.0, rho = 7850;
-    Section s = test::diagonal_section(
-        (Vec6() << E * A, k * G * A, k * G * A, G * 1.40577e-9, E * I, E * I).finished());
-    s.mass = Mat6((Vec6() << rho * A, rho * A, rho * A, 2 * rho * I, rho * I, rho * I)
-                      .finished()
-                      .asDiagonal());
-    m.members = {test::member("beam", 0, 1, s, elements)};
-    m.constraints = {Constraint{0, Constraint::Kind::clamped, Vec3::Zero(), Vec3::Zero(), {}}};
-    PointLoad release;
-    release.point = 1;
-    release.force = Vec3(0, 0, 1);
-    release.time.kind = TimeFunction::Kind::table;
-    release.time.times = {0.0, 1e-12};
-    release.time.values = {1.0, 0.0};
-    m.point_loads = {release};
-    return m;
+    return test::catalog_model("free-vibration",
+                               {"discretization.formulation=mixed", "discretization.order=1",
+                                "members.beam.elements=" + std::to_string(elements)});
 }
 
 // The static state under the load at t = 0, as the dynamic state at rest.
@@ -192,49 +178,21 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(calc_ic_makes_a_non_equilibrium_start_consistent, 
     dyn.set_translational_momenta(x0, Vec3(0.3, -0.2, 0.5));
     const VecX xd0 = VecX::Zero(dyn.size());
     const double t0 = 0.4;
-    VecX r;
-    dyn.evaluate(t0, x0, xd0, r, nullptr, nullptr);
-    const double r0 = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
-    BOOST_TEST(r0 > 0.1);  // the start is not consistent
-
-    VecX xn = x0, xdn = xd0;
-    const NewtonSettings ns = time_step_newton_settings();
-    const NewtonOutcome newton = consistent_initial_conditions(dyn, t0, xn, xdn, ns, 1e-3);
-    BOOST_REQUIRE(newton.converged);
-
-    VecX xi = x0, xdi = xd0;
-    DaeSettings s;
-    s.start_time = t0;
-    s.end_time = t0 + 1e-3;
-    s.time_step = 1e-3;
-    s.relative_tolerance = 1e-10;
-    s.absolute_tolerance = 1e-10;
-    VecX x_ic, xd_ic;
-    const DaeOutcome out =
-        integrate_ida(dyn, xi, xdi, s, [&](double t, const VecX& x, const VecX& xd, int) {
-            if (t == t0) {
-                x_ic = x;
-                xd_ic = xd;
-            }
-        });
-    BOOST_REQUIRE(out.status == SolveStatus::converged);
-    BOOST_REQUIRE(x_ic.size() == dyn.size());
-    dyn.evaluate(t0, x_ic, xd_ic, r, nullptr, nullptr);
-    const double r_ic = (r.array() / dyn.residual_scale().array()).abs().maxCoeff();
+    const test::TwoInitialConditions ic = test::consistent_twice(dyn, t0, x0, xd0);
+    BOOST_TEST(ic.r0 > 0.1);  // the start is not consistent
     // IDACalcIC stops when its weighted correction is below 0.0033 (epiccon) × (rtol|y| + atol):
     // with 1e-10 tolerances on unit-order unknowns the residual is ≲ 1e-12 · ‖J‖ ≲ 1e-10.
-    const double dx = ((x_ic - xn).array() / dyn.state_scale().array()).abs().maxCoeff();
-    const double dxd = (xd_ic - xdn).cwiseAbs().maxCoeff() / xdn.cwiseAbs().maxCoeff();
-    BOOST_TEST_MESSAGE(P::kName << ": scaled residual before " << r0 << ", after IDACalcIC " << r_ic
-                                << "; IDACalcIC vs Newton: X " << dx << ", Ẋ " << dxd);
-    BOOST_TEST(r_ic < 1e-8);
-    BOOST_TEST(dx < 1e-8);
-    BOOST_TEST(dxd < 1e-8);
+    BOOST_TEST_MESSAGE(P::kName << ": scaled residual before " << ic.r0 << ", after IDACalcIC "
+                                << ic.r_ic << "; IDACalcIC vs Newton: X " << ic.dx << ", Ẋ "
+                                << ic.dxd);
+    BOOST_TEST(ic.r_ic < 1e-8);
+    BOOST_TEST(ic.dx < 1e-8);
+    BOOST_TEST(ic.dxd < 1e-8);
     // The differential unknowns were kept; the rates are not zero (the start was not at rest).
     for (int i = 0; i < dyn.size(); ++i) {
-        if (dyn.differential()[i] != 0.0) BOOST_TEST(x_ic[i] == x0[i]);
+        if (dyn.differential()[i] != 0.0) BOOST_TEST(ic.x_ic[i] == x0[i]);
     }
-    BOOST_TEST(xdn.cwiseAbs().maxCoeff() > 0.1);
+    BOOST_TEST(ic.xd_newton.cwiseAbs().maxCoeff() > 0.1);
 }
 
 // Observed orders of the fixed-step scheme on the free-vibration cantilever: tip u_z at ten

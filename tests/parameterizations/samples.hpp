@@ -15,9 +15,18 @@
 
 namespace rotbeam::test {
 
-using AllParameterizationTypes =
-    boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                     param::RotationVector, param::EulerAngles>;
+namespace detail {
+template <class List>
+struct AsMplList;
+template <class... Ts>
+struct AsMplList<param::TypeList<Ts...>> {
+    using type = boost::mpl::list<Ts...>;
+};
+}  // namespace detail
+
+// Every registered parameterization (parameterizations/registry.hpp), for
+// BOOST_AUTO_TEST_CASE_TEMPLATE.
+using AllParameterizationTypes = detail::AsMplList<param::AllParameterizations>::type;
 
 inline constexpr double kEps = std::numeric_limits<double>::epsilon();
 

@@ -6,10 +6,8 @@
 set -u
 rotbeam="$1"
 cases="$2/cases"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 # case formulation rotation extra-set expected-extra-counter
 while read -r case formulation rotation extra counter; do

@@ -13,10 +13,8 @@
 # formulations. Usage: joined_beam_agreement.sh ROTBEAM
 set -u
 rotbeam=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 "$rotbeam" study joined-beam-agreement --quick --out "$work/s" >/dev/null 2>&1 ||
     fail "study failed"

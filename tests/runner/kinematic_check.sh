@@ -11,10 +11,8 @@
 # (3.5e-4 L) are not flagged, nor are the roll-up to λ = 4, the helix and the 45° bend.
 set -u
 rotbeam=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 status_of() {  # status_of NAME CASE ARGS...: runs, writes $work/NAME.json
     local name=$1

@@ -8,10 +8,8 @@
 set -u
 rotbeam=$1
 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 for rotation in wiener-milenkovic rodrigues rotation-vector euler-angles quaternion; do
     for integrator in trapezoidal ida; do

@@ -4,10 +4,8 @@
 set -u
 rotbeam=$1
 src=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 # expect_input_error DESCRIPTION ARGS...: exit code 2, exactly one line on stderr, nothing on stdout.
 expect_input_error() {

@@ -1,7 +1,5 @@
-# Checks of rotbeam output folders shared by the suite tests (docs/durability.md); sourced, with
-# `compare` (scripts/compare-results.py) and `work` (a scratch folder) set by the caller.
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# Checks of rotbeam output folders shared by the suite tests (docs/durability.md); sourced after
+# scratch.sh (work, fail), with `compare` (scripts/compare-results.py) set by the caller.
 
 same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
     "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {

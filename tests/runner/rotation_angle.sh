@@ -12,10 +12,8 @@
 # the second-order terms of a varying axis.
 set -u
 rotbeam=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 run() {  # run NAME CASE ARGS...: writes $work/NAME.json
     local name=$1

@@ -8,9 +8,8 @@
 set -u
 rotbeam=$1
 compare=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-# fail, same (compare-results.py) and complete_files.
+# work (a scratch folder), fail and failures; same (compare-results.py) and complete_files.
+. "$(dirname "$0")/scratch.sh"
 . "$(dirname "$0")/results_check.sh"
 
 for jobs in 1 2; do

@@ -6,10 +6,8 @@
 # when gnuplot is installed, the figure; --quick plans no dynamic run. Usage: suite_dynamics.sh ROTBEAM
 set -u
 rotbeam=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# work (a scratch folder), fail and failures.
+. "$(dirname "$0")/scratch.sh"
 
 "$rotbeam" suite --cases 'joined-beam*' --no-studies --jobs 2 --out "$work/s" >/dev/null 2>&1 ||
     fail "suite failed"

@@ -13,9 +13,8 @@
 set -u
 rotbeam=$1
 compare=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-# fail, same (compare-results.py) and complete_files.
+# work (a scratch folder), fail and failures; same (compare-results.py) and complete_files.
+. "$(dirname "$0")/scratch.sh"
 . "$(dirname "$0")/results_check.sh"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.

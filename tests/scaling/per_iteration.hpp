@@ -150,4 +150,19 @@ inline void print_slopes(const std::vector<Row>& rows) {
         fitted_slope(rows, 500));
 }
 
+// One sweep: the header, then measure(n) (a Row) for every n of `sizes` with that size's own peak
+// memory, then the slopes.
+template <class Measure>
+void sweep_sizes(const char* name, const std::vector<int>& sizes, Measure measure) {
+    print_header(name);
+    std::vector<Row> rows;
+    for (int n : sizes) {
+        const bool reset = reset_peak_memory();
+        rows.push_back(measure(n));
+        rows.back().peak_mb = peak_memory_mb();
+        print_row(rows.back(), reset);
+    }
+    print_slopes(rows);
+}
+
 }  // namespace rotbeam::scaling

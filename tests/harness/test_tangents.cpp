@@ -5,7 +5,8 @@
 #include <boost/test/unit_test.hpp>
 #include <functional>
 
-#include "samples.hpp"
+#include "tests/harness/coverage.hpp"
+#include "tests/parameterizations/samples.hpp"
 
 namespace rotbeam::test {
 namespace {
@@ -33,6 +34,7 @@ std::vector<std::pair<std::string, Vp<P>>> tangent_samples() {
         out.emplace_back("a2 = pi/2 + 0.3", Vp<P>(0.7, 0.5 * kPi + 0.3, 0.2));
         out.emplace_back("a1, a3 past 2pi", Vp<P>(7.0, -0.4, -6.9));
     }
+    for (const auto& sample : out) checked("identity", P::kName, sample.first);
     return out;
 }
 

@@ -1,7 +1,8 @@
 // Algebraic identities of every parameterization on the shared hard sample set.
 #include <boost/test/unit_test.hpp>
 
-#include "samples.hpp"
+#include "tests/harness/coverage.hpp"
+#include "tests/parameterizations/samples.hpp"
 
 namespace rotbeam::test {
 namespace {
@@ -11,6 +12,7 @@ template <class P>
 bool sample_parameters(const Sample& s, typename P::P& p) {
     if (!chart_contains<P>(s.angle)) return false;
     p = P::from_rotation_vector(s.angle * generic_axis());
+    checked("identity", P::kName, s.label);
     return true;
 }
 
