@@ -179,6 +179,10 @@ struct Analysis {
     // `rotbeam run` estimates the discretization error (docs/error-estimates.md) unless false;
     // `run --estimate on|off` overrides it.
     bool estimate = true;
+    // `rotbeam run` refines the discretization until every estimate is at most accuracy / 2
+    // relative to its scale (docs/accuracy-control.md); 0 = run the discretization as given.
+    // `run --accuracy TOL` sets it.
+    double accuracy = 0.0;
 };
 
 enum class Quadrature { automatic, reduced, full, gll };

@@ -37,7 +37,8 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"absolute_tolerance", {"dynamic"}},
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}},
-    {"estimate", {"static", "dynamic", "modal"}}};
+    {"estimate", {"static", "dynamic", "modal"}},
+    {"accuracy", {"static", "modal"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
     if (n["load_factors"] || required) {
@@ -157,6 +158,21 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     }
     Analysis& a = model.analysis;
     if (n["estimate"]) a.estimate = r.boolean(n["estimate"], "analysis.estimate");
+    if (n["accuracy"]) {
+        // The target of accuracy control (docs/accuracy-control.md): refines until the estimates
+        // meet it, so it needs them.
+        a.accuracy = r.positive(n["accuracy"], "analysis.accuracy");
+        if (a.accuracy < kMinAccuracy || a.accuracy >= kMaxAccuracy) {
+            std::ostringstream m;
+            m << "must lie in [" << kMinAccuracy << ", " << kMaxAccuracy
+              << ") (a relative accuracy; docs/accuracy-control.md)";
+            r.fail(n["accuracy"], "analysis.accuracy", m.str());
+        }
+        if (!a.estimate) {
+            r.fail(n["accuracy"], "analysis.accuracy",
+                   "needs the error estimate, which analysis.estimate: false switches off");
+        }
+    }
     if (type == "static") {
         a.kind = AnalysisKind::static_;
         read_static(r, n, a.statics, true);
