@@ -201,6 +201,10 @@ struct Discretization {
     // φ = 2π) or `continuous` (GXBeam's continuous rescaling map,
     // parameterizations/wiener_milenkovic_continuous.hpp).
     WmMap wm_map = WmMap::plain;
+    // discretization.accuracy: per formulation, the accuracy the case's own discretization is
+    // meant to reach, in the sense of analysis.accuracy (every estimate ≤ half of it relative to
+    // its scale, docs/accuracy-control.md); a statement checked by the tests, not a target.
+    std::map<Formulation, double> stated_accuracy;
 };
 
 struct SolverSettings {

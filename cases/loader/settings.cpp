@@ -131,6 +131,25 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     }
 }
 
+// discretization.accuracy: {FORMULATION: TOL}, each TOL in the range of analysis.accuracy.
+void read_stated_accuracy(const YamlReader& r, const YAML::Node& n, Discretization& d) {
+    const std::string k = "discretization.accuracy";
+    if (!n.IsMap()) r.fail(n, k, "expected a mapping of formulation: accuracy");
+    r.expect_unique_keys(n, k);
+    for (const auto& item : n) {
+        const std::string name = item.first.Scalar();
+        const std::optional<Formulation> f = parse_choice<Formulation>(name);
+        if (!f) r.fail(item.first, k + "." + name, "unknown formulation");
+        const double tol = r.positive(item.second, k + "." + name);
+        if (tol < kMinAccuracy || tol >= kMaxAccuracy) {
+            std::ostringstream m;
+            m << "must lie in [" << kMinAccuracy << ", " << kMaxAccuracy << ")";
+            r.fail(item.second, k + "." + name, m.str());
+        }
+        d.stated_accuracy[*f] = tol;
+    }
+}
+
 }  // namespace
 
 void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
@@ -196,7 +215,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     const std::string k = "discretization";
     r.expect_map(n, k,
                  {"formulation", "rotation", "order", "quadrature", "quadrature_points",
-                  "interpolation", "update", "rescale", "mass_rule", "wm_map"});
+                  "interpolation", "update", "rescale", "mass_rule", "wm_map", "accuracy"});
     Discretization& d = model.discretization;
     if (n["formulation"])
         d.formulation = read_choice<Formulation>(r, n["formulation"], k + ".formulation");
@@ -222,6 +241,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
                std::string(comb::traits(d.formulation).no_lumped_mass_reason));
     }
     if (n["wm_map"]) d.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
+    if (n["accuracy"]) read_stated_accuracy(r, n["accuracy"], d);
 }
 
 void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
