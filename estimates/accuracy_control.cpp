@@ -23,8 +23,9 @@ using Clock = std::chrono::steady_clock;
 // the cheaper refinement (docs/accuracy-control.md, "Strategy", measured).
 constexpr double kSpectralRatio = 0.5;
 // Below this order the p-sequence on a coarse mesh is not yet spectral even for a smooth solution
-// (the locking bump of orders 2–3 on two elements, docs/studies.md): p is raised regardless.
-constexpr int kMinSpectralOrder = 4;
+// (the locking bump of orders 2–3 on two elements, docs/studies.md; one element turning 2π decays
+// by only 0.65–0.73 per order up to order 4, then spectrally): p is raised regardless.
+constexpr int kMinSpectralOrder = 6;
 // At most this many orders are added at once: the prediction from ρ extrapolates a decay seen
 // over one or two orders.
 constexpr int kMaxOrderJump = 4;
