@@ -48,6 +48,11 @@ inline constexpr int kMaxStepCuts = 40;
 inline constexpr double kMaxTimeSteps = 1e6;
 // analysis.modes.
 inline constexpr int kMaxModes = 1000;
+// analysis.accuracy (and `run --accuracy`): 1e-12 ≤ TOL < 1. Below 1e-12 the target TOL/2 lies
+// under the solves' own round-off (the Newton acceptance bounds the scaled algebraic error near
+// 1e-12, docs/solver-convergence.md); 1 asks for nothing (docs/accuracy-control.md).
+inline constexpr double kMinAccuracy = 1e-12;
+inline constexpr double kMaxAccuracy = 1.0;  // exclusive
 // solver.max_iterations (Newton iterations per step; the catalog converges in under 50).
 inline constexpr int kMaxNewtonIterations = 10000;
 

@@ -37,7 +37,8 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"absolute_tolerance", {"dynamic"}},
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}},
-    {"estimate", {"static", "dynamic", "modal"}}};
+    {"estimate", {"static", "dynamic", "modal"}},
+    {"accuracy", {"static", "modal"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
     if (n["load_factors"] || required) {
@@ -130,6 +131,25 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     }
 }
 
+// discretization.accuracy: {FORMULATION: TOL}, each TOL in the range of analysis.accuracy.
+void read_stated_accuracy(const YamlReader& r, const YAML::Node& n, Discretization& d) {
+    const std::string k = "discretization.accuracy";
+    if (!n.IsMap()) r.fail(n, k, "expected a mapping of formulation: accuracy");
+    r.expect_unique_keys(n, k);
+    for (const auto& item : n) {
+        const std::string name = item.first.Scalar();
+        const std::optional<Formulation> f = parse_choice<Formulation>(name);
+        if (!f) r.fail(item.first, k + "." + name, "unknown formulation");
+        const double tol = r.positive(item.second, k + "." + name);
+        if (tol < kMinAccuracy || tol >= kMaxAccuracy) {
+            std::ostringstream m;
+            m << "must lie in [" << kMinAccuracy << ", " << kMaxAccuracy << ")";
+            r.fail(item.second, k + "." + name, m.str());
+        }
+        d.stated_accuracy[*f] = tol;
+    }
+}
+
 }  // namespace
 
 void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
@@ -157,6 +177,21 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     }
     Analysis& a = model.analysis;
     if (n["estimate"]) a.estimate = r.boolean(n["estimate"], "analysis.estimate");
+    if (n["accuracy"]) {
+        // The target of accuracy control (docs/accuracy-control.md): refines until the estimates
+        // meet it, so it needs them.
+        a.accuracy = r.positive(n["accuracy"], "analysis.accuracy");
+        if (a.accuracy < kMinAccuracy || a.accuracy >= kMaxAccuracy) {
+            std::ostringstream m;
+            m << "must lie in [" << kMinAccuracy << ", " << kMaxAccuracy
+              << ") (a relative accuracy; docs/accuracy-control.md)";
+            r.fail(n["accuracy"], "analysis.accuracy", m.str());
+        }
+        if (!a.estimate) {
+            r.fail(n["accuracy"], "analysis.accuracy",
+                   "needs the error estimate, which analysis.estimate: false switches off");
+        }
+    }
     if (type == "static") {
         a.kind = AnalysisKind::static_;
         read_static(r, n, a.statics, true);
@@ -180,7 +215,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     const std::string k = "discretization";
     r.expect_map(n, k,
                  {"formulation", "rotation", "order", "quadrature", "quadrature_points",
-                  "interpolation", "update", "rescale", "mass_rule", "wm_map"});
+                  "interpolation", "update", "rescale", "mass_rule", "wm_map", "accuracy"});
     Discretization& d = model.discretization;
     if (n["formulation"])
         d.formulation = read_choice<Formulation>(r, n["formulation"], k + ".formulation");
@@ -206,6 +241,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
                std::string(comb::traits(d.formulation).no_lumped_mass_reason));
     }
     if (n["wm_map"]) d.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
+    if (n["accuracy"]) read_stated_accuracy(r, n["accuracy"], d);
 }
 
 void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {

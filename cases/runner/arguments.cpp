@@ -150,7 +150,8 @@ std::vector<std::string> case_overrides(const ParsedArguments& a) {
         {"formulation", "discretization.formulation"},
         {"order", "discretization.order"},
         {"elements", "members.*.elements"},
-        {"interpolation", "discretization.interpolation"}};
+        {"interpolation", "discretization.interpolation"},
+        {"accuracy", "analysis.accuracy"}};
     for (const auto& [option, key] : shorthands) {
         if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
     }

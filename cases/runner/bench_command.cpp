@@ -15,6 +15,7 @@
 
 #include "arguments.hpp"
 #include "benches/bench.hpp"
+#include "benches/bench_accuracy.hpp"
 #include "benches/bench_joined_beam.hpp"
 #include "benches/bench_long_run.hpp"
 #include "cases/loader/case_loader.hpp"
@@ -32,7 +33,8 @@ namespace {
 
 // Every name of --targets is a target (an unknown one would silently benchmark nothing).
 void check_target_names(const std::string& list) {
-    std::vector<std::string> known = {"joined-beam-modal", "joined-beam-dynamic", "long-run"};
+    std::vector<std::string> known = {"joined-beam-modal", "joined-beam-dynamic", "long-run",
+                                      "accuracy-control"};
     for (const BenchTarget& t : bench_targets()) known.push_back(t.name);
     std::stringstream ss(list);
     for (std::string name; std::getline(ss, name, ',');) {
@@ -219,7 +221,8 @@ int command_bench(const Args& args) {
         "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
         "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up; "
         "the joined-beam modal (5 frequencies to 1e-6 of converged) and 0–2 s dynamic (joint "
-        "history to 1e-3 of a same-mesh self-converged reference) targets.",
+        "history to 1e-3 of a same-mesh self-converged reference) targets; accuracy-control: "
+        "`run --accuracy 1e-6` against the best hand-picked discretization (roll-up, bend).",
         {{"json", "FILE", "write the results (default out/bench.json)"},
          {"history", "", "also write reports/history/<date>-<machine>.json"},
          {"repeats", "N", "timing repeats, 1 to 1000 (default 11, --quick 5)"},
@@ -280,6 +283,8 @@ int command_bench(const Args& args) {
         out["targets"].push_back(bench_joined_beam_dynamic(quick, repeats, references));
     }
     if (selected("long-run")) out["targets"].push_back(bench_long_run(quick));
+    if (selected("accuracy-control"))
+        out["targets"].push_back(bench_accuracy_control(quick, repeats));
     write_bench_outputs(a, out);
     return 0;
 }

@@ -14,6 +14,7 @@
 #include "core/results.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
+#include "runs/accuracy_run.hpp"
 #include "runs/continuum_json.hpp"
 #include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
@@ -130,6 +131,29 @@ void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
     if (e.contains("history")) print_history_estimate(e, os);
 }
 
+// Accuracy control: every attempt with its cost and decision, then the outcome.
+void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
+    os << std::setprecision(3) << "accuracy " << a["tolerance"].get<double>()
+       << " (estimates <= " << a["target"].get<double>() << " of their scale; "
+       << a["strategy"].get<std::string>() << "):\n";
+    for (const auto& t : a["attempts"]) {
+        os << "  " << t["elements"] << " elements, order " << t["order"] << ", " << t["substeps"]
+           << " sub-steps: " << t["status"].get<std::string>();
+        if (t.contains("worst_relative")) {
+            os << ", worst estimate " << t["worst_relative"].get<double>() << " ("
+               << t["worst_quantity"].get<std::string>() << ")";
+        }
+        os << "; " << t["wall_seconds"].get<double>() << " s";
+        if (t.contains("next")) os << " -> " << t["next"].get<std::string>();
+        os << "\n";
+    }
+    os << "accuracy: " << a["status"].get<std::string>() << ", " << a["chosen"]["elements"]
+       << " elements, order " << a["chosen"]["order"] << ", " << a["chosen"]["substeps"]
+       << " sub-steps; " << a["wall_seconds"].get<double>() << " s in all";
+    if (a.contains("reason")) os << " — " << a["reason"].get<std::string>();
+    os << std::setprecision(10) << "\n";
+}
+
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
     os << cases::one_line(r["case"].get<std::string>()) << " | " << r["rotation"].get<std::string>()
        << " | " << r["formulation"].get<std::string>() << " | " << r["elements"]
@@ -164,6 +188,7 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
     }
     print_modes(r, os);
     if (r.contains("estimate")) print_estimate_summary(r["estimate"], os);
+    if (r.contains("accuracy")) print_accuracy_summary(r["accuracy"], os);
     os << "wall time: " << r["wall_seconds"].get<double>() << " s\n";
 }
 
@@ -248,7 +273,10 @@ int command_run(const Args& args) {
           "stop the run after this wall-clock time with the status time-limit"},
          {"estimate", "on|off",
           "estimate the discretization error with companion runs (default: the case's "
-          "analysis.estimate, on; docs/error-estimates.md)"}}};
+          "analysis.estimate, on; docs/error-estimates.md)"},
+         {"accuracy", "TOL",
+          "refine the discretization until every estimate is <= TOL/2 of its scale, 1e-12 <= "
+          "TOL < 1 (analysis.accuracy; static and modal; docs/accuracy-control.md)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -265,11 +293,20 @@ int command_run(const Args& args) {
     if (estimate != "on" && estimate != "off") {
         throw InputError("run: --estimate: expected on or off, got '" + estimate + "'");
     }
+    if (model.analysis.accuracy > 0.0 && estimate == "off") {
+        throw InputError(
+            "run: --estimate off: accuracy control (analysis.accuracy or --accuracy) needs the "
+            "error estimate");
+    }
     const RunRequest request{path, model, a.has("trace-newton"), limit};
-    nlohmann::json result = run_case(request);
-    if (estimate == "on") {
+    nlohmann::json result;
+    if (model.analysis.accuracy > 0.0) {
+        result = run_to_accuracy(request);
+    } else if (estimate == "on") {
+        result = run_case(request);
         add_run_estimate(request, result);
     } else {
+        result = run_case(request);
         result["estimate"] = estimate_off();
     }
     write_outputs(a, result);

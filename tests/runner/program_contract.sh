@@ -35,6 +35,13 @@ expect_input_error "unknown parameterization" run cantilever-moment --rotation c
 expect_input_error "bad --estimate" run cantilever-moment --estimate maybe --json "$work/r.json"
 grep -q -- "--estimate" "$work/err" || fail "bad --estimate not named: $(cat "$work/err")"
 [ ! -e "$work/r.json" ] || fail "a result file was written for a bad --estimate"
+# --accuracy goes through the loader like the key it sets (analysis.accuracy, its range), and
+# needs the estimate (docs/accuracy-control.md).
+expect_input_error "bad --accuracy" run cantilever-moment --accuracy 2 --json "$work/r.json"
+grep -q "analysis.accuracy" "$work/err" || fail "bad --accuracy not named: $(cat "$work/err")"
+expect_input_error "--accuracy with --estimate off" run cantilever-moment --accuracy 1e-6 \
+    --estimate off --json "$work/r.json"
+[ ! -e "$work/r.json" ] || fail "a result file was written for a bad --accuracy"
 expect_input_error "unknown study" study nothing
 # A newline or another control character in what the user wrote is escaped: still one line.
 expect_input_error "a command with a newline" $'fro\nbnicate'

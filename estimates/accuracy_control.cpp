@@ -1,0 +1,325 @@
+#include "estimates/accuracy_control.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/static_driver.hpp"
+#include "estimates/accuracy_scale.hpp"
+
+namespace rotbeam::estimate {
+
+namespace {
+
+using json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+// The p-sequence decays spectrally when each order divides the worst estimate by at least 2
+// (the successive-difference ratio below 0.5 of docs/error-estimates.md); then raising p is
+// the cheaper refinement (docs/accuracy-control.md, "Strategy", measured).
+constexpr double kSpectralRatio = 0.5;
+// Below this order the p-sequence on a coarse mesh is not yet spectral even for a smooth solution
+// (the locking bump of orders 2–3 on two elements, docs/studies.md; one element turning 2π decays
+// by only 0.65–0.73 per order up to order 4, then spectrally): p is raised regardless.
+constexpr int kMinSpectralOrder = 6;
+// At most this many orders are added at once: the prediction from ρ extrapolates a decay seen
+// over one or two orders.
+constexpr int kMaxOrderJump = 4;
+// Element counts predicted from an h-rate get this margin (the rate is asymptotic) and lie
+// between 2× and 16× the current count per refinement.
+constexpr double kCountMargin = 1.2;
+constexpr double kMinSplit = 2.0;
+constexpr double kMaxSplit = 16.0;
+// Two refinements in a row that each leave more than half the worst estimate: stagnation.
+constexpr double kStagnation = 0.5;
+
+struct Attempt {
+    int order = 1;
+    std::vector<int> elements;  // per member
+    int substeps = 1;
+    std::string status;
+    bool measured = false;  // estimated: `worst` is defined
+    double worst = 0.0;
+    bool refined = false;   // the discretization was refined for it (not only the load steps)
+    std::size_t steps = 0;  // reported (converged) load steps
+};
+
+int total(const std::vector<int>& elements) {
+    int n = 0;
+    for (const int e : elements) n += e;
+    return n;
+}
+
+std::vector<int> elements_of(const Model& model) {
+    std::vector<int> e;
+    for (const Member& m : model.members) e.push_back(m.elements);
+    return e;
+}
+
+std::string number(double x) {
+    std::ostringstream s;
+    s.precision(3);
+    s << x;
+    return s.str();
+}
+
+// The next discretization, or nullopt with `stop` set (the budget).
+struct Step {
+    std::optional<Model> model;
+    std::string decision;  // what changes and why
+    std::string stop;      // why not
+};
+
+// Every member's elements times `factor` (at least one more), within the budget.
+Step split(const Model& model, double factor, const AccuracyBudget& budget,
+           const std::string& why) {
+    Step s;
+    Model next = model;
+    bool at_budget = true;
+    for (Member& m : next.members) {
+        const double want = std::ceil(m.elements * factor);
+        const int n = static_cast<int>(std::min<double>(want, budget.elements_per_member));
+        if (m.elements < budget.elements_per_member) at_budget = false;
+        m.elements = std::max(n, m.elements);
+    }
+    if (at_budget) {
+        s.stop = "budget: " + std::to_string(budget.elements_per_member) +
+                 " elements per member reached (" + why + ")";
+        return s;
+    }
+    s.decision = "elements " + std::to_string(total(elements_of(model))) + " -> " +
+                 std::to_string(total(elements_of(next))) + " (" + why + ")";
+    s.model = std::move(next);
+    return s;
+}
+
+// The split factor that brings `worst` to `target` at h-rate `order`, with the margin.
+double predicted_split(double worst, double target, double order) {
+    const double f = kCountMargin * std::pow(worst / target, 1.0 / order);
+    return std::clamp(f, kMinSplit, kMaxSplit);
+}
+
+// Displacement formulation: p while the estimates decay spectrally, else h.
+Step refine_displacement(const Model& model, const std::vector<Attempt>& history, double target,
+                         const AccuracyBudget& budget) {
+    const Attempt& now = history.back();
+    const int p = model.discretization.order;
+    // The previous measured attempt on this mesh at a lower order: the decay per order.
+    std::optional<double> rho;
+    for (auto it = history.rbegin() + 1; it != history.rend(); ++it) {
+        if (it->measured && it->elements == now.elements && it->order < p && it->worst > 0.0) {
+            rho = std::pow(now.worst / it->worst, 1.0 / (p - it->order));
+            break;
+        }
+    }
+    const bool first_on_mesh = !rho.has_value();
+    if (p < budget.order && (first_on_mesh || p < kMinSpectralOrder || *rho < kSpectralRatio)) {
+        int jump = 1;
+        std::string why = "first order step on this mesh";
+        if (rho && p < kMinSpectralOrder && *rho >= kSpectralRatio) {
+            why = "order below " + std::to_string(kMinSpectralOrder) + ", ratio " + number(*rho);
+        } else if (rho) {
+            jump = static_cast<int>(std::ceil(std::log(target / now.worst) / std::log(*rho)));
+            jump = std::clamp(jump, 1, kMaxOrderJump);
+            why = "spectral decay, ratio " + number(*rho) + " per order";
+        }
+        Model next = model;
+        next.discretization.order = std::min(p + jump, budget.order);
+        Step s;
+        s.decision = "order " + std::to_string(p) + " -> " +
+                     std::to_string(next.discretization.order) + " (" + why + ")";
+        s.model = std::move(next);
+        return s;
+    }
+    // Nodal values converge at h^(2p) (docs/error-estimates.md).
+    const std::string why = rho ? "no spectral decay, ratio " + number(*rho) + " per order"
+                                : "order budget " + std::to_string(budget.order) + " reached";
+    return split(model, predicted_split(now.worst, target, 2.0 * p), budget,
+                 why + "; h-rate " + std::to_string(2 * p));
+}
+
+// Mixed formulation: h, the count predicted from the observed order (the theory's 2 when the
+// observed one is undefined or outside its window).
+Step refine_mixed(const Model& model, const Attempt& now, double observed, double target,
+                  const AccuracyBudget& budget) {
+    const bool use_observed = std::abs(observed - 2.0) <= 0.5;
+    const double r = use_observed ? observed : 2.0;
+    double f = predicted_split(now.worst, target, r);
+    // The h/2 and h/4 companions already solved 2× and 4× the elements: a prediction up to 4×
+    // takes the next of those meshes, whose run is at hand (runs/accuracy_run.cpp reuses it).
+    if (f <= 4.0) f = f <= 2.0 ? 2.0 : 4.0;
+    return split(model, f, budget,
+                 std::string(use_observed ? "observed" : "theoretical") + " order " + number(r));
+}
+
+// Stagnation: the last two refinements of the discretization each left more than half the worst
+// estimate.
+bool stagnated(const std::vector<Attempt>& history) {
+    std::vector<double> w;
+    for (const Attempt& a : history) {
+        if (a.measured && a.refined) w.push_back(a.worst);
+    }
+    const std::size_t n = w.size();
+    return n >= 3 && w[n - 1] > kStagnation * w[n - 2] && w[n - 2] > kStagnation * w[n - 3];
+}
+
+json attempt_json(const Model& model, const Attempt& a, const json& result, double seconds,
+                  const AccuracyMeasure* m) {
+    json per_member = json::object();
+    for (std::size_t i = 0; i < model.members.size(); ++i) {
+        per_member[model.members[i].name] = a.elements[i];
+    }
+    json j = {{"elements", total(a.elements)},
+              {"elements_per_member", per_member},
+              {"order", a.order},
+              {"substeps", a.substeps},
+              {"status", a.status},
+              {"wall_seconds", seconds},
+              {"run_seconds", result.value("wall_seconds", 0.0)}};
+    if (result.contains("estimate")) {
+        j["estimate_status"] = result["estimate"].value("status", std::string());
+        j["estimate_seconds"] = result["estimate"].value("wall_seconds", 0.0);
+    }
+    if (m) {
+        j["worst_relative"] = m->worst;
+        j["worst_quantity"] = m->worst_what;
+        j["unreliable"] = m->unreliable;
+        j["missing"] = m->missing;
+    }
+    return j;
+}
+
+}  // namespace
+
+nlohmann::json control_accuracy(const Model& model, double tolerance, const AccuracyBudget& budget,
+                                const EstimatedRun& run) {
+    const double target = tolerance / 2.0;
+    const Clock::time_point start = Clock::now();
+    const bool mixed = model.discretization.formulation == Formulation::mixed;
+    Model current = model;
+    std::vector<Attempt> history;
+    json attempts = json::array();
+    json result;
+    std::string stop;  // non-empty: not reached, why
+    bool reached = false;
+    bool refined = false;  // the current model refines the discretization of the previous one
+    while (true) {
+        const Clock::time_point t0 = Clock::now();
+        result = run(current);
+        const bool reused = result.value("reused", false);
+        result.erase("reused");
+        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        Attempt a{current.discretization.order, elements_of(current),
+                  current.analysis.statics.substeps, result.value("status", std::string("error"))};
+        a.refined = refined;
+        a.steps = result.value("steps", json::array()).size();
+        std::optional<AccuracyMeasure> m;
+        if (has_solution(a.status)) {
+            m = measure_accuracy(current, result, target);
+            a.measured = m->quantities > 0 && m->missing == 0;
+            a.worst = m->worst;
+        }
+        history.push_back(a);
+        attempts.push_back(attempt_json(current, a, result, seconds, m ? &*m : nullptr));
+        attempts.back()["reused"] = reused;
+        Step next;
+        if (m && meets(*m, target)) {
+            reached = true;
+            break;
+        }
+        if (a.status == "diverged") {
+            // A Newton failure at a load step: more, smaller load steps (the discretization error
+            // of a static state does not depend on the path, only Newton's convergence does).
+            const int s = current.analysis.statics.substeps;
+            const std::size_t reached_steps = result.value("steps", json::array()).size();
+            if (history.size() >= 2 && history[history.size() - 2].status == "diverged" &&
+                history[history.size() - 2].steps >= reached_steps) {
+                // Twice the sub-steps did not pass the step that failed: what stops Newton is
+                // not the load increment (a chart near its singular angle, a limit point).
+                stop = "the solve fails at the same load step with twice the sub-steps (" +
+                       std::to_string(s) + "): not a load-stepping problem (" +
+                       result.value("message", std::string()) + ")";
+                break;
+            }
+            if (s * 2 > model.analysis.statics.substeps * budget.substeps_factor) {
+                stop = "the solve diverges with " + std::to_string(s) +
+                       " sub-steps per load step, the budget's largest (" +
+                       result.value("message", std::string()) + ")";
+                break;
+            }
+            next.model = current;
+            next.model->analysis.statics.substeps = 2 * s;
+            next.decision = "sub-steps " + std::to_string(s) + " -> " + std::to_string(2 * s) +
+                            " (Newton failed: " + result.value("message", std::string()) + ")";
+            refined = false;
+        } else if (a.status == "kinematics-unresolved") {
+            next = split(current, 2.0, budget, "the elements do not resolve the rotation");
+            refined = true;
+        } else if (!m) {
+            stop = (a.status == "singular" ? "singular chart: "
+                                           : "the run's status is " + a.status + ": ") +
+                   result.value("message", std::string());
+            break;
+        } else if (m->missing > 0 || m->quantities == 0) {
+            stop = "no complete estimate: " + m->first_problem;
+            break;
+        } else if (stagnated(history)) {
+            stop = "round-off floor: the estimates stagnate near " + number(m->worst) +
+                   " of their scale over the last refinements, above TOL/10 = " +
+                   number(tolerance / 10.0);
+            break;
+        } else {
+            next = mixed ? refine_mixed(current, a, m->worst_order, target, budget)
+                         : refine_displacement(current, history, target, budget);
+            refined = true;
+        }
+        if (!next.model) {
+            stop = next.stop + "; " + (m ? m->first_problem : std::string());
+            break;
+        }
+        attempts.back()["next"] = next.decision;
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        if (static_cast<int>(history.size()) >= budget.attempts) {
+            stop = "budget: " + std::to_string(budget.attempts) + " attempts; " +
+                   (m ? m->first_problem : std::string());
+            break;
+        }
+        if (elapsed >= budget.seconds) {
+            stop = "budget: " + number(elapsed) + " s spent of " + number(budget.seconds) + " s; " +
+                   (m ? m->first_problem : std::string());
+            break;
+        }
+        current = std::move(*next.model);
+    }
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const Attempt& last = history.back();
+    json acc = {
+        {"tolerance", tolerance},
+        {"target", target},
+        {"status", reached ? "reached" : "not-reached"},
+        {"strategy",
+         mixed ? "h (element count from the observed order)" : "p while spectral, else h"},
+        {"scales",
+         {{"displacement", reference_length(model)},
+          {"rotation", 1.0},
+          {"frequency", "the frequency"}}},
+        {"chosen",
+         {{"elements", total(last.elements)}, {"order", last.order}, {"substeps", last.substeps}}},
+        {"attempts", attempts},
+        {"wall_seconds", elapsed},
+        {"solver_status", last.status}};
+    if (last.measured) acc["worst_relative"] = last.worst;
+    if (!reached) {
+        acc["reason"] = stop;
+        result["status"] = "accuracy-not-reached";
+        result["message"] = "accuracy " + number(tolerance) + " not reached: " + stop;
+    }
+    result["accuracy"] = acc;
+    return result;
+}
+
+}  // namespace rotbeam::estimate

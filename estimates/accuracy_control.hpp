@@ -1,0 +1,51 @@
+// Accuracy control (docs/accuracy-control.md): refine a static or modal run's discretization
+// until every reported quantity's estimated error is at most half the asked tolerance, relative
+// to its scale (estimates/accuracy_scale.hpp), or say plainly why it cannot be reached.
+//
+//   displacement formulation: raise the order p while the estimates decay spectrally (each order
+//     divides the worst estimate by 1/ρ ≥ 2, and the order that reaches the target is predicted
+//     from ρ), else split every element, the count predicted from the nodal h-rate 2p;
+//   mixed formulation: split every element, the count predicted from the observed order;
+//   either: a Newton failure at a load step doubles the sub-steps; a kinematic check that fails
+//     splits the elements.
+// It stops with `accuracy-not-reached` and the reason when the run is singular or fails in
+// another way, when the estimates stagnate (a round-off floor above TOL/10), when the estimate is
+// missing or not reliable after the budget, or at the budget (attempts, elements, order, time).
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "core/model.hpp"
+
+namespace rotbeam::estimate {
+
+// analysis.accuracy / run --accuracy: 1e-12 ≤ TOL < 1. Below 1e-12 the target TOL/2 lies under
+// the solves' own round-off (the Newton acceptance bounds the scaled algebraic error near 1e-12,
+// docs/solver-convergence.md); 1 asks for nothing.
+inline constexpr double kMinAccuracy = 1e-12;
+inline constexpr double kMaxAccuracy = 1.0;  // exclusive
+
+// The budget of one controlled run (docs/accuracy-control.md, "Budget").
+struct AccuracyBudget {
+    int attempts = 12;  // runs, each with its estimate
+    // Elements per member of the run itself: the mixed h/4 companion then has 4 × this.
+    int elements_per_member = 4096;
+    // The run's order: its p+1 companion is one more, within the case format's 24. Past ~12 the
+    // p-sequence of docs/studies.md is at round-off on two elements.
+    int order = 16;
+    int substeps_factor = 64;  // the case's sub-steps doubled at most 6 times
+    double seconds = 600.0;    // total wall time; `run --time-limit` replaces it
+};
+
+// Runs a model and adds its estimate (the program's run_case and add_run_estimate). A result
+// taken from an earlier run (a companion's) may say so with `reused: true` (removed here).
+using EstimatedRun = std::function<nlohmann::json(const Model&)>;
+
+// Refines `model` until its estimates meet tolerance / 2 or it says why not. Returns the last
+// attempt's result with `accuracy` added (docs/accuracy-control.md, "Fields"); its status is the
+// run's own when the target is met, else `accuracy-not-reached` with the reason as message.
+nlohmann::json control_accuracy(const Model& model, double tolerance, const AccuracyBudget& budget,
+                                const EstimatedRun& run);
+
+}  // namespace rotbeam::estimate
