@@ -101,5 +101,9 @@ std::string out_path(const StudyOptions& o, const std::string& relative_path);
 void plot(const std::string& script, const std::vector<std::pair<std::string, std::string>>& vars);
 std::string sci(double value, int digits = 2);  // "—" for NaN
 std::string quoted(const std::string& s);       // for gnuplot data-file titles
+// Free text (a solver's or the loader's message) as one cell of a Markdown pipe table: the
+// backslash, `|` and the backtick escaped with a backslash, line breaks as spaces. Unescaped, a `|`
+// would split the cell and a backtick open a code span that swallows the rest of the row.
+std::string markdown_cell(const std::string& text);
 
 }  // namespace rotbeam::cli

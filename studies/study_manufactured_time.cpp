@@ -118,7 +118,7 @@ nlohmann::json time_case(const StudyOptions& o, const TimeSeries& t, std::ostrin
     md << "| " << label << " | " << (du.empty() ? "—" : sci(du.front()) + " → " + sci(du.back()))
        << " | " << (dR.empty() ? "—" : sci(dR.front()) + " → " + sci(dR.back())) << " | "
        << fixed(qu) << " / " << fixed(qR) << " | " << fixed(tu) << " / " << fixed(tR) << " | "
-       << sci(eu_last) << " / " << sci(eR_last) << " | " << note << " |\n";
+       << sci(eu_last) << " / " << sci(eR_last) << " | " << markdown_cell(note) << " |\n";
     if (!dts.empty()) {
         const std::string f = "data/manufactured_time_" + file_label(label) + ".dat";
         write_text(o, f, data.str());
@@ -186,7 +186,8 @@ nlohmann::json space_case(const StudyOptions& o, std::ostringstream& md,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125},
         {Formulation::mixed, param::id_of<param::Quaternion>(), 1,
          o.quick ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 8, 16}, 0.00125}};
-    md << "\n**Space** (quaternion / WM and quaternion trapezoidal, Δt fixed; error against the exact motion):\n\n"
+    md << "\n**Space** (quaternion / WM and quaternion trapezoidal, Δt fixed; error against the "
+          "exact motion):\n\n"
           "| combination | Δt | elements per member | ‖Δu‖/L | rotation [rad] | order (last "
           "pair) u / R |\n|---|---|---|---|---|---|\n";
     for (const Refinement& r : list) {

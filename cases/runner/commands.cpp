@@ -28,25 +28,62 @@ namespace {
 const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
                             "override any case key, validated like the file", true};
 
-// The shorthand options of `run` become --set overrides, validated by the loader.
+// The shorthand options of `run`: each stands for a --set override of one case key (`*`: every
+// member), validated by the loader.
+constexpr std::pair<const char*, const char*> kShorthands[] = {
+    {"rotation", "discretization.rotation"},
+    {"formulation", "discretization.formulation"},
+    {"order", "discretization.order"},
+    {"elements", "members.*.elements"},
+    {"interpolation", "discretization.interpolation"}};
+
 std::vector<std::string> overrides_from(const ParsedArguments& a) {
     std::vector<std::string> overrides;
-    const std::pair<const char*, const char*> shorthands[] = {
-        {"rotation", "discretization.rotation"},
-        {"formulation", "discretization.formulation"},
-        {"order", "discretization.order"},
-        {"elements", "members.*.elements"},
-        {"interpolation", "discretization.interpolation"}};
-    for (const auto& [option, key] : shorthands) {
+    for (const auto& [option, key] : kShorthands) {
         if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
     }
     for (const std::string& s : a.values("set")) overrides.push_back(s);
     return overrides;
 }
 
+// Whether the key path `key` is one `pattern` stands for (a `*` segment matches any one segment).
+bool key_matches(const std::string& pattern, const std::string& key) {
+    std::stringstream p(pattern), k(key);
+    std::string ps, ks;
+    while (std::getline(p, ps, '.')) {
+        if (!std::getline(k, ks, '.') || (ps != "*" && ps != ks)) return false;
+    }
+    return !std::getline(k, ks, '.');
+}
+
+// The loader names an override's key (`FILE:--set: KEY: problem`); for a value given by a
+// shorthand the message names the option the user typed, and the key:
+// `FILE:--elements (members.beam.elements): problem`. Left as it is when a --set names the same key
+// too (either could be the one refused).
+std::string name_the_option(const std::string& message, const ParsedArguments& a) {
+    const std::string marker = ":--set: ";
+    const size_t at = message.find(marker);
+    if (at == std::string::npos) return message;
+    const size_t key_end = message.find(": ", at + marker.size());
+    if (key_end == std::string::npos) return message;
+    const std::string key = message.substr(at + marker.size(), key_end - at - marker.size());
+    for (const auto& [option, pattern] : kShorthands) {
+        if (!a.value(option) || !key_matches(pattern, key)) continue;
+        for (const std::string& s : a.values("set")) {
+            if (key_matches(pattern, s.substr(0, s.find('=')))) return message;
+        }
+        return message.substr(0, at) + ":--" + option + " (" + key + ")" + message.substr(key_end);
+    }
+    return message;
+}
+
 Model load_with_options(const std::string& path, const ParsedArguments& a,
                         CaseParts parts = CaseParts::all) {
-    return load_case(path, overrides_from(a), parts);
+    try {
+        return load_case(path, overrides_from(a), parts);
+    } catch (const InputError& e) {
+        throw InputError(name_the_option(e.what(), a));
+    }
 }
 
 // "± 3.1e-09" and, when the estimate is not reliable, why.
