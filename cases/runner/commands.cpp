@@ -58,7 +58,7 @@ bool key_matches(const std::string& pattern, const std::string& key) {
 
 // The loader names an override's key (`FILE:--set: KEY: problem`); for a value given by a
 // shorthand the message names the option the user typed, and the key:
-// `FILE:--elements (members.beam.elements): problem`. Left as it is when a --set names the same key
+// `FILE:--elements: members.beam.elements: problem`. Left as it is when a --set names the same key
 // too (either could be the one refused).
 std::string name_the_option(const std::string& message, const ParsedArguments& a) {
     const std::string marker = ":--set: ";
@@ -72,7 +72,7 @@ std::string name_the_option(const std::string& message, const ParsedArguments& a
         for (const std::string& s : a.values("set")) {
             if (key_matches(pattern, s.substr(0, s.find('=')))) return message;
         }
-        return message.substr(0, at) + ":--" + option + " (" + key + ")" + message.substr(key_end);
+        return message.substr(0, at) + ":--" + option + ": " + message.substr(at + marker.size());
     }
     return message;
 }
