@@ -64,7 +64,7 @@ expect_bad_value "a --set value with a control byte" \
     ":--set: discretization.rotation: the value holds a control character" \
     check cantilever-moment --set $'discretization.rotation=qua\001ternion'
 expect_bad_value "--elements with a non-UTF-8 byte" \
-    ":--elements: members.beam.elements: the value holds a control character or a byte that is not UTF-8 (byte 1)" \
+    ":--elements: members.*.elements: the value holds a control character or a byte that is not UTF-8 (byte 1)" \
     run cantilever-moment --elements $'4\xff'
 expect_bad_value "a shorthand's value refused by the validation" \
     ":--elements: members.beam.elements: must be a positive integer" run cantilever-moment --elements 0
