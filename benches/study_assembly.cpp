@@ -191,7 +191,7 @@ nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md) {
                 std::string message = r_needed.value("message", "");
                 if (message.size() > 80) message = message.substr(0, 77) + "...";
                 md << "| " << c.analysis << " | " << c.case_name << " | " << comb.label() << " | "
-                   << status << ": " << message << " | | | | | | | |\n";
+                   << status << ": " << markdown_cell(message) << " | | | | | | | |\n";
                 continue;
             }
             const double difference = result_difference(r_needed, r_all);

@@ -23,6 +23,7 @@
 #include "report_dynamics.hpp"
 #include "report_table_one.hpp"
 #include "studies/gnuplot.hpp"
+#include "studies/study_common.hpp"
 
 namespace rotbeam::cli {
 
@@ -218,6 +219,7 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
             if (m.size() > 90) m = m.substr(0, 87) + "...";
             message += ": " + m;
         }
+        message = markdown_cell(message);
         md << "| " << r.value("case", "") << " | " << r.value("elements", 0) << " | "
            << r.value("rotation", "") << " | " << r.value("formulation", "") << " | " << message
            << " | " << r["steps"].size() << " | " << iterations << " | " << std::setprecision(3)

@@ -36,10 +36,14 @@ std::string base64(const std::string& bytes) {
 std::string escape(const std::string& s) {
     std::string o;
     for (char c : s) {
-        if (c == '<') o += "&lt;";
-        else if (c == '>') o += "&gt;";
-        else if (c == '&') o += "&amp;";
-        else o += c;
+        if (c == '<')
+            o += "&lt;";
+        else if (c == '>')
+            o += "&gt;";
+        else if (c == '&')
+            o += "&amp;";
+        else
+            o += c;
     }
     return o;
 }
@@ -48,7 +52,12 @@ std::vector<std::string> table_cells(const std::string& line) {
     std::vector<std::string> cells;
     std::string cell;
     for (size_t i = 1; i < line.size(); ++i) {
-        if (line[i] == '|') {
+        // A cell's escaped characters (markdown_cell, studies/study_common.hpp) are plain text.
+        const bool escaped = line[i] == '\\' && i + 1 < line.size() &&
+                             (line[i + 1] == '\\' || line[i + 1] == '|' || line[i + 1] == '`');
+        if (escaped) {
+            cell += line[++i];
+        } else if (line[i] == '|') {
             const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
             cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
             cell.clear();
@@ -79,7 +88,8 @@ std::string markdown_page_html(const std::string& markdown, const std::string& o
             }
             html << "<tr>";
             for (const std::string& c : table_cells(line)) {
-                html << (header_row ? "<th>" : "<td>") << escape(c) << (header_row ? "</th>" : "</td>");
+                html << (header_row ? "<th>" : "<td>") << escape(c)
+                     << (header_row ? "</th>" : "</td>");
             }
             html << "</tr>\n";
             header_row = false;

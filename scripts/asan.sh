@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# rotbeam under AddressSanitizer + UndefinedBehaviorSanitizer (the asan preset: -O1 -g, assertions
-# on, -fno-sanitize-recover). Every finding stops the process with a report on stderr; this script
-# fails on a non-zero ctest, on a sanitizer report in any program's stderr, and on an exit code the
-# command does not document.
+# rotbeam under AddressSanitizer + UndefinedBehaviorSanitizer (the asan preset: clang-14, -O1 -g1,
+# assertions on, -fno-sanitize-recover). Every finding stops the process with a report on stderr;
+# this script fails on a non-zero ctest, on a sanitizer report in any program's stderr, and on an
+# exit code the command does not document.
 # Usage: scripts/asan.sh [--full]
-#   default (CI): the unit tests (ctest -L unit, the scripted ones included), `rotbeam suite
-#                 --quick`, every command's --help and every bad-case fixture through `check` and
-#                 `run`;
-#   --full:       also every other ctest test (but the label `long`, which the asan test preset
-#                 leaves out) and every study path (slow: docs/quality-checks.md).
+#   default (CI): the unit tests (ctest -L unit, the scripted ones included) but the six whose
+#                 build costs most (`heavy` below), `rotbeam suite --quick`, every
+#                 command's --help and every bad-case fixture through `check` and `run`;
+#   --full:       also those six, every other ctest test (but the label `long`, which the asan test
+#                 preset leaves out) and every study path (slow: docs/quality-checks.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 full=0
@@ -17,12 +17,17 @@ if [ "${1:-}" = "--full" ]; then full=1; fi
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
+heavy='^(test_parameterizations|test_displacement|test_mixed_dynamics|test_mixed_unit|test_displacement_dynamics_jacobian|test_modal_checks)$'
 cmake --preset asan >/dev/null
 if [ $full -eq 1 ]; then
   cmake --build --preset asan -j "$(nproc)"
 else
-  # The unit tests' executables (a test run by a shell script drives the program itself).
-  mapfile -t unit < <(ctest --preset asan -N -L unit 2>/dev/null | sed -n 's/^ *Test *#[0-9]*: //p' |
+  # The unit tests' executables (a test run by a shell script drives the program itself), but the
+  # six tests of the formulations' and parameterizations' kernels: a quarter of the sanitized
+  # build between them, and their code runs sanitized in `suite --quick` (every formulation ×
+  # parameterization); --full runs them (docs/quality-checks.md, Time).
+  mapfile -t unit < <(ctest --preset asan -N -L unit -E "$heavy" 2>/dev/null |
+    sed -n 's/^ *Test *#[0-9]*: //p' |
     while read -r t; do ninja -C build/asan -t query "$t" >/dev/null 2>&1 && echo "$t"; done)
   cmake --build --preset asan -j "$(nproc)" --target rotbeam "${unit[@]}"
 fi
@@ -57,7 +62,7 @@ expect() {
 if [ $full -eq 1 ]; then
   ctest --preset asan -j "$(nproc)"
 else
-  ctest --preset asan -j "$(nproc)" -L unit
+  ctest --preset asan -j "$(nproc)" -L unit -E "$heavy"
 fi
 step "ctest"
 

@@ -176,4 +176,14 @@ std::string fixed_as_printed(double value, int digits) {
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
+std::string markdown_cell(const std::string& text) {
+    std::string cell;
+    cell.reserve(text.size());
+    for (const char c : text) {
+        if (c == '\\' || c == '|' || c == '`') cell += '\\';
+        cell += (c == '\n' || c == '\r') ? ' ' : c;
+    }
+    return cell;
+}
+
 }  // namespace rotbeam::cli

@@ -173,7 +173,7 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
             md << "| " << c.key << " | " << s.label << " | "
                << (s.error.empty() ? "—" : sci(s.error.front()) + " → " + sci(s.error.back()))
                << " | " << sci(floor, 1) << " | " << order_text(ls) << " | " << order_text(tail)
-               << " | " << note << " |\n";
+               << " | " << markdown_cell(note) << " |\n";
             if (s.error.empty()) continue;
             const std::string file =
                 write_series(o,

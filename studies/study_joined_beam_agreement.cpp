@@ -278,7 +278,8 @@ nlohmann::json agreement_case(const StudyOptions& o, const AgreementPlan& p,
         self_orders[k] = std::log2(self_difference[k - 1] / self_difference[k]);
     for (size_t k = 0; k < p.meshes.size(); ++k) {
         const ReferenceResponse& r = get(mixed_key(case_name, p.meshes[k]));
-        md << "| " << p.meshes[k] << (r.status == "converged" ? "" : " (" + r.status + ")") << " | "
+        md << "| " << p.meshes[k]
+           << (r.status == "converged" ? "" : " (" + markdown_cell(r.status) + ")") << " | "
            << sci(agreement[k], 3) << " | " << (k > 0 ? sci(orders[k], 3) : "") << " | "
            << (k < self_difference.size() ? sci(self_difference[k], 3) : "") << " | "
            << (k < self_difference.size() && k > 0 ? sci(self_orders[k], 3) : "") << " | "
@@ -443,7 +444,8 @@ nlohmann::json study_joined_beam_agreement(const StudyOptions& o) {
           "CPU |\n|---|---|---|---|\n";
     for (const Job& j : jobs) {
         out["references"][j.name] = reference_entry(j);
-        md << "| " << (j.result.how.empty() ? j.name + ": " + j.result.status : j.result.how)
+        md << "| "
+           << (j.result.how.empty() ? j.name + ": " + markdown_cell(j.result.status) : j.result.how)
            << " | " << sci(j.result.step_difference) << " | " << sci(j.result.extrapolation_change)
            << " | " << cpu_text(j.result) << " |\n";
     }

@@ -199,9 +199,9 @@ void sweep_table(const std::vector<DynamicPoint>& points, std::ostringstream& md
           "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const DynamicPoint& p : points) {
         md << "| " << p.combination << " | " << choice_name(p.setting.integrator) << " | "
-           << p.setting.label() << " | " << p.status << " | " << p.dofs << " | " << p.steps << " | "
-           << p.newton << " | " << seconds_text(p.cpu) << " | " << seconds_text(p.wall) << " | "
-           << p.repeats << " | " << sci(p.error) << " |\n";
+           << p.setting.label() << " | " << markdown_cell(p.status) << " | " << p.dofs << " | "
+           << p.steps << " | " << p.newton << " | " << seconds_text(p.cpu) << " | "
+           << seconds_text(p.wall) << " | " << p.repeats << " | " << sci(p.error) << " |\n";
     }
     md << "\n";
 }

@@ -185,7 +185,7 @@ void write_tables(const std::vector<ModalSeries>& all, const std::vector<double>
            << " | "
            << (h_series && !s.f.empty() ? sci(max_relative(s.f.back(), lim)) : std::string("—"))
            << " | " << (h_series ? sci(max_relative(lim, converged)) : std::string("—")) << " | "
-           << s.note << " |\n";
+           << markdown_cell(s.note) << " |\n";
     }
     md << "\nConverged frequencies [Hz] (p-converged: displacement, one element per member at the "
           "highest order; Richardson: each h-series' extrapolation from its three finest meshes "

@@ -110,7 +110,7 @@ nlohmann::json time_case(const StudyOptions& o, const TimeSeries& t, std::ostrin
     md << "| " << label << " | " << (du.empty() ? "—" : sci(du.front()) + " → " + sci(du.back()))
        << " | " << (dR.empty() ? "—" : sci(dR.front()) + " → " + sci(dR.back())) << " | "
        << fixed(qu) << " / " << fixed(qR) << " | " << fixed(tu) << " / " << fixed(tR) << " | "
-       << sci(eu_last) << " / " << sci(eR_last) << " | " << note << " |\n";
+       << sci(eu_last) << " / " << sci(eR_last) << " | " << markdown_cell(note) << " |\n";
     if (!dts.empty()) {
         const std::string f = "data/manufactured_time_" + file_label(label) + ".dat";
         write_text(o, f, data.str());

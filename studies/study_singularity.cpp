@@ -176,13 +176,13 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, const StudyRe
                                {"message", p.message}});
         if (p.status == "unavailable") {
             md << "| " << c.key << " | " << comb.label() << " | — | — | unavailable | — | "
-               << message << " |\n";
+               << markdown_cell(message) << " |\n";
             continue;
         }
         md << "| " << c.key << " | " << comb.label() << " | "
            << fixed_as_printed(p.reach.load_factor, 3) << " | "
            << fixed_as_printed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
-           << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : message)
+           << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : markdown_cell(message))
            << " |\n";
         if (p.lambda.empty()) continue;
         figure.add(

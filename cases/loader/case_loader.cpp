@@ -20,13 +20,12 @@ namespace {
 
 using cases::YamlReader;
 
-// A case file is UTF-8 text: a NUL byte or a malformed UTF-8 sequence means a binary file, which
-// yaml-cpp would otherwise report confusingly (or accept as a scalar).
-void check_text(const std::string& text, const std::string& file) {
-    int line = 1;
+// Case files and override values are UTF-8 text: a NUL or other control byte (but tab and line
+// ends) or a malformed UTF-8 sequence means binary data, which yaml-cpp would otherwise report
+// confusingly (or accept as a scalar). Returns the offset of the first such byte, or npos.
+size_t first_non_text_byte(const std::string& text) {
     for (size_t i = 0; i < text.size(); ++i) {
         const auto c = static_cast<unsigned char>(text[i]);
-        if (c == '\n') ++line;
         int follow = 0;
         if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) {
             follow = -1;
@@ -42,14 +41,20 @@ void check_text(const std::string& text, const std::string& file) {
                 }
             }
         }
-        if (follow < 0) {
-            throw InputError(
-                file + ":" + std::to_string(line) +
-                ": (file): not a text case file (control or non-UTF-8 byte at offset " +
-                std::to_string(i) + ")");
-        }
+        if (follow < 0) return i;
         i += static_cast<size_t>(follow);
     }
+    return std::string::npos;
+}
+
+void check_text(const std::string& text, const std::string& file) {
+    const size_t at = first_non_text_byte(text);
+    if (at == std::string::npos) return;
+    const auto line =
+        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+    throw InputError(file + ":" + std::to_string(line) +
+                     ": (file): not a text case file (control or non-UTF-8 byte at offset " +
+                     std::to_string(at) + ")");
 }
 
 YAML::Node parse(const std::string& text, const std::string& file) {
@@ -110,8 +115,12 @@ YAML::Node descend(YAML::Node& node, const std::string& segment, const std::stri
 // The value of an override, parsed as YAML after the checks a file gets (text, shape).
 YAML::Node override_value(const std::string& value_text, const std::string& path,
                           const std::string& file) {
+    if (const size_t at = first_non_text_byte(value_text); at != std::string::npos) {
+        override_error(file, path,
+                       "the value holds a control character or a byte that is not UTF-8 (byte " +
+                           std::to_string(at) + ")");
+    }
     try {
-        check_text(value_text, "");
         cases::check_yaml_shape(value_text, "");
         return YAML::Load(value_text);
     } catch (const YAML::Exception& e) {

@@ -143,16 +143,20 @@ std::string help_text(const CommandSpec& spec) {
     return s.str();
 }
 
-std::vector<std::string> case_overrides(const ParsedArguments& a) {
-    std::vector<std::string> overrides;
-    const std::pair<const char*, const char*> shorthands[] = {
+const std::vector<Shorthand>& run_shorthands() {
+    static const std::vector<Shorthand> shorthands = {
         {"rotation", "discretization.rotation"},
         {"formulation", "discretization.formulation"},
         {"order", "discretization.order"},
         {"elements", "members.*.elements"},
         {"interpolation", "discretization.interpolation"},
         {"accuracy", "analysis.accuracy"}};
-    for (const auto& [option, key] : shorthands) {
+    return shorthands;
+}
+
+std::vector<std::string> case_overrides(const ParsedArguments& a) {
+    std::vector<std::string> overrides;
+    for (const auto& [option, key] : run_shorthands()) {
         if (const auto v = a.value(option)) overrides.push_back(std::string(key) + "=" + *v);
     }
     for (const std::string& s : a.values("set")) overrides.push_back(s);

@@ -56,9 +56,16 @@ class ParsedArguments {
 ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args);
 std::string help_text(const CommandSpec& spec);
 
-// `run`'s and `check`'s case overrides: the shorthand options (--rotation, --formulation, --order,
-// --elements, --interpolation) as --set overrides, then every --set in order; the case loader
-// validates them like the file.
+// The shorthand options of `run` and `check`: each stands for a --set override of one case key
+// (`*`: every member): {option without its dashes, key}.
+struct Shorthand {
+    const char* option;
+    const char* key;
+};
+const std::vector<Shorthand>& run_shorthands();
+
+// `run`'s and `check`'s case overrides: the shorthand options as --set overrides, then every --set
+// in order; the case loader validates them like the file.
 std::vector<std::string> case_overrides(const ParsedArguments& a);
 
 }  // namespace rotbeam::cli

@@ -30,9 +30,44 @@ namespace {
 const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
                             "override any case key, validated like the file", true};
 
+// Whether the key path `key` is one `pattern` stands for (a `*` segment matches any one segment).
+bool key_matches(const std::string& pattern, const std::string& key) {
+    std::stringstream p(pattern), k(key);
+    std::string ps, ks;
+    while (std::getline(p, ps, '.')) {
+        if (!std::getline(k, ks, '.') || (ps != "*" && ps != ks)) return false;
+    }
+    return !std::getline(k, ks, '.');
+}
+
+// The loader names an override's key (`FILE:--set: KEY: problem`); for a value given by a
+// shorthand the message names the option the user typed, and the key:
+// `FILE:--elements: members.beam.elements: problem`. Left as it is when a --set names the same key
+// too (either could be the one refused).
+std::string name_the_option(const std::string& message, const ParsedArguments& a) {
+    const std::string marker = ":--set: ";
+    const size_t at = message.find(marker);
+    if (at == std::string::npos) return message;
+    const size_t key_end = message.find(": ", at + marker.size());
+    if (key_end == std::string::npos) return message;
+    const std::string key = message.substr(at + marker.size(), key_end - at - marker.size());
+    for (const auto& [option, pattern] : run_shorthands()) {
+        if (!a.value(option) || !key_matches(pattern, key)) continue;
+        for (const std::string& s : a.values("set")) {
+            if (key_matches(pattern, s.substr(0, s.find('=')))) return message;
+        }
+        return message.substr(0, at) + ":--" + option + ": " + message.substr(at + marker.size());
+    }
+    return message;
+}
+
 Model load_with_options(const std::string& path, const ParsedArguments& a,
                         CaseParts parts = CaseParts::all) {
-    return load_case(path, case_overrides(a), parts);
+    try {
+        return load_case(path, case_overrides(a), parts);
+    } catch (const InputError& e) {
+        throw InputError(name_the_option(e.what(), a));
+    }
 }
 
 // "± 3.1e-09" and, when the estimate is not reliable, why.

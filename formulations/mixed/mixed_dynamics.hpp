@@ -93,7 +93,10 @@ class MixedDynamics : public DaeSystem {
     double max_rotation_angle(const VecX& x) const;
     // max | |q| − 1 | at the nodes (conserved by the Cayley relations) and in the elements
     // (cos(δ/4) by construction), in state x at time t.
-    QuaternionNormDrift norm_drift(const VecX& x, double t) const requires(kConstraintRows > 0);
+    // The constraint spelled out (not kConstraintRows): clang 14 does not find a class member
+    // in the requires-clause of the out-of-line definition.
+    QuaternionNormDrift norm_drift(const VecX& x, double t) const
+        requires(param::ParameterConstraint<P>::kRows > 0);
 
   private:
     Params given_rotation(int node, double t) const;

@@ -379,7 +379,7 @@ double MixedDynamics<P>::max_rotation_angle(const VecX& x) const {
 
 template <param::RotationParameterization P>
 QuaternionNormDrift MixedDynamics<P>::norm_drift(const VecX& x, double t) const
-    requires(kConstraintRows > 0) {
+    requires(param::ParameterConstraint<P>::kRows > 0) {
     QuaternionNormDrift d;
     for (int n = 0; n < node_count(); ++n) {
         Vec3 u_hat;

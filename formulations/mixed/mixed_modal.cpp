@@ -2,11 +2,16 @@
 
 // GCC 12 reports -Wuse-after-free inside Spectra's UpperHessenbergEigen (an Eigen temporary
 // freed by its destructor after the last use, seen through inlining): a known false positive of
-// that warning, not in rotbeam's code, so it is silenced for Spectra's headers only.
+// that warning, not in rotbeam's code, so it is silenced for Spectra's headers only. Clang has no
+// such warning (and would warn about the unknown name).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuse-after-free"
+#endif
 #include <Spectra/GenEigsSolver.h>
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>

@@ -83,7 +83,9 @@ class MixedStatics : public StaticProblem {
     const MixedNumbering& numbering() const { return numbering_; }
     MixedElementState<K> element_state(int e) const;
     std::vector<MixedElementResultants> resultants() const;
-    QuaternionNormDrift norm_drift() const requires(kConstraintRows > 0);
+    // The constraint spelled out (not kConstraintRows): clang 14 does not find a class member
+    // in the requires-clause of the out-of-line definition.
+    QuaternionNormDrift norm_drift() const requires(param::ParameterConstraint<P>::kRows > 0);
 
   private:
     // Given û, ĉ of a supported node at the current load factor (times ρ where it has one).

@@ -230,7 +230,8 @@ std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations()
 }
 
 template <param::RotationParameterization P>
-QuaternionNormDrift MixedStatics<P>::norm_drift() const requires(kConstraintRows > 0) {
+QuaternionNormDrift MixedStatics<P>::norm_drift() const
+    requires(param::ParameterConstraint<P>::kRows > 0) {
     QuaternionNormDrift d;
     for (int n = 0; n < numbering_.node_count(); ++n) {
         Vec3 u_hat;

@@ -48,8 +48,6 @@ expect_input_error "a command with a newline" $'fro\nbnicate'
 grep -q "unknown command 'fro\\\\nbnicate'" "$work/err" || fail "newline not escaped: $(cat "$work/err")"
 expect_input_error "a case name with a newline" run $'no-such\ncase.yaml'
 expect_input_error "an option value with a newline" run cantilever-moment --rotation $'quater\nnion'
-expect_input_error "a parameterization with a tab and a bell" run cantilever-moment --rotation $'a\tb\a'
-
 # Every command-line value goes through the validation of the case file, with the same limits
 # (docs/case-format.md, Limits): negative, zero, non-numeric, fractional, overflowing, NaN/inf,
 # past a limit, unknown keys; refused with one line before anything runs or is written.
@@ -62,6 +60,19 @@ expect_bad_value() {
 for v in -3 abc 2.5 99999999999 .nan .inf "[1, 2]"; do
     expect_bad_value "--elements $v" "members.beam.elements: " run cantilever-moment --elements "$v"
 done
+# A value with a control byte is refused in the words of a value, naming the option the user
+# typed (a shorthand) or --set with the key, never in the words of a case file.
+expect_bad_value "a parameterization with a tab and a bell" \
+    ":--rotation: discretization.rotation: the value holds a control character or a byte that is not UTF-8 (byte 3)" \
+    run cantilever-moment --rotation $'a\tb\a'
+expect_bad_value "a --set value with a control byte" \
+    ":--set: discretization.rotation: the value holds a control character" \
+    check cantilever-moment --set $'discretization.rotation=qua\001ternion'
+expect_bad_value "--elements with a non-UTF-8 byte" \
+    ":--elements: members.*.elements: the value holds a control character or a byte that is not UTF-8 (byte 1)" \
+    run cantilever-moment --elements $'4\xff'
+expect_bad_value "a shorthand's value refused by the validation" \
+    ":--elements: members.beam.elements: must be a positive integer" run cantilever-moment --elements 0
 expect_bad_value "--elements past its limit" "members.beam.elements: must be at most 100000" \
     run cantilever-moment --elements 100001
 expect_bad_value "--order 400" "discretization.order: must be at most 24" \
