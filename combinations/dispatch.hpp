@@ -11,7 +11,7 @@
 
 #include "combinations/registry.hpp"
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 
 namespace rotbeam {
 
