@@ -74,7 +74,7 @@ template <Formulation F, class Fn>
 decltype(auto) dispatch_parameterization_of(const Discretization& d, Fn&& f) {
     return param::dispatch_parameterization(d.rotation, [&]<class P>() -> decltype(auto) {
         if constexpr (traits(F).wm_maps && kHasWmMap<P>) {
-            if (d.wm_map == WmMap::continuous) {
+            if (d.mixed.wm_map == WmMap::continuous) {
                 return f.template operator()<param::WienerMilenkovicContinuous>();
             }
         }

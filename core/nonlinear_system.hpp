@@ -66,7 +66,7 @@ public:
 // the load factor it is solved at. What a run reports of the solved state is read through
 // StaticState (core/static_state.hpp), never through this interface.
 class StaticSystem : public NonlinearSystem {
-public:
+  public:
     virtual void set_load_factor(double lambda) = 0;
 };
 

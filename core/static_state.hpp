@@ -22,8 +22,8 @@ struct PointState {
 // the station (larger arc length) exerts on the part before it, in inertial and in material
 // (deformed section) components.
 struct SectionResultants {
-    int member = -1;   // index into Model::members
-    double s = 0.0;    // arc length along the member's reference line
+    int member = -1;  // index into Model::members
+    double s = 0.0;   // arc length along the member's reference line
     Vec3 force = Vec3::Zero();
     Vec3 moment = Vec3::Zero();
     Vec3 force_material = Vec3::Zero();
@@ -32,7 +32,7 @@ struct SectionResultants {
 
 // The current state of a static problem, read-only.
 class StaticState {
-public:
+  public:
     virtual ~StaticState() = default;
     virtual PointState point_state(int point_index) const = 0;
     virtual AssemblyCounters counters() const = 0;
@@ -50,7 +50,8 @@ public:
     // its end point in arc-length order: every node, and in the mixed formulation each element's
     // rotation between its two nodes (`node` false). The reported rotation angle is continued
     // along them from the root (core/beam_rotation.hpp), and the kinematic check
-    // (core/kinematic_check.hpp) compares neighbours; empty when the formulation does not provide them.
+    // (core/kinematic_check.hpp) compares neighbours; empty when the formulation does not provide
+    // them.
     struct RotationStation {
         int member = -1;
         bool node = true;

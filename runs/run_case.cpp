@@ -59,13 +59,13 @@ nlohmann::json result_header(const RunRequest& request) {
             {"wall_seconds", 0.0},
             {"version", kGitDescribe},
             {"options",
-             {{"interpolation", choice_name(d.interpolation)},
-              {"update", choice_name(d.update)},
-              {"rescale", d.rescale},
-              {"wm_map", choice_name(d.wm_map)},
+             {{"interpolation", choice_name(d.displacement.interpolation)},
+              {"update", choice_name(d.displacement.update)},
+              {"rescale", d.displacement.rescale},
+              {"wm_map", choice_name(d.mixed.wm_map)},
               {"quadrature", quadrature_name(d.quadrature)},
               {"quadrature_points", d.quadrature_points},
-              {"mass_rule", d.mass_rule},
+              {"mass_rule", choice_name(d.mass_rule())},
               {"driver", choice_name(m.solver.driver)},
               {"residual_tolerance", m.solver.residual_tolerance},
               {"increment_tolerance", m.solver.increment_tolerance},
@@ -79,7 +79,8 @@ std::string kinematics_message(const Model& model, const KinematicStop& stop) {
     std::ostringstream s;
     s.precision(6);
     s << "the discrete kinematics do not describe the beam at load step " << stop.step + 1
-      << " (load factor " << stop.load_factor << "): " << describe_kinematic_defect(model, stop.defect)
+      << " (load factor " << stop.load_factor
+      << "): " << describe_kinematic_defect(model, stop.defect)
       << "; the equations are solved, the answer is not trustworthy (refine the mesh or use a "
          "parameterization whose elements resolve the rotation)";
     return s.str();

@@ -14,8 +14,8 @@
 #include "formulations/displacement/displacement_statics.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
-#include "solve_static.hpp"
 #include "parameterizations/registry.hpp"
+#include "solve_static.hpp"
 
 namespace rotbeam {
 
@@ -82,7 +82,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     }
     result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
                        {"stiffness_asymmetry", s.asymmetry},
-                       {"mass_rule", model.discretization.mass_rule}};
+                       {"mass_rule", choice_name(model.discretization.displacement.mass_rule)}};
     result["counters"] = counters_json(problem.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.

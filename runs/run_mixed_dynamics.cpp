@@ -19,9 +19,9 @@
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
-#include "solve_static.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "solve_static.hpp"
 
 namespace rotbeam {
 
@@ -126,12 +126,13 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                            std::complex<double>(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]),
                            s.checks[i]});
     }
-    result["modal"] = {{"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
-                       {"arnoldi_vectors", s.arnoldi_vectors},
-                       {"mass_rule", model.discretization.mass_rule +
-                                         " (element momenta P, H: consistent = the element "
-                                         "average of the section mass, midpoint = its mid-length "
-                                         "value, seed 002)"}};
+    result["modal"] = {
+        {"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
+        {"arnoldi_vectors", s.arnoldi_vectors},
+        {"mass_rule", std::string(choice_name(model.discretization.mixed.mass_rule)) +
+                          " (element momenta P, H: consistent = the element "
+                          "average of the section mass, midpoint = its mid-length "
+                          "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.

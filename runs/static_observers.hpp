@@ -17,8 +17,7 @@ namespace rotbeam {
 // The step entry of a reported load step: every named point's displacement and rotation, the
 // rotation angle continued along the beam from the root (core/beam_rotation.hpp), the load factor
 // and the step's Newton iterations (core/results.hpp, step_json).
-nlohmann::json observe_points(const Model& model, const StaticState& state,
-                              const StepRecord& step);
+nlohmann::json observe_points(const Model& model, const StaticState& state, const StepRecord& step);
 
 // How the reported state of a load step was accepted (core/convergence.hpp): the criterion, the
 // scaled residual, the bound on the scaled algebraic error, and the expected round-off floor when

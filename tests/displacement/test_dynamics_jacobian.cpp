@@ -65,7 +65,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(iteration_matrix_matches_central_differences_at_a_
     for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         for (bool damping : {false, true}) {
             Model m = test::moving_model(2, 3, damping);
-            m.discretization.interpolation = interpolation;
+            m.discretization.displacement.interpolation = interpolation;
             form::DisplacementDynamics<P> d(m);
             test::set_moving_state(d);
             d.save_state(kBase);

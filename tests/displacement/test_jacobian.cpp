@@ -76,9 +76,9 @@ void check_jacobian(const Model& m, const char* label, double min_angle = 2.0) {
     BOOST_TEST_REQUIRE(s.max_rotation_angle() > min_angle);
     double worst_abs = 0.0;
     const double worst = max_column_error(s, worst_abs);
-    std::cout << P::kName << " " << choice_name(m.discretization.interpolation) << ", " << label
-              << ": tip rotation " << s.max_rotation_angle() << " rad, worst column error " << worst
-              << " (relative to the column), " << worst_abs << " (relative to max |J|)\n";
+    std::cout << P::kName << " " << choice_name(m.discretization.displacement.interpolation) << ", "
+              << label << ": tip rotation " << s.max_rotation_angle() << " rad, worst column error "
+              << worst << " (relative to the column), " << worst_abs << " (relative to max |J|)\n";
     BOOST_TEST(worst < 1e-7);
 }
 
@@ -97,7 +97,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(jacobian_matches_central_differences_every_paramet
                               P, AllParams) {
     for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         Model m = test::curved_twisted(2, 4, true, true);
-        m.discretization.interpolation = interpolation;
+        m.discretization.displacement.interpolation = interpolation;
         check_jacobian<P>(m, "p=4, 2 elements, follower+gravity");
     }
 }
@@ -112,8 +112,8 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(additive_update_jacobian_matches_central_differenc
                               ThreeParams) {
     for (const Interpolation interpolation : comb::kDisplacementInterpolations) {
         Model m = test::curved_twisted(2, 4, true, true);
-        m.discretization.interpolation = interpolation;
-        m.discretization.update = Update::additive;
+        m.discretization.displacement.interpolation = interpolation;
+        m.discretization.displacement.update = Update::additive;
         check_jacobian<P>(m, "additive update, p=4, 2 elements, follower+gravity", 1.5);
     }
 }

@@ -28,7 +28,7 @@ Model free_beam(Interpolation interpolation) {
     Model m =
         test::cantilever(Vec3(10, 0, 0), test::diagonal_section(1e6, 1e6, 1e6, 50, 100, 200), 4, 4);
     m.constraints.clear();
-    m.discretization.interpolation = interpolation;
+    m.discretization.displacement.interpolation = interpolation;
     return m;
 }
 
