@@ -11,7 +11,7 @@
 
 #include "combinations/registry.hpp"
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
@@ -74,7 +74,7 @@ template <Formulation F, class Fn>
 decltype(auto) dispatch_parameterization_of(const Discretization& d, Fn&& f) {
     return param::dispatch_parameterization(d.rotation, [&]<class P>() -> decltype(auto) {
         if constexpr (traits(F).wm_maps && kHasWmMap<P>) {
-            if (d.wm_map == WmMap::continuous) {
+            if (d.mixed.wm_map == WmMap::continuous) {
                 return f.template operator()<param::WienerMilenkovicContinuous>();
             }
         }

@@ -43,6 +43,11 @@ enum class Integrator { automatic, generalized_alpha, trapezoidal, ida };
 // static equilibrium of the loads at t = 0.
 enum class InitialState { rest, static_equilibrium };
 
+// How the inertia is integrated: the displacement formulation's mass quadrature (consistent,
+// one mid-point, or nodal GLL points), the mixed formulation's element mass (consistent: the
+// element average of the section mass, midpoint: its mid-length value; no lumped rule).
+enum class MassRule { consistent, midpoint, lumped };
+
 enum class LinearSolver { sparse, dense };
 
 // The static nonlinear solver: the in-house Newton or KINSOL (additive systems only).
@@ -77,6 +82,10 @@ struct ChoiceNames<Integrator> {
 template <>
 struct ChoiceNames<InitialState> {
     static constexpr std::array<std::string_view, 2> kNames = {"rest", "static"};
+};
+template <>
+struct ChoiceNames<MassRule> {
+    static constexpr std::array<std::string_view, 3> kNames = {"consistent", "midpoint", "lumped"};
 };
 template <>
 struct ChoiceNames<LinearSolver> {

@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 
 namespace rotbeam {
 

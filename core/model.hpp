@@ -187,20 +187,42 @@ struct Analysis {
 
 enum class Quadrature { automatic, reduced, full, gll };
 
-struct Discretization {
-    Formulation formulation = Formulation::displacement;
-    ParameterizationId rotation{};  // parameterizations/registry.hpp; {} = the quaternion
-    int order = 1;                             // displacement: element polynomial order p
-    Quadrature quadrature = Quadrature::automatic;
-    int quadrature_points = 0;   // > 0 overrides the rule's point count
+// The displacement formulation's own options (docs/displacement-formulation.md).
+struct DisplacementOptions {
     Interpolation interpolation = Interpolation::relative;
     Update update = Update::multiplicative;
     bool rescale = true;
-    std::string mass_rule = "consistent";      // consistent | midpoint | lumped
-    // Mixed formulation with Wiener–Milenković: `plain` (seed 002 as published; singular at
-    // φ = 2π) or `continuous` (GXBeam's continuous rescaling map,
+    MassRule mass_rule = MassRule::consistent;
+    // Mixed-integration-point Newton (statics, formulations/displacement/mip_stresses.hpp; case
+    // key solver.mip): same solution, the geometric stiffness from the predicted resultants.
+    bool mip = false;
+};
+
+// The mixed formulation's own options (docs/mixed-formulation.md).
+struct MixedOptions {
+    // With Wiener–Milenković: `plain` (seed 002 as published; singular at φ = 2π) or
+    // `continuous` (GXBeam's continuous rescaling map,
     // parameterizations/wiener_milenkovic_continuous.hpp).
     WmMap wm_map = WmMap::plain;
+    MassRule mass_rule = MassRule::consistent;  // consistent | midpoint (no nodal masses to lump)
+};
+
+// What both formulations share, and each formulation's options. The case loader sets only the
+// options of the chosen formulation and refuses a case that gives the other's. The mesh keys
+// (order, quadrature) are shared: a case file gives them once for every formulation it is run in;
+// the mixed element is linear with its one mid-point and reads neither.
+struct Discretization {
+    Formulation formulation = Formulation::displacement;
+    ParameterizationId rotation{};  // parameterizations/registry.hpp; {} = the quaternion
+    int order = 1;                  // element polynomial order p
+    Quadrature quadrature = Quadrature::automatic;
+    int quadrature_points = 0;  // > 0 overrides the rule's point count
+    DisplacementOptions displacement;
+    MixedOptions mixed;
+    // The chosen formulation's mass rule.
+    MassRule mass_rule() const {
+        return formulation == Formulation::mixed ? mixed.mass_rule : displacement.mass_rule;
+    }
     // discretization.accuracy: per formulation, the accuracy the case's own discretization is
     // meant to reach, in the sense of analysis.accuracy (every estimate ≤ half of it relative to
     // its scale, docs/accuracy-control.md); a statement checked by the tests, not a target.
@@ -212,9 +234,6 @@ struct SolverSettings {
     double increment_tolerance = 1e-12;  // on the scaled Newton increment
     int max_iterations = 50;
     bool line_search = true;
-    // Mixed-integration-point Newton (displacement statics, formulations/displacement/
-    // mip_stresses.hpp): same solution, the geometric stiffness from the predicted resultants.
-    bool mip = false;
     LinearSolver linear_solver = LinearSolver::sparse;  // core/sparse_lu.hpp
     Driver driver = Driver::newton;
     double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)

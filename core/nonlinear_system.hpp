@@ -9,7 +9,6 @@
 
 #include <Eigen/SparseCore>
 #include <string>
-#include <vector>
 
 #include "core/types.hpp"
 
@@ -63,59 +62,12 @@ public:
     virtual std::string describe_state() const { return {}; }
 };
 
-// Named-point results every formulation provides: displacement and rotation relative to the
-// reference configuration, R = R^c R^rᵀ (material → inertial).
-struct PointState {
-    Vec3 displacement = Vec3::Zero();
-    Mat3 rotation = Mat3::Identity();
-};
-
-// Section resultants at one station of a member: the internal force and moment the part beyond
-// the station (larger arc length) exerts on the part before it, in inertial and in material
-// (deformed section) components.
-struct SectionResultants {
-    int member = -1;   // index into Model::members
-    double s = 0.0;    // arc length along the member's reference line
-    Vec3 force = Vec3::Zero();
-    Vec3 moment = Vec3::Zero();
-    Vec3 force_material = Vec3::Zero();
-    Vec3 moment_material = Vec3::Zero();
-};
-
-// A formulation set up for a static analysis of a model.
-class StaticProblem : public NonlinearSystem {
-public:
+// What the static driver (run_static, core/static_driver.hpp) drives: the nonlinear system and
+// the load factor it is solved at. What a run reports of the solved state is read through
+// StaticState (core/static_state.hpp), never through this interface.
+class StaticSystem : public NonlinearSystem {
+  public:
     virtual void set_load_factor(double lambda) = 0;
-    virtual PointState point_state(int point_index) const = 0;
-    virtual AssemblyCounters counters() const = 0;
-    // Largest rotation angle [rad] held in the state's parameters (for messages and tests; the
-    // messages also give the largest angle continued along the beam, core/beam_rotation.hpp).
-    virtual double max_rotation_angle() const { return 0.0; }
-    // Section resultants along the members at the formulation's natural stations (mixed: element
-    // mid-points, where F and M are unknowns); empty when the formulation does not provide them.
-    virtual std::vector<SectionResultants> section_resultants() const { return {}; }
-    // Deformed positions x^r + u of the formulation's nodes along each member, in arc-length
-    // order (for shape plots); empty when the formulation does not provide them.
-    struct CenterlinePoint {
-        int member = -1;
-        Vec3 position = Vec3::Zero();
-    };
-    virtual std::vector<CenterlinePoint> centerline() const { return {}; }
-    // Rotations relative to the reference, R^c R^rᵀ, along each member from its start point to
-    // its end point in arc-length order: every node, and in the mixed formulation each element's
-    // rotation between its two nodes (`node` false). The reported rotation angle is continued
-    // along them from the root (core/beam_rotation.hpp), and the kinematic check
-    // (core/kinematic_check.hpp) compares neighbours; empty when the formulation does not provide them.
-    struct RotationStation {
-        int member = -1;
-        bool node = true;
-        Mat3 rotation = Mat3::Identity();
-        // Element stations: the rotation vector of the turn from the element's start node to its
-        // end node that the element's own curvature makes, ΔL C^ab κ (R_b = R_a exp of it, to the
-        // element's discretization error); zero where the formulation has no element curvature.
-        Vec3 turn = Vec3::Zero();
-    };
-    virtual std::vector<RotationStation> rotation_stations() const { return {}; }
 };
 
 }  // namespace rotbeam

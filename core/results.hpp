@@ -17,7 +17,7 @@
 
 #include "core/atomic_file.hpp"  // write_file_atomically
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 
 namespace rotbeam {
 

@@ -308,7 +308,7 @@ namespace {
 
 std::string failure_message(const char* what, size_t step, double target, double lambda,
                             double converged, int cuts, const NewtonOutcome& last,
-                            const StaticProblem& problem) {
+                            const StaticSystem& problem) {
     std::ostringstream s;
     s.precision(6);
     s << what << " at load step " << step + 1 << " (target load factor " << target
@@ -321,7 +321,7 @@ std::string failure_message(const char* what, size_t step, double target, double
 
 }  // namespace
 
-StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
+StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
                          const std::function<void(const StepRecord&)>& on_step,
                          const StepSolver& solver) {

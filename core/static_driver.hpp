@@ -1,7 +1,8 @@
 // The shared static driver: load stepping with automatic step cutting around a damped Newton
 // method whose update is a retraction x ⊕ δ (rotations are composed, not added). Damping uses
 // Deuflhard's natural monotonicity test (affine invariant; see damped_step in the .cpp). Used by
-// both formulations (through StaticProblem only).
+// both formulations (through StaticSystem only: residual, Jacobian, retraction, scales, load
+// factor).
 //
 // Convergence: the criteria of core/convergence.hpp (the scaled residual within
 // residual_tolerance and a scaled Newton correction within increment_tolerance, or a residual
@@ -127,7 +128,7 @@ struct StaticOutcome {
 
 // Follow the load factors; after each reported step converges, `on_step` is called (the problem is
 // at that state).
-StaticOutcome run_static(StaticProblem& problem, const std::vector<double>& load_factors,
+StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
                          const std::function<void(const StepRecord&)>& on_step,
                          const StepSolver& solver = {});

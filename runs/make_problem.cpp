@@ -7,9 +7,6 @@ namespace rotbeam {
 
 std::unique_ptr<StaticProblem> make_static_problem(const Model& model) {
     const Discretization& d = model.discretization;
-    if (model.solver.mip && !comb::traits(d.formulation).mip) {
-        throw InputError("solver.mip: " + std::string(comb::traits(d.formulation).no_mip_reason));
-    }
     return comb::dispatch_formulation(
         d.formulation, [&]<Formulation F>() -> std::unique_ptr<StaticProblem> {
             return comb::dispatch_parameterization_of<F>(

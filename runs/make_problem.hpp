@@ -5,12 +5,13 @@
 #include <memory>
 
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 
 namespace rotbeam {
 
 // A static problem for model.discretization.{formulation, rotation} (combinations/dispatch.hpp).
-// Throws InputError for an option the formulation does not take.
+// The options are typed per formulation (core/model.hpp): the loader has refused any the
+// formulation does not take.
 std::unique_ptr<StaticProblem> make_static_problem(const Model& model);
 
 }  // namespace rotbeam

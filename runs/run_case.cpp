@@ -7,10 +7,8 @@
 
 #include "analyses.hpp"
 #include "combinations/registry.hpp"
-#include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
-#include "core/kinsol_driver.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/time_limit.hpp"
@@ -19,6 +17,8 @@
 #include "estimates/history_estimate.hpp"
 #include "make_problem.hpp"
 #include "mode_matching.hpp"
+#include "solve_static.hpp"
+#include "static_observers.hpp"
 
 namespace rotbeam {
 
@@ -60,13 +60,13 @@ nlohmann::json result_header(const RunRequest& request) {
             {"wall_seconds", 0.0},
             {"version", kGitDescribe},
             {"options",
-             {{"interpolation", choice_name(d.interpolation)},
-              {"update", choice_name(d.update)},
-              {"rescale", d.rescale},
-              {"wm_map", choice_name(d.wm_map)},
+             {{"interpolation", choice_name(d.displacement.interpolation)},
+              {"update", choice_name(d.displacement.update)},
+              {"rescale", d.displacement.rescale},
+              {"wm_map", choice_name(d.mixed.wm_map)},
               {"quadrature", quadrature_name(d.quadrature)},
               {"quadrature_points", d.quadrature_points},
-              {"mass_rule", d.mass_rule},
+              {"mass_rule", choice_name(d.mass_rule())},
               {"driver", choice_name(m.solver.driver)},
               {"residual_tolerance", m.solver.residual_tolerance},
               {"increment_tolerance", m.solver.increment_tolerance},
@@ -74,136 +74,38 @@ nlohmann::json result_header(const RunRequest& request) {
             {"steps", nlohmann::json::array()}};
 }
 
-// The deformed centre line of a reported step, for shape plots (kept to small meshes: the result
-// file stays small for the studies' refined runs).
-void add_centerline(const StaticProblem& problem, nlohmann::json& step) {
-    constexpr size_t kMaxPoints = 2000;
-    const std::vector<StaticProblem::CenterlinePoint> line = problem.centerline();
-    if (line.empty() || line.size() > kMaxPoints) return;
-    nlohmann::json points = nlohmann::json::array();
-    for (const StaticProblem::CenterlinePoint& p : line) {
-        points.push_back({p.member, p.position[0], p.position[1], p.position[2]});
-    }
-    step["centerline"] = points;  // [member, x, y, z] per node
-}
-
-// Section resultants of the last converged state, per member, ordered by arc length.
-nlohmann::json sections_json(const Model& model, double load_factor,
-                             const std::vector<SectionResultants>& sections) {
-    auto vec = [](const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); };
-    nlohmann::json stations = nlohmann::json::array();
-    for (const SectionResultants& r : sections) {
-        stations.push_back({{"member", model.members[static_cast<size_t>(r.member)].name},
-                            {"s", r.s},
-                            {"force", vec(r.force)},
-                            {"moment", vec(r.moment)},
-                            {"force_material", vec(r.force_material)},
-                            {"moment_material", vec(r.moment_material)}});
-    }
-    return {{"load_factor", load_factor}, {"stations", stations}};
-}
-
-// How the reported state of a load step was accepted (core/convergence.hpp): the criterion, the
-// scaled residual, the bound on the scaled algebraic error, and the expected round-off floor when
-// the last solve computed it (it does when the final correction was computed).
-nlohmann::json convergence_json(const StepRecord& step) {
-    nlohmann::json c = {{"criterion", to_string(step.criterion)},
-                        {"scaled_residual", step.scaled_residual},
-                        {"error_bound", step.error_bound}};
-    if (step.round_off_floor > 0.0) c["round_off_floor"] = step.round_off_floor;
-    return c;
-}
-
-// KINSOL (line search, scaling, KLU) in place of the in-house Newton, for additive systems.
-NewtonOutcome kinsol_step_solver(NonlinearSystem& system, const NewtonSettings& settings) {
-    KinsolSettings k;
-    k.residual_tolerance = settings.residual_tolerance;
-    k.increment_tolerance = settings.increment_tolerance;
-    k.max_iterations = settings.max_iterations;
-    k.line_search = settings.line_search;
-    const KinsolOutcome o = solve_kinsol(system, k);
-    NewtonOutcome out;
-    out.converged = o.converged;
-    out.criterion = o.criterion;
-    out.error_bound = o.error_bound;
-    out.round_off_floor = o.round_off_floor;
-    out.iterations = static_cast<int>(o.iterations);
-    out.scaled_residual = o.scaled_residual;
-    out.singular = o.singular;
-    out.failure = o.failure;
-    return out;
-}
-
-// Thrown out of run_static's step callback when a reported step fails the kinematic check
-// (core/kinematic_check.hpp): the run stops there, as it does when Newton fails.
-struct KinematicsUnresolved {
-    std::string message;
-};
-
-// The kinematic check of a reported step: throws KinematicsUnresolved naming the step, the load
-// factor, the element and the angles.
-void check_kinematics(const Model& model, const StaticProblem& problem, std::size_t step,
-                      double load_factor) {
-    const std::optional<KinematicDefect> worst =
-        worst_kinematic_defect(problem.rotation_stations());
-    if (!worst || within_kinematic_bound(*worst)) return;
+// The kinematic check's stop of a static analysis: the message names the step, the load factor,
+// the element and the angles.
+std::string kinematics_message(const Model& model, const KinematicStop& stop) {
     std::ostringstream s;
     s.precision(6);
-    s << "the discrete kinematics do not describe the beam at load step " << step + 1
-      << " (load factor " << load_factor << "): " << describe_kinematic_defect(model, *worst)
+    s << "the discrete kinematics do not describe the beam at load step " << stop.step + 1
+      << " (load factor " << stop.load_factor
+      << "): " << describe_kinematic_defect(model, stop.defect)
       << "; the equations are solved, the answer is not trustworthy (refine the mesh or use a "
          "parameterization whose elements resolve the rotation)";
-    throw KinematicsUnresolved{s.str()};
+    return s.str();
 }
 
 void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
     result["dofs"] = problem->size();
-    std::vector<PointState> states(model.points.size());
-    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
-    if (trace) settings.trace = &std::cerr;
-    StepSolver solver;
-    if (model.solver.driver == Driver::kinsol) {
-        if (!problem->additive()) {
-            throw InputError(
-                "solver.driver: kinsol needs an additive update (the mixed "
-                "formulation); this combination composes rotations");
-        }
-        solver = kinsol_step_solver;
-    }
-    std::optional<StaticOutcome> solved;
-    try {
-        solved = run_static(
-            *problem, model.analysis.statics.load_factors, settings,
-            [&](const StepRecord& step) {
-                check_kinematics(model, *problem, result["steps"].size(), step.load_factor);
-                for (size_t i = 0; i < model.points.size(); ++i) {
-                    states[i] = problem->point_state(static_cast<int>(i));
-                }
-                const std::vector<Vec3> continued =
-                    rotation_vectors_along_beam(model, problem->rotation_stations(), states);
-                result["steps"].push_back(step_json(model, step.load_factor, std::nullopt,
-                                                    step.newton_iterations, states, continued));
-                result["steps"].back()["convergence"] = convergence_json(step);
-                add_centerline(*problem, result["steps"].back());
-            },
-            solver);
-    } catch (const KinematicsUnresolved& e) {
+    const StaticRecording recording{.steps = true, .convergence = true, .kinematic_check = true};
+    const StaticSolve solve = solve_static(model, *problem, model.analysis.statics.load_factors,
+                                           recording, trace, result);
+    result["counters"] = counters_json(problem->counters());
+    if (solve.unresolved) {
         result["status"] = kKinematicsUnresolved;
-        result["message"] = e.message;
-        result["counters"] = counters_json(problem->counters());
+        result["message"] = kinematics_message(model, *solve.unresolved);
         return;
     }
-    const StaticOutcome& outcome = *solved;
+    const StaticOutcome& outcome = solve.outcome;
     result["status"] = to_string(outcome.status);
     result["message"] = outcome.message;
-    result["counters"] = counters_json(problem->counters());
-    if (!outcome.steps.empty()) {
-        const std::vector<SectionResultants> sections = problem->section_resultants();
-        if (!sections.empty()) {
-            result["section_resultants"] =
-                sections_json(model, outcome.last_converged_load_factor, sections);
-        }
+    if (outcome.steps.empty()) return;
+    if (std::optional<nlohmann::json> sections =
+            observe_sections(model, *problem, outcome.last_converged_load_factor)) {
+        result["section_resultants"] = std::move(*sections);
     }
 }
 

@@ -15,6 +15,7 @@
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
+#include "solve_static.hpp"
 
 namespace rotbeam {
 
@@ -51,21 +52,11 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     form::DisplacementStatics<P> problem(model);
     result["dofs"] = problem.size();
     if (model.analysis.modal.about_static_state && has_static_load(model)) {
-        NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
-        if (trace) settings.trace = &std::cerr;
         std::vector<double> loads = model.analysis.statics.load_factors;
         if (loads.empty()) loads = {1.0};
-        std::vector<PointState> states(model.points.size());
-        const StaticOutcome out = run_static(problem, loads, settings, [&](const StepRecord& s) {
-            for (size_t i = 0; i < model.points.size(); ++i) {
-                states[i] = problem.point_state(static_cast<int>(i));
-            }
-            const std::vector<Vec3> continued =
-                rotation_vectors_along_beam(model, problem.rotation_stations(), states);
-            result["steps"].push_back(step_json(model, s.load_factor, std::nullopt,
-                                                s.newton_iterations, states, continued));
-        });
-        if (!static_state_usable(out, result)) return;
+        const StaticSolve solve =
+            solve_static(model, problem, loads, StaticRecording{}, trace, result);
+        if (!static_state_usable(solve.outcome, result)) return;
     }
     VecX r;
     SparseMatrix K;
@@ -91,7 +82,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     }
     result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
                        {"stiffness_asymmetry", s.asymmetry},
-                       {"mass_rule", model.discretization.mass_rule}};
+                       {"mass_rule", choice_name(model.discretization.displacement.mass_rule)}};
     result["counters"] = counters_json(problem.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.
@@ -128,14 +119,15 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     }
     form::DisplacementDynamics<P> problem(model);
     result["dofs"] = problem.size();
-    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
-    if (trace) settings.trace = &std::cerr;
     if (d.initial_state == InitialState::static_equilibrium) {
         problem.statics().set_time(0.0);
-        const StaticOutcome out = run_static(problem.statics(), {1.0}, settings, {});
-        if (!static_state_usable(out, result)) return;
+        const StaticSolve solve = solve_static(model, problem.statics(), {1.0},
+                                               StaticRecording{.steps = false}, trace, result);
+        if (!static_state_usable(solve.outcome, result)) return;
         problem.adopt_static_state();
     }
+    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
+    if (trace) settings.trace = &std::cerr;
     problem.set_velocity(d.initial_velocity, Vec3::Zero());
     std::vector<PointState> states(model.points.size());
     TimeIntegrationSettings ts;

@@ -21,6 +21,7 @@
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "solve_static.hpp"
 
 namespace rotbeam {
 
@@ -32,45 +33,30 @@ bool has_static_load(const Model& m) {
 
 nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
 
-// Solves the static state of `model` at its load factors (default {1}) and records the steps.
-// Returns false (status set) when the static solve fails; `lambda` is the last load factor.
+// Solves the static state of `model` at its load factors (default {1}) and records the steps
+// (unless `record` is false). Returns false (status set) when the static solve fails or a step
+// fails the kinematic check; `lambda` is the last load factor.
 template <class P>
 bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& state,
                   double& lambda, bool record = true) {
     form::MixedStaticsOf<P> statics(model);
-    NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
-    if (trace) settings.trace = &std::cerr;
     std::vector<double> loads = model.analysis.statics.load_factors;
     if (loads.empty()) loads = {1.0};
-    std::vector<PointState> states(model.points.size());
-    std::optional<std::string> unresolved;
-    const StaticOutcome out = run_static(statics, loads, settings, [&](const StepRecord& s) {
-        const std::optional<KinematicDefect> worst =
-            worst_kinematic_defect(statics.rotation_stations());
-        if (!unresolved && worst && !within_kinematic_bound(*worst)) {
-            std::ostringstream m;
-            m.precision(6);
-            m << "static state: the discrete kinematics do not describe the beam at load factor "
-              << s.load_factor << ": " << describe_kinematic_defect(model, *worst);
-            unresolved = m.str();
-        }
-        if (!record || unresolved) return;
-        for (size_t i = 0; i < model.points.size(); ++i) {
-            states[i] = statics.point_state(static_cast<int>(i));
-        }
-        const std::vector<Vec3> continued =
-            rotation_vectors_along_beam(model, statics.rotation_stations(), states);
-        result["steps"].push_back(
-            step_json(model, s.load_factor, std::nullopt, s.newton_iterations, states, continued));
-    });
+    const StaticRecording recording{.steps = record, .kinematic_check = true};
+    const StaticSolve solve = solve_static(model, statics, loads, recording, trace, result);
     state = statics.state_vector();
-    lambda = out.last_converged_load_factor;
-    if (unresolved) {
+    lambda = solve.outcome.last_converged_load_factor;
+    if (solve.unresolved) {
+        std::ostringstream m;
+        m.precision(6);
+        m << "static state: the discrete kinematics do not describe the beam at load factor "
+          << solve.unresolved->load_factor << ": "
+          << describe_kinematic_defect(model, solve.unresolved->defect);
         result["status"] = kKinematicsUnresolved;
-        result["message"] = *unresolved;
+        result["message"] = m.str();
         return false;
     }
-    return static_state_usable(out, result);
+    return static_state_usable(solve.outcome, result);
 }
 
 // Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
@@ -140,12 +126,13 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                            std::complex<double>(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]),
                            s.checks[i]});
     }
-    result["modal"] = {{"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
-                       {"arnoldi_vectors", s.arnoldi_vectors},
-                       {"mass_rule", model.discretization.mass_rule +
-                                         " (element momenta P, H: consistent = the element "
-                                         "average of the section mass, midpoint = its mid-length "
-                                         "value, seed 002)"}};
+    result["modal"] = {
+        {"solver", "shift-invert Arnoldi on (A + σB)⁻¹B, σ = 0, sparse LU"},
+        {"arnoldi_vectors", s.arnoldi_vectors},
+        {"mass_rule", std::string(choice_name(model.discretization.mixed.mass_rule)) +
+                          " (element momenta P, H: consistent = the element "
+                          "average of the section mass, midpoint = its mid-length "
+                          "value, seed 002)"}};
     result["counters"] = counters_json(dyn.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.

@@ -28,7 +28,7 @@ Model model_of(const MotionRunSpec& spec) {
     m.discretization.formulation = spec.formulation;
     m.discretization.rotation = spec.rotation;
     m.discretization.order = spec.order;
-    m.discretization.wm_map = spec.wm_map;
+    m.discretization.mixed.wm_map = spec.wm_map;
     m.analysis.dynamics.rho_infinity = spec.rho_infinity;
     m.analysis.dynamics.output_interval = spec.end_time / kOutputs;
     return m;

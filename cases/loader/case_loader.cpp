@@ -261,7 +261,7 @@ void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& 
 void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& model) {
     const Discretization& d = model.discretization;
     if (!model.needs_inertia() || d.formulation != Formulation::displacement ||
-        d.mass_rule != "midpoint" || d.order < 2) {
+        d.displacement.mass_rule != MassRule::midpoint || d.order < 2) {
         return;
     }
     r.fail(root["discretization"]["mass_rule"], "discretization.mass_rule",

@@ -127,9 +127,10 @@ void describe_analysis(const Model& model, std::ostream& os) {
     }
     const Discretization& d = model.discretization;
     os << "discretization: " << choice_name(d.formulation) << ", " << param::name_of(d.rotation)
-       << ", order " << d.order << ", interpolation " << choice_name(d.interpolation) << ", update "
-       << choice_name(d.update) << ", mass rule " << d.mass_rule
-       << (d.rescale ? ", rescale" : ", no rescale") << "\n";
+       << ", order " << d.order << ", interpolation " << choice_name(d.displacement.interpolation)
+       << ", update " << choice_name(d.displacement.update) << ", mass rule "
+       << choice_name(d.mass_rule()) << (d.displacement.rescale ? ", rescale" : ", no rescale")
+       << "\n";
     os << "solver: " << choice_name(model.solver.driver) << ", residual tol "
        << model.solver.residual_tolerance << ", max " << model.solver.max_iterations
        << " iterations\n";

@@ -34,7 +34,6 @@ void read_references(const YamlReader& r, const YAML::Node& root, Model& model);
 
 // Values shared by discretization and references.applies_to (the enum choices: choice_names).
 extern const std::vector<std::string> kQuadratures;
-extern const std::vector<std::string> kMassRules;
 
 // The enum E named by `node` (one of choice_names<E>(), else fails naming the key and the choices):
 // where a case's names become enums (core/choices.hpp).

@@ -24,7 +24,7 @@ std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::s
     if (name == "quadrature") return r.choice(v, key, kQuadratures);
     if (name == "interpolation") return r.choice(v, key, choice_names<Interpolation>());
     if (name == "update") return r.choice(v, key, choice_names<Update>());
-    if (name == "mass_rule") return r.choice(v, key, kMassRules);
+    if (name == "mass_rule") return r.choice(v, key, choice_names<MassRule>());
     if (name == "wm_map") return r.choice(v, key, choice_names<WmMap>());
     if (name == "rescale") return r.boolean(v, key) ? "true" : "false";
     if (name == "elements")

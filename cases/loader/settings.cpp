@@ -12,7 +12,6 @@
 namespace rotbeam::cases {
 
 const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll"};
-const std::vector<std::string> kMassRules = {"consistent", "midpoint", "lumped"};
 
 ParameterizationId read_rotation(const YamlReader& r, const YAML::Node& node,
                                  const std::string& key) {
@@ -209,6 +208,56 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     }
 }
 
+namespace {
+
+// The discretization keys that belong to one formulation's options (core/model.hpp); the others
+// are shared. A case that gives a key of a formulation it does not run in is refused.
+const std::vector<std::pair<const char*, std::vector<Formulation>>> kFormulationKeys = {
+    {"interpolation", {Formulation::displacement}},
+    {"update", {Formulation::displacement}},
+    {"rescale", {Formulation::displacement}},
+    {"mass_rule", {Formulation::displacement, Formulation::mixed}},
+    {"wm_map", {Formulation::mixed}}};
+
+void refuse_other_formulations_keys(const YamlReader& r, const YAML::Node& n, Formulation f) {
+    for (const auto& [key, formulations] : kFormulationKeys) {
+        if (!n[key] || std::find(formulations.begin(), formulations.end(), f) != formulations.end())
+            continue;
+        std::string owners;
+        for (const Formulation o : formulations) {
+            owners += (owners.empty() ? "" : ", ") + std::string(choice_name(o));
+        }
+        r.fail(n[key], "discretization." + std::string(key),
+               "not an option of the " + std::string(choice_name(f)) +
+                   " formulation (an option of the " + owners + " formulation)");
+    }
+}
+
+void read_displacement_options(const YamlReader& r, const YAML::Node& n, DisplacementOptions& o) {
+    const std::string k = "discretization";
+    if (n["interpolation"])
+        o.interpolation = read_choice<Interpolation>(r, n["interpolation"], k + ".interpolation");
+    if (n["update"]) o.update = read_choice<Update>(r, n["update"], k + ".update");
+    if (n["rescale"]) o.rescale = r.boolean(n["rescale"], k + ".rescale");
+    if (n["mass_rule"]) o.mass_rule = read_choice<MassRule>(r, n["mass_rule"], k + ".mass_rule");
+}
+
+void read_mixed_options(const YamlReader& r, const YAML::Node& n, MixedOptions& o) {
+    const std::string k = "discretization";
+    if (n["mass_rule"]) {
+        o.mass_rule = read_choice<MassRule>(r, n["mass_rule"], k + ".mass_rule");
+        // The mixed element's momenta are element unknowns: nothing to lump
+        // (docs/mixed-dynamics.md).
+        if (o.mass_rule == MassRule::lumped) {
+            r.fail(n["mass_rule"], k + ".mass_rule",
+                   std::string(comb::traits(Formulation::mixed).no_lumped_mass_reason));
+        }
+    }
+    if (n["wm_map"]) o.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
+}
+
+}  // namespace
+
 void read_discretization(const YamlReader& r, const YAML::Node& root, Model& model) {
     const YAML::Node n = root["discretization"];
     if (!n) return;
@@ -230,17 +279,15 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     if (n["quadrature_points"])
         d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points",
                                                  kMaxQuadraturePoints);
-    if (n["interpolation"])
-        d.interpolation = read_choice<Interpolation>(r, n["interpolation"], k + ".interpolation");
-    if (n["update"]) d.update = read_choice<Update>(r, n["update"], k + ".update");
-    if (n["rescale"]) d.rescale = r.boolean(n["rescale"], k + ".rescale");
-    if (n["mass_rule"]) d.mass_rule = r.choice(n["mass_rule"], k + ".mass_rule", kMassRules);
-    // The mixed element's momenta are element unknowns: nothing to lump (docs/mixed-dynamics.md).
-    if (!comb::traits(d.formulation).lumped_mass && d.mass_rule == "lumped") {
-        r.fail(n["mass_rule"], k + ".mass_rule",
-               std::string(comb::traits(d.formulation).no_lumped_mass_reason));
+    refuse_other_formulations_keys(r, n, d.formulation);
+    switch (d.formulation) {
+        case Formulation::displacement:
+            read_displacement_options(r, n, d.displacement);
+            break;
+        case Formulation::mixed:
+            read_mixed_options(r, n, d.mixed);
+            break;
     }
-    if (n["wm_map"]) d.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
     if (n["accuracy"]) read_stated_accuracy(r, n["accuracy"], d);
 }
 
@@ -261,7 +308,13 @@ void read_solver(const YamlReader& r, const YAML::Node& root, Model& model) {
         s.max_iterations =
             r.positive_integer(n["max_iterations"], k + ".max_iterations", kMaxNewtonIterations);
     if (n["line_search"]) s.line_search = r.boolean(n["line_search"], k + ".line_search");
-    if (n["mip"]) s.mip = r.boolean(n["mip"], k + ".mip");
+    if (n["mip"]) {
+        // An option of the displacement formulation (DisplacementOptions), kept under `solver`.
+        const Formulation f = model.discretization.formulation;
+        if (!comb::traits(f).mip)
+            r.fail(n["mip"], k + ".mip", std::string(comb::traits(f).no_mip_reason));
+        model.discretization.displacement.mip = r.boolean(n["mip"], k + ".mip");
+    }
     if (n["linear_solver"]) {
         s.linear_solver = read_choice<LinearSolver>(r, n["linear_solver"], k + ".linear_solver");
     }

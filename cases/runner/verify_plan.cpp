@@ -29,17 +29,18 @@ std::string model_setting(const Model& model, const std::string& key) {
     if (key == "interpolation") {
         return comb::traits(d.formulation).interpolations.empty()
                    ? ""
-                   : std::string(choice_name(d.interpolation));
+                   : std::string(choice_name(d.displacement.interpolation));
     }
     if (key == "wm_map") {
-        return comb::has_wm_map(d.formulation, d.rotation) ? std::string(choice_name(d.wm_map))
-                                                           : "";
+        return comb::has_wm_map(d.formulation, d.rotation)
+                   ? std::string(choice_name(d.mixed.wm_map))
+                   : "";
     }
     if (key == "order") return std::to_string(d.order);
     if (key == "quadrature_points") return std::to_string(d.quadrature_points);
-    if (key == "update") return std::string(choice_name(d.update));
-    if (key == "mass_rule") return d.mass_rule;
-    if (key == "rescale") return d.rescale ? "true" : "false";
+    if (key == "update") return std::string(choice_name(d.displacement.update));
+    if (key == "mass_rule") return std::string(choice_name(d.mass_rule()));
+    if (key == "rescale") return d.displacement.rescale ? "true" : "false";
     if (key == "quadrature") {
         static const char* names[] = {"automatic", "reduced", "full", "gll"};  // enum order
         return names[static_cast<int>(d.quadrature)];

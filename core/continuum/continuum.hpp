@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 #include "core/types.hpp"
 
 namespace rotbeam {

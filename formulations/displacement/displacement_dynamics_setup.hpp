@@ -15,11 +15,12 @@ namespace rotbeam::form {
 template <param::RotationParameterization P>
 DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
     : model_(model), statics_(model), mass_mesh_(build_mass_mesh(model)) {
-    if (model.discretization.update != Update::multiplicative) {
+    if (model.discretization.displacement.update != Update::multiplicative) {
         throw InputError(
             "discretization.update: dynamics composes rotation increments "
             "(multiplicative); '" +
-            std::string(choice_name(model.discretization.update)) + "' is for statics only");
+            std::string(choice_name(model.discretization.displacement.update)) +
+            "' is for statics only");
     }
     for (const PrescribedMotion& m : mesh().prescribed) {
         if (m.displacement.norm() > 0.0 || m.rotation.norm() > 0.0) {

@@ -13,16 +13,17 @@ Mesh build_mass_mesh(const Model& model) {
     Model m = model;
     Discretization& d = m.discretization;
     d.quadrature_points = 0;
-    if (d.mass_rule == "consistent") {
-        d.quadrature = Quadrature::full;
-    } else if (d.mass_rule == "midpoint") {
-        d.quadrature = Quadrature::full;
-        d.quadrature_points = 1;
-    } else if (d.mass_rule == "lumped") {
-        d.quadrature = Quadrature::gll;
-    } else {
-        throw InputError("discretization.mass_rule: unknown rule '" + d.mass_rule +
-                         "' (consistent | midpoint | lumped)");
+    switch (d.displacement.mass_rule) {
+        case MassRule::consistent:
+            d.quadrature = Quadrature::full;
+            break;
+        case MassRule::midpoint:
+            d.quadrature = Quadrature::full;
+            d.quadrature_points = 1;
+            break;
+        case MassRule::lumped:
+            d.quadrature = Quadrature::gll;
+            break;
     }
     return build_mesh(m);
 }

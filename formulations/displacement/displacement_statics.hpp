@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "core/model.hpp"
-#include "core/nonlinear_system.hpp"
+#include "core/static_state.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/mesh.hpp"
 #include "formulations/displacement/mip_stresses.hpp"
@@ -72,7 +72,8 @@ public:
     void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
     PointState point_state(int point_index) const override;
     AssemblyCounters counters() const override { return counters_; }
-    double max_rotation_angle() const override;
+    // Largest rotation angle [rad] held in the state's parameters (messages and tests).
+    double max_rotation_angle() const;
     bool additive() const override { return additive_; }
     // With the additive update the unknowns are [u; p] per free node (what KINSOL iterates on).
     VecX state_vector() const override {

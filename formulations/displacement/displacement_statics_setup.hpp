@@ -51,11 +51,11 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
             }
         }
     }
-    relative_ = model.discretization.interpolation == Interpolation::relative;
-    rescale_nodes_ = relative_ && model.discretization.rescale && P::kCanRescale;
-    rescale_refused_ = !relative_ && model.discretization.rescale && P::kCanRescale;
-    additive_ = model.discretization.update == Update::additive;
-    if (model.solver.mip && additive_) {
+    relative_ = model.discretization.displacement.interpolation == Interpolation::relative;
+    rescale_nodes_ = relative_ && model.discretization.displacement.rescale && P::kCanRescale;
+    rescale_refused_ = !relative_ && model.discretization.displacement.rescale && P::kCanRescale;
+    additive_ = model.discretization.displacement.update == Update::additive;
+    if (model.discretization.displacement.mip && additive_) {
         throw InputError(
             "solver.mip: the mixed-integration-point Newton needs the "
             "multiplicative update (its stress prediction maps δψ, not δp)");
@@ -75,7 +75,7 @@ DisplacementStatics<P>::DisplacementStatics(const Model& model)
     D_.resize(nn);
     E_.resize(nn);
     build_pattern();
-    mip_.setup(mesh_, model.solver.mip);
+    mip_.setup(mesh_, model.discretization.displacement.mip);
     compute_scales(model);
     set_load_factor(0.0);
 }

@@ -35,8 +35,8 @@ Mat6 section_mass_at(const Member& member, double f) {
 }  // namespace
 
 Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
-    const std::string& rule = model.discretization.mass_rule;
-    if (rule == "lumped") {
+    const MassRule rule = model.discretization.mixed.mass_rule;
+    if (rule == MassRule::lumped) {
         throw InputError(
             "discretization.mass_rule: 'lumped' is not available in the mixed formulation (its "
             "momenta P, H are element unknowns: there are no nodal masses to lump; consistent | "
@@ -44,7 +44,7 @@ Mat6 mixed_element_mass(const Model& model, const MixedElement& element) {
     }
     const Member& member = model.members[static_cast<std::size_t>(element.member)];
     const double L = ReferenceGeometry(model, element.member).length();
-    if (rule == "midpoint") return section_mass_at(member, element.s_mid / L);
+    if (rule == MassRule::midpoint) return section_mass_at(member, element.s_mid / L);
     // Consistent: ∫ Nᵀ I N ds / ΔL with the element's constant momentum shape N = 1, i.e. the
     // average of I over the element's arc-length span s_mid ∓ L/2n (build_mixed_layout's uniform
     // division), exact for the piecewise-linear station interpolation: trapezoids between the

@@ -251,6 +251,58 @@ BOOST_AUTO_TEST_CASE(overrides_are_validated_like_the_file) {
     BOOST_TEST(mass.find("sections.square: needs mass or density") != std::string::npos, mass);
 }
 
+// Each formulation's options (core/model.hpp, DisplacementOptions and MixedOptions) are read into
+// its own struct; a key of the other formulation is refused naming the key, whether the file or
+// an override chose the formulation.
+BOOST_AUTO_TEST_CASE(options_of_the_other_formulation_are_refused) {
+    const std::string path = case_path("cantilever-moment");
+    const Model d =
+        load_case(path, {"discretization.interpolation=direct", "discretization.update=additive",
+                         "discretization.rescale=false", "discretization.mass_rule=lumped",
+                         "solver.mip=true"});
+    BOOST_TEST((d.discretization.displacement.interpolation == Interpolation::direct));
+    BOOST_TEST((d.discretization.displacement.update == Update::additive));
+    BOOST_TEST(!d.discretization.displacement.rescale);
+    BOOST_TEST((d.discretization.mass_rule() == MassRule::lumped));
+    BOOST_TEST(d.discretization.displacement.mip);
+    const Model m =
+        load_case(path, {"discretization.formulation=mixed", "discretization.wm_map=continuous",
+                         "discretization.mass_rule=midpoint"});
+    BOOST_TEST((m.discretization.mixed.wm_map == WmMap::continuous));
+    BOOST_TEST((m.discretization.mass_rule() == MassRule::midpoint));
+    BOOST_TEST((m.discretization.displacement.mass_rule == MassRule::consistent));
+
+    const std::string interpolation = input_error([&] {
+        load_case(path,
+                  {"discretization.formulation=mixed", "discretization.interpolation=relative"});
+    });
+    BOOST_TEST(interpolation ==
+               path +
+                   ":--set: discretization.interpolation: not an option of the mixed "
+                   "formulation (an option of the displacement formulation)");
+    for (const char* key : {"discretization.update=additive", "discretization.rescale=true"}) {
+        BOOST_TEST(input_error([&] {
+                       load_case(path, {"discretization.formulation=mixed", key});
+                   }).find("not an option of the mixed formulation") != std::string::npos);
+    }
+    const std::string wm = input_error([&] { load_case(path, {"discretization.wm_map=plain"}); });
+    BOOST_TEST(wm == path +
+                         ":--set: discretization.wm_map: not an option of the displacement "
+                         "formulation (an option of the mixed formulation)");
+    const std::string mip = input_error([&] {
+        load_case(path, {"discretization.formulation=mixed", "solver.mip=false"});
+    });
+    BOOST_TEST(mip.find(":--set: solver.mip: the mixed formulation's section resultants are "
+                        "unknowns already") != std::string::npos,
+               mip);
+    const std::string lumped = input_error([&] {
+        load_case(path, {"discretization.formulation=mixed", "discretization.mass_rule=lumped"});
+    });
+    BOOST_TEST(lumped.find("discretization.mass_rule: 'lumped' is not available in the mixed "
+                           "formulation") != std::string::npos,
+               lumped);
+}
+
 BOOST_AUTO_TEST_CASE(errors_name_the_line_of_the_offending_key) {
     const std::string text =
         "points:\n  root: [0, 0, 0]\n  tip: [1, 0, 0]\nsections:\n  s:\n"

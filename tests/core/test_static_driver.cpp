@@ -16,7 +16,7 @@ namespace {
 
 // Two unknowns (x, y): r = (g(x) − λ, y − x²), with g chosen per test. The retraction is additive
 // but refuses |x| ≥ x_limit (a stand-in for a parameterization's singular angle).
-class ToyProblem : public StaticProblem {
+class ToyProblem : public StaticSystem {
   public:
     ToyProblem(std::function<double(double)> g, std::function<double(double)> dg,
                double x_limit = 1e300)
@@ -49,8 +49,6 @@ class ToyProblem : public StaticProblem {
     void restore_state(int slot) override { x_ = saved_[slot]; }
     const VecX& residual_scale() const override { return scale_; }
     const VecX& increment_scale() const override { return scale_; }
-    PointState point_state(int) const override { return {}; }
-    AssemblyCounters counters() const override { return {}; }
     std::string describe_state() const override { return "x = " + std::to_string(x_[0]); }
 
     Eigen::Vector2d x_ = Eigen::Vector2d::Zero();

@@ -30,7 +30,7 @@ struct Solved {
 
 template <class P>
 Solved solve(Model m, bool mip, bool line_search, double lambda) {
-    m.solver.mip = mip;
+    m.discretization.displacement.mip = mip;
     form::DisplacementStatics<P> problem(m);
     NewtonSettings s;
     s.line_search = line_search;
@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(predicted_stresses_are_the_linearization_of_the_true_ones) 
     Model m = test::bend45(2, 4);
     using Statics = form::DisplacementStatics<param::Quaternion>;
     Model with_mip = m;
-    with_mip.solver.mip = true;
+    with_mip.discretization.displacement.mip = true;
     Statics standard(m), mip(with_mip);
     NewtonSettings s;
     s.line_search = false;

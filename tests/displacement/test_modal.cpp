@@ -34,7 +34,7 @@ Model steel_cantilever(int elements, int order, const std::string& mass_rule) {
     m << kRho * kA, kRho * kA, kRho * kA, 2.0 * kRho * kI, kRho * kI, kRho * kI;
     s.mass = Mat6(m.asDiagonal());
     Model model = test::cantilever(Vec3(1, 0, 0), s, elements, order);
-    model.discretization.mass_rule = mass_rule;
+    model.discretization.displacement.mass_rule = *parse_choice<MassRule>(mass_rule);
     return model;
 }
 
@@ -171,7 +171,7 @@ Model joined_beam(int elements, int order, const std::string& mass_rule) {
         {"discretization.formulation=displacement", "discretization.order=" + std::to_string(order),
          "discretization.mass_rule=consistent"});
     for (Member& member : m.members) member.elements = elements;
-    m.discretization.mass_rule = mass_rule;
+    m.discretization.displacement.mass_rule = *parse_choice<MassRule>(mass_rule);
     return m;
 }
 

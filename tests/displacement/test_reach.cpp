@@ -19,8 +19,8 @@ namespace {
 template <class P>
 StaticOutcome reach(double& worst) {
     Model m = test::rollup(16, 4);
-    m.discretization.interpolation = Interpolation::relative;
-    m.discretization.rescale = true;
+    m.discretization.displacement.interpolation = Interpolation::relative;
+    m.discretization.displacement.rescale = true;
     form::DisplacementStatics<P> problem(m);
     NewtonSettings s;
     s.substeps = 2;

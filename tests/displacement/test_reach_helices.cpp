@@ -36,7 +36,7 @@ Model catalog_case(const std::string& name, Interpolation interpolation) {
     Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/" + name + ".yaml");
     m.members.at(0).elements = 8;
     m.discretization.order = 8;
-    m.discretization.interpolation = interpolation;
+    m.discretization.displacement.interpolation = interpolation;
     return m;
 }
 

@@ -15,8 +15,8 @@ namespace rotbeam::test {
 // The combination's choices written into a model's discretization.
 inline void apply(const comb::Combination& c, Model& m) {
     m.discretization.rotation = c.rotation;
-    if (c.interpolation) m.discretization.interpolation = *c.interpolation;
-    if (c.wm_map) m.discretization.wm_map = *c.wm_map;
+    if (c.interpolation) m.discretization.displacement.interpolation = *c.interpolation;
+    if (c.wm_map) m.discretization.mixed.wm_map = *c.wm_map;
 }
 
 // fn.template operator()<F, P>(c) for every registered combination c, with F its formulation and

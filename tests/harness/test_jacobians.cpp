@@ -50,7 +50,7 @@ std::vector<DisplacementState> displacement_states(const comb::Combination& c) {
     if constexpr (P::kSize == 3) {
         states.push_back({"additive update, p=4, 2 elements, follower+gravity",
                           curved_twisted(2, 4, true, true), 1.5});
-        states.back().model.discretization.update = Update::additive;
+        states.back().model.discretization.displacement.update = Update::additive;
     }
     for (DisplacementState& s : states) apply(c, s.model);
     return states;

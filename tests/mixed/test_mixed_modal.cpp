@@ -298,16 +298,16 @@ BOOST_AUTO_TEST_CASE(consistent_averages_midpoint_samples_lumped_is_refused) {
     beam.sections = {station(0.0, 1.0), station(0.3, 4.0), station(1.0, 1.0)};
     m.members = {beam};
     const form::MixedLayout layout = form::build_mixed_layout(m);
-    m.discretization.mass_rule = "consistent";
+    m.discretization.mixed.mass_rule = MassRule::consistent;
     const double consistent = form::mixed_element_mass(m, layout.elements[0])(0, 0);
     const double consistent2 = form::mixed_element_mass(m, layout.elements[1])(0, 0);
-    m.discretization.mass_rule = "midpoint";
+    m.discretization.mixed.mass_rule = MassRule::midpoint;
     const double midpoint = form::mixed_element_mass(m, layout.elements[0])(0, 0);
     const double midpoint2 = form::mixed_element_mass(m, layout.elements[1])(0, 0);
     BOOST_TEST(std::abs(consistent - (0.75 + 0.1 * (4.0 + 22.0 / 7.0)) / 0.5) < 1e-14);
     BOOST_TEST(std::abs(midpoint - 3.5) < 1e-14);
     BOOST_TEST(std::abs(consistent2 - midpoint2) < 1e-14);
-    m.discretization.mass_rule = "lumped";
+    m.discretization.mixed.mass_rule = MassRule::lumped;
     BOOST_CHECK_THROW(form::mixed_element_mass(m, layout.elements[0]), InputError);
 }
 
