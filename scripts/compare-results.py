@@ -33,8 +33,13 @@ EXCLUDED = {
     "seconds": "time to solution of a speed-study point, or its Pareto-front entry",
     "seconds_all": "speed study: time of a run assembling every term",
     "seconds_needed": "speed study: time of the same run assembling only the needed terms",
+    "cpu_seconds": "error estimate: CPU time of the companion runs (estimate.cost)",
+    "run_wall_seconds": "error estimate: wall time of the run it estimates (estimate.cost)",
+    "run_seconds": "accuracy control: time of one attempt's run (accuracy.attempts)",
+    "estimate_seconds": "accuracy control: time of one attempt's estimate (accuracy.attempts)",
     # Derived from the times.
     "ratio": "speed study: seconds_all / seconds_needed",
+    "wall_ratio": "error estimate: the companions' wall time over the run's (estimate.cost)",
     "repeats": "speed study: how many repeats fit its time budget",
     "front": "speed study: the Pareto front of time against error (which points, in what order)",
 }

@@ -12,7 +12,7 @@ cases="$2/cases"
 # case formulation rotation extra-set expected-extra-counter
 while read -r case formulation rotation extra counter; do
     name="$case-$formulation-$rotation"
-    args=(run "$cases/$case.yaml" --formulation "$formulation" --rotation "$rotation" --quiet)
+    args=(run "$cases/$case.yaml" --formulation "$formulation" --rotation "$rotation" --quiet --estimate off)
     [ "$extra" != "-" ] && args+=(--set "$extra")
     "$rotbeam" "${args[@]}" --json "$work/$name-needed.json" || fail "$name: default run"
     "$rotbeam" "${args[@]}" --set solver.assemble_all_terms=true \

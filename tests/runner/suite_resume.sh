@@ -4,7 +4,7 @@
 # - `--jobs 2` gives the same results as `--jobs 1` (scripts/compare-results.py: equal JSON apart
 #   from the listed timing fields);
 # - a suite stopped by SIGKILL, SIGINT or SIGTERM, early (among the runs) or late (in the
-#   studies), leaves only complete files and no temporary, exits 128 + signal with one line for
+#   studies), leaves only complete files and no temporary (after SIGKILL: none once resumed), exits 128 + signal with one line for
 #   SIGINT/SIGTERM, keeps its finished runs untouched on resume, and resumes to the same results;
 # - a suite and a `run` that hit a file size limit (ulimit -f, the EFBIG of a full disk) exit 4
 #   naming the file, leave no partial file, and the suite then resumes to the same results;
@@ -60,12 +60,17 @@ interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE [FLAGS]
         grep -q "stopped by SIG$signal" "$work/err.txt" || fail "SIG$signal: no line saying so"
         ;;
     esac
-    complete_files "$dir" "after SIG$signal ($when)"
+    if [ "$signal" = KILL ]; then
+        complete_files "$dir" "after SIG$signal ($when)" temporaries-allowed
+    else
+        complete_files "$dir" "after SIG$signal ($when)"
+    fi
     local before finished
     finished=$(ls "$dir/runs" | grep -c '\.json$')
     before=$(cd "$dir/runs" && stat -c '%n %y' *.json | sort)
     "$rotbeam" suite --quick $flags --jobs 2 --out "$dir" >/dev/null 2>&1 ||
         fail "resume after SIG$signal failed"
+    complete_files "$dir" "resumed after SIG$signal ($when)"
     while read -r name stamp; do
         [ "$(stat -c '%y' "$dir/runs/$name")" = "$stamp" ] || fail "finished run redone: $name"
     done <<<"$before"
