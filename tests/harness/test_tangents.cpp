@@ -205,7 +205,10 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(linearization_remainders_drop_fourfold_when_the_st
     const Vp<P> d = generic_direction<P>();
     const Vp<P> v = d.reverse();
     const Vec3 w = generic_increment();
-    for (const auto& [label, p] : tangent_samples<P>()) {
+    for (const auto& sample : tangent_samples<P>()) {
+        // Named, not a structured binding: clang 14 cannot capture a binding in a lambda.
+        const std::string& label = sample.first;
+        const Vp<P>& p = sample.second;
         const Mat3 R = P::matrix(p);
         const auto rotation_remainder = [&](double t) {
             const Vec3 psi = so3::log_map(P::matrix(Vp<P>(p + t * d)) * R.transpose());
