@@ -158,13 +158,25 @@ void mode_estimates(const Comparison& cmp, const ModePairing& pair_modes, json& 
     }
 }
 
+}  // namespace
+
 int total_elements(const Model& model) {
     int n = 0;
     for (const Member& m : model.members) n += m.elements;
     return n;
 }
 
-}  // namespace
+TimedRun run_companion_timed(const CompanionRun& run, const Model& model) {
+    const Clock::time_point start = Clock::now();
+    TimedRun t;
+    try {
+        t.result = run(model);
+    } catch (const InputError& error) {
+        t.result = {{"status", "error"}, {"message", error.what()}, {"steps", json::array()}};
+    }
+    t.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return t;
+}
 
 nlohmann::json estimate_off() { return {{"status", "off"}}; }
 
@@ -196,14 +208,7 @@ void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun
     cmp.floor_displacement = kRoundOffFloor * length_scale(model);
     double seconds = 0.0;
     for (const Companion& c : plan.companions) {
-        const Clock::time_point start = Clock::now();
-        json r;
-        try {
-            r = run(c.model);
-        } catch (const InputError& error) {
-            r = {{"status", "error"}, {"message", error.what()}, {"steps", json::array()}};
-        }
-        const double dt = std::chrono::duration<double>(Clock::now() - start).count();
+        auto [r, dt] = run_companion_timed(run, c.model);
         seconds += dt;
         e["companions"].push_back({{"label", c.label},
                                    {"elements", total_elements(c.model)},

@@ -34,6 +34,17 @@ using ModePairing =
 // for rotations and to the frequency itself.
 inline constexpr double kRoundOffFloor = 1e-10;
 
+// One companion run and its wall time. A model the formulation refuses (InputError) gives
+// {status: "error", message, steps: []}: the companion then counts as failed.
+struct TimedRun {
+    nlohmann::json result;
+    double seconds = 0.0;
+};
+TimedRun run_companion_timed(const CompanionRun& run, const Model& model);
+
+// The elements of all members.
+int total_elements(const Model& model);
+
 void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun& run,
                   const ModePairing& pair_modes);
 

@@ -224,18 +224,9 @@ double work(const json& r) {
 
 Ran run_companion(const Companion& c, const CompanionRun& run, const json& steps, double dt,
                   json& estimate, double& companion_work) {
-    const Clock::time_point start = Clock::now();
-    json r;
-    try {
-        r = run(c.model);
-    } catch (const InputError& error) {
-        r = {{"status", "error"}, {"message", error.what()}, {"steps", json::array()}};
-    }
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    int elements = 0;
-    for (const Member& m : c.model.members) elements += m.elements;
+    auto [r, seconds] = run_companion_timed(run, c.model);
     estimate["companions"].push_back({{"label", c.label},
-                                      {"elements", elements},
+                                      {"elements", total_elements(c.model)},
                                       {"order", c.model.discretization.order},
                                       {"time_step", c.model.analysis.dynamics.time_step},
                                       {"status", r.value("status", std::string("error"))},
