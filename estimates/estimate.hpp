@@ -36,7 +36,9 @@ inline constexpr double kRoundOffFloor = 1e-10;
 
 // One companion run and its wall time. A model the formulation refuses (InputError) gives
 // {status: "error", message, steps: []}: the companion then counts as failed.
-struct TimedRun {
+// bugprone-exception-escape: the implicit special members may throw through the JSON value's; a
+// TimedRun is returned once and unpacked, never moved inside a noexcept context.
+struct TimedRun {  // NOLINT(bugprone-exception-escape)
     nlohmann::json result;
     double seconds = 0.0;
 };

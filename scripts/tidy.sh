@@ -18,7 +18,8 @@ fi
 files=()
 if [ $# -ge 1 ]; then
   mapfile -t changed < <(git diff --name-only --diff-filter=d "$1" -- \
-    'core/*' 'cases/*' 'formulations/*' 'parameterizations/*' 'tests/*')
+    'core/*' 'cases/*' 'formulations/*' 'parameterizations/*' 'combinations/*' 'runs/*' \
+    'estimates/*' 'studies/*' 'benches/*' 'reports/*' 'tests/*')
   for f in "${changed[@]}"; do
     case "$f" in
       *.cpp) files+=("$root/$f") ;;
