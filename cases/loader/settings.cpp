@@ -242,7 +242,8 @@ void read_displacement_options(const YamlReader& r, const YAML::Node& n, Displac
     if (n["mass_rule"]) o.mass_rule = read_choice<MassRule>(r, n["mass_rule"], k + ".mass_rule");
 }
 
-void read_mixed_options(const YamlReader& r, const YAML::Node& n, MixedOptions& o) {
+void read_mixed_options(const YamlReader& r, const YAML::Node& n, ParameterizationId rotation,
+                        MixedOptions& o) {
     const std::string k = "discretization";
     if (n["mass_rule"]) {
         o.mass_rule = read_choice<MassRule>(r, n["mass_rule"], k + ".mass_rule");
@@ -253,7 +254,21 @@ void read_mixed_options(const YamlReader& r, const YAML::Node& n, MixedOptions& 
                    std::string(comb::traits(Formulation::mixed).no_lumped_mass_reason));
         }
     }
-    if (n["wm_map"]) o.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
+    if (n["wm_map"]) {
+        // Only the rotations the combination registry gives a WM map (comb::has_wm_map) take
+        // it; with another one it would be ignored.
+        if (!comb::has_wm_map(Formulation::mixed, rotation)) {
+            std::string takers;
+            for (const ParameterizationId p : param::parameterization_ids()) {
+                if (!comb::has_wm_map(Formulation::mixed, p)) continue;
+                takers += (takers.empty() ? "" : " | ") + std::string(param::name_of(p));
+            }
+            r.fail(n["wm_map"], k + ".wm_map",
+                   "not an option of rotation '" + std::string(param::name_of(rotation)) +
+                       "' (an option of rotation " + takers + ")");
+        }
+        o.wm_map = read_choice<WmMap>(r, n["wm_map"], k + ".wm_map");
+    }
 }
 
 }  // namespace
@@ -285,7 +300,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
             read_displacement_options(r, n, d.displacement);
             break;
         case Formulation::mixed:
-            read_mixed_options(r, n, d.mixed);
+            read_mixed_options(r, n, d.rotation, d.mixed);
             break;
     }
     if (n["accuracy"]) read_stated_accuracy(r, n["accuracy"], d);

@@ -265,12 +265,20 @@ BOOST_AUTO_TEST_CASE(options_of_the_other_formulation_are_refused) {
     BOOST_TEST(!d.discretization.displacement.rescale);
     BOOST_TEST((d.discretization.mass_rule() == MassRule::lumped));
     BOOST_TEST(d.discretization.displacement.mip);
-    const Model m =
-        load_case(path, {"discretization.formulation=mixed", "discretization.wm_map=continuous",
-                         "discretization.mass_rule=midpoint"});
+    const Model m = load_case(
+        path, {"discretization.formulation=mixed", "discretization.rotation=wiener-milenkovic",
+               "discretization.wm_map=continuous", "discretization.mass_rule=midpoint"});
     BOOST_TEST((m.discretization.mixed.wm_map == WmMap::continuous));
     BOOST_TEST((m.discretization.mass_rule() == MassRule::midpoint));
     BOOST_TEST((m.discretization.displacement.mass_rule == MassRule::consistent));
+    // The WM map with another rotation (here the case's quaternion) would be ignored: refused,
+    // whether the file or an override chose the rotation.
+    const std::string map = input_error([&] {
+        load_case(path, {"discretization.formulation=mixed", "discretization.wm_map=plain"});
+    });
+    BOOST_TEST(map == path +
+                          ":--set: discretization.wm_map: not an option of rotation 'quaternion' "
+                          "(an option of rotation wiener-milenkovic)");
 
     const std::string interpolation = input_error([&] {
         load_case(path,

@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "core/so3.hpp"
+#include "tests/cases/catalog_model.hpp"
 
 using namespace rotbeam;
 
@@ -22,13 +23,9 @@ Model two_point_model(const Vec3& a, const Vec3& b) {
     return m;
 }
 
-// The 45° bend of docs/benchmarks.md §2: radius 100, centre (0, 100, 0), tip at 45°.
-Model bend45() {
-    Model m = two_point_model(Vec3::Zero(), Vec3(70.71068, 29.28932, 0.0));
-    m.members[0].line.kind = LineKind::arc;
-    m.members[0].line.center = Vec3(0.0, 100.0, 0.0);
-    return m;
-}
+// The 45° bend of docs/benchmarks.md §2 (cases/bend-45.yaml): radius 100, centre (0, 100, 0), tip
+// at 45°. The other models here are geometry variants, not catalog cases.
+Model bend45() { return test::catalog_model("bend-45", {}); }
 
 // A genuinely three-dimensional key-point curve with twist.
 Model spatial_curve() {
@@ -71,9 +68,11 @@ BOOST_AUTO_TEST_SUITE(reference_geometry)
 BOOST_AUTO_TEST_CASE(bend45_arc_ends_at_published_tip_with_45_degree_tangent) {
     const Model m = bend45();
     const ReferenceGeometry g(m, 0);
-    BOOST_TEST(std::abs(g.length() - 100.0 * kPi / 4.0) < 1e-4);  // tip printed to 1e-5
+    // The catalog's tip is 100 (sin 45°, 1 − cos 45°) to 16 digits: length and tip to round-off
+    // of lengths ~100 (1e-12).
+    BOOST_TEST(std::abs(g.length() - 100.0 * kPi / 4.0) < 1e-12);
     const Vec3 tip = g.position(g.length());
-    BOOST_TEST((tip - Vec3(70.71068, 29.28932, 0.0)).norm() < 1e-5);
+    BOOST_TEST((tip - m.points[1].position).norm() < 1e-12);
     const double c = std::sqrt(0.5);
     BOOST_TEST((g.tangent(g.length()) - Vec3(c, c, 0.0)).norm() < 1e-7);
     BOOST_TEST((g.tangent(0.0) - Vec3::UnitX()).norm() < 1e-12);
@@ -95,10 +94,10 @@ BOOST_AUTO_TEST_CASE(arc_with_normal_goes_the_long_way_round) {
     Model m = bend45();
     m.members[0].line.normal = Vec3(0.0, 0.0, -1.0);
     const ReferenceGeometry g(m, 0);
-    BOOST_TEST(std::abs(g.length() - 100.0 * (2.0 * kPi - kPi / 4.0)) < 1e-4);
+    BOOST_TEST(std::abs(g.length() - 100.0 * (2.0 * kPi - kPi / 4.0)) < 1e-12);
     // Starting clockwise about +z: the tangent at the root is −x.
     BOOST_TEST((g.tangent(0.0) + Vec3::UnitX()).norm() < 1e-12);
-    BOOST_TEST((g.position(g.length()) - Vec3(70.71068, 29.28932, 0.0)).norm() < 1e-5);
+    BOOST_TEST((g.position(g.length()) - m.points[1].position).norm() < 1e-12);
     check_curvature_against_frames(g);
 }
 

@@ -13,6 +13,7 @@
 #include "deformed.hpp"
 #include "dynamic_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "tests/harness/type_lists.hpp"
 
 // Eigen allocates with std::malloc, not operator new, so malloc itself is interposed (the
 // executable's definition wins over glibc's; __libc_malloc is glibc's implementation).
@@ -63,10 +64,9 @@ BOOST_AUTO_TEST_CASE(counter_sees_eigen_allocations) {
     BOOST_TEST(v.size() == 100);
 }
 
-BOOST_AUTO_TEST_CASE(evaluate_and_retract_allocate_nothing_after_the_first_call) {
-    BOOST_TEST(allocations_in_repeated_evaluations<param::Quaternion>() == 0);
-    BOOST_TEST(allocations_in_repeated_evaluations<param::WienerMilenkovic>() == 0);
-    BOOST_TEST(allocations_in_repeated_evaluations<param::RotationVector>() == 0);
+BOOST_AUTO_TEST_CASE_TEMPLATE(evaluate_and_retract_allocate_nothing_after_the_first_call, P,
+                              test::ParameterizationTypes<>) {
+    BOOST_TEST(allocations_in_repeated_evaluations<P>() == 0);
 }
 
 // The dynamics: step start, residual + iteration matrix, retraction, checkpoints,
@@ -98,10 +98,9 @@ long allocations_in_dynamic_steps() {
     return g_allocations - before;
 }
 
-BOOST_AUTO_TEST_CASE(dynamic_steps_of_the_formulation_allocate_nothing_after_the_first) {
-    BOOST_TEST(allocations_in_dynamic_steps<param::Quaternion>() == 0);
-    BOOST_TEST(allocations_in_dynamic_steps<param::WienerMilenkovic>() == 0);
-    BOOST_TEST(allocations_in_dynamic_steps<param::RotationVector>() == 0);
+BOOST_AUTO_TEST_CASE_TEMPLATE(dynamic_steps_of_the_formulation_allocate_nothing_after_the_first, P,
+                              test::ParameterizationTypes<>) {
+    BOOST_TEST(allocations_in_dynamic_steps<P>() == 0);
 }
 
 // The moving test structure with dead loads (no follower stiffness) and twelve generalized-α

@@ -12,6 +12,7 @@
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/rotate_section.hpp"
+#include "tests/harness/type_lists.hpp"
 
 using namespace rotbeam;
 
@@ -105,8 +106,7 @@ BOOST_AUTO_TEST_SUITE_END()
 
 // The direct interpolation's nodal maps A_j (δψ) and K_j (δκ), for every parameterization,
 // against central differences through the nodal retraction p_j ← exp(δψ_j) ⊗ p_j.
-using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                                   param::RotationVector, param::EulerAngles>;
+using AllParams = test::ParameterizationTypes<>;
 
 BOOST_AUTO_TEST_SUITE(displacement_interpolation)
 

@@ -12,6 +12,7 @@
 #include "formulations/displacement/displacement_statics.hpp"
 #include "models.hpp"
 #include "parameterizations/registry.hpp"
+#include "tests/harness/type_lists.hpp"
 
 using namespace rotbeam;
 
@@ -67,8 +68,7 @@ BOOST_AUTO_TEST_CASE(mip_solves_the_full_rollup_in_one_step_with_the_standard_so
 // The 45° bend at P = 600 in one load step, every parameterization (the tip turns 1.16 rad), with
 // the damping on (its trials retract and restore: the predicted stresses must follow the state)
 // and off.
-using AllParams = boost::mpl::list<param::Quaternion, param::WienerMilenkovic, param::Rodrigues,
-                                   param::RotationVector>;
+using AllParams = test::ParameterizationTypes<>;
 BOOST_AUTO_TEST_CASE_TEMPLATE(mip_solves_the_bend_in_one_step_with_the_standard_solution, P,
                               AllParams) {
     Model m = test::bend45(1, 10);

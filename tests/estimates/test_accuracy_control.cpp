@@ -31,6 +31,7 @@
 #include "estimates/accuracy_scale.hpp"
 #include "runs/accuracy_run.hpp"
 #include "runs/mode_matching.hpp"
+#include "tests/estimates/tip_states.hpp"
 
 namespace rotbeam {
 
@@ -43,7 +44,7 @@ std::string case_path(const std::string& name) {
 }
 
 // The exact or reference tip state at a reported step (index, load factor).
-using TipReference = std::function<PointState(std::size_t, double)>;
+using TipReference = test::TipStates;
 
 PointState rollup_tip(std::size_t, double lambda) {
     const oracle::RollupState s = oracle::rollup_tip(12.0, lambda);  // L = 12 in
@@ -54,16 +55,6 @@ PointState rollup_tip(std::size_t, double lambda) {
 PointState helix_tip(std::size_t, double lambda) {
     const oracle::HelixState s = oracle::helix_state(lambda / 10.0, Vec3(0.6, 0.0, 0.8), 10.0);
     return {s.displacement, s.rotation};
-}
-
-TipReference bend_reference() {
-    const Model model = load_case(case_path("bend-45"), {}, CaseParts::case_file);
-    const ContinuumOutcome out = solve_continuum(model);
-    BOOST_TEST_REQUIRE(out.status == "converged");
-    const std::size_t tip = static_cast<std::size_t>(model.point_index("tip"));
-    std::vector<PointState> tips;
-    for (const ContinuumStep& s : out.steps) tips.push_back(s.points.at(tip));
-    return [tips](std::size_t k, double) { return tips.at(k); };
 }
 
 struct Row {
@@ -117,15 +108,9 @@ void check_static(const Row& row, const TipReference& reference, double length) 
     for (std::size_t k = 0; k < r["steps"].size(); ++k) {
         const json& step = r["steps"][k];
         const PointState exact = reference(k, step["load_factor"].get<double>());
-        const json& tip = step["points"]["tip"];
-        Vec3 u;
-        Mat3 R;
-        for (int i = 0; i < 3; ++i) {
-            u[i] = tip["displacement"][i].get<double>();
-            for (int j = 0; j < 3; ++j) R(i, j) = tip["rotation_matrix"][i][j].get<double>();
-        }
-        const double eu = (u - exact.displacement).norm() / length;
-        const double er = so3::rotation_angle(R.transpose() * exact.rotation);
+        const PointState tip = test::point_state_of(step);
+        const double eu = (tip.displacement - exact.displacement).norm() / length;
+        const double er = so3::rotation_angle(tip.rotation.transpose() * exact.rotation);
         BOOST_TEST(eu <= row.tolerance, label(row) << " step " << k << ": displacement " << eu);
         BOOST_TEST(er <= row.tolerance, label(row) << " step " << k << ": rotation " << er);
     }
@@ -150,7 +135,7 @@ BOOST_AUTO_TEST_CASE(rollup_true_error_within_tolerance) {
 }
 
 BOOST_AUTO_TEST_CASE(bend_true_error_within_tolerance) {
-    const TipReference reference = bend_reference();
+    const TipReference reference = test::bend_tip_reference();
     // The scale: the distance root–tip of the arc, 100 · 2 sin 22.5°.
     const double chord = 200.0 * std::sin(M_PI / 8.0);
     for (const Row& row : {Row{"bend-45", "displacement", "rodrigues", 1e-7, true},

@@ -31,6 +31,7 @@
 #include "core/static_driver.hpp"
 #include "estimates/quantity_estimate.hpp"
 #include "runs/run_case.hpp"
+#include "tests/estimates/tip_states.hpp"
 
 namespace rotbeam {
 
@@ -39,7 +40,7 @@ namespace {
 using json = nlohmann::json;
 
 // The tip state the runs are compared with, per reported step (index, load factor).
-using Reference = std::function<PointState(std::size_t, double)>;
+using Reference = test::TipStates;
 
 struct TipError {
     double displacement = 0.0;
@@ -60,15 +61,9 @@ Run run_against(const std::string& name, const std::vector<std::string>& overrid
     for (std::size_t k = 0; k < run.result["steps"].size(); ++k) {
         const json& step = run.result["steps"][k];
         const PointState exact = reference(k, step["load_factor"].get<double>());
-        const json& tip = step["points"]["tip"];
-        Vec3 u;
-        Mat3 R;
-        for (int i = 0; i < 3; ++i) {
-            u[i] = tip["displacement"][i].get<double>();
-            for (int j = 0; j < 3; ++j) R(i, j) = tip["rotation_matrix"][i][j].get<double>();
-        }
-        run.true_errors.push_back(
-            {(u - exact.displacement).norm(), so3::rotation_angle(R.transpose() * exact.rotation)});
+        const PointState tip = test::point_state_of(step);
+        run.true_errors.push_back({(tip.displacement - exact.displacement).norm(),
+                                   so3::rotation_angle(tip.rotation.transpose() * exact.rotation)});
     }
     return run;
 }
@@ -209,67 +204,48 @@ PointState rollup_tip(std::size_t, double lambda) {
 // estimate.
 constexpr double kRollupFloor = 1e-9;
 
-// The continuum reference of the 45° bend at its load factors, solved once.
-Reference bend_reference() {
-    const Model model = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/bend-45.yaml", {},
-                                  CaseParts::case_file);
-    const ContinuumOutcome out = solve_continuum(model);
-    BOOST_TEST_REQUIRE(out.status == "converged");
-    const std::size_t tip = static_cast<std::size_t>(model.point_index("tip"));
-    std::vector<PointState> tips;
-    for (const ContinuumStep& s : out.steps) tips.push_back(s.points.at(tip));
-    return [tips](std::size_t k, double) { return tips.at(k); };
-}
-
 // 100 × the continuum reference's verified accuracy, 1.8e-11 L with L = 25π in the arc length
 // (docs/reference-solutions.md; the convergence study's fit floor): below it the error measured
 // is the reference's.
 constexpr double kBendFloor = 100 * 1.8e-11 * 78.53981633974483;
+
+using Sequence = void (*)(const std::string&, const std::string&, const Reference&, Checked&);
+
+// The sequence on the case with the quaternion and the rotation vector, each with at least
+// `min_points` points where the effectivity band was asserted.
+void check_both_rotations(Sequence sequence, const std::string& name, const Reference& reference,
+                          double floor, int min_points) {
+    for (const char* rotation : {"quaternion", "rotation-vector"}) {
+        Checked c;
+        c.floor = floor;
+        sequence(name, rotation, reference, c);
+        BOOST_TEST(c.asymptotic >= min_points,
+                   rotation << ": " << c.asymptotic << " asymptotic points");
+    }
+}
 
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(effectivity)
 
 BOOST_AUTO_TEST_CASE(p_plus_one_on_the_rollup) {
-    for (const char* rotation : {"quaternion", "rotation-vector"}) {
-        Checked c;
-        c.floor = kRollupFloor;
-        p_sequence("cantilever-moment", rotation, rollup_tip, c);
-        // 2 quantities × 7 load steps × orders 3 … 7, less those at round-off.
-        BOOST_TEST(c.asymptotic >= 40, rotation << ": " << c.asymptotic << " asymptotic points");
-    }
+    // 2 quantities × 7 load steps × orders 3 … 7, less those at round-off.
+    check_both_rotations(p_sequence, "cantilever-moment", rollup_tip, kRollupFloor, 40);
 }
 
 BOOST_AUTO_TEST_CASE(h_refinement_on_the_rollup) {
-    for (const char* rotation : {"quaternion", "rotation-vector"}) {
-        Checked c;
-        c.floor = kRollupFloor;
-        h_sequence("cantilever-moment", rotation, rollup_tip, c);
-        // The displacement at 7 load steps × 4 meshes, less λ = 2 where the closed circle is
-        // exact; the tip rotation of the mixed roll-up with the rotation vector is exact to
-        // round-off (constant curvature).
-        BOOST_TEST(c.asymptotic >= 20, rotation << ": " << c.asymptotic << " asymptotic points");
-    }
+    // The displacement at 7 load steps × 4 meshes, less λ = 2 where the closed circle is exact;
+    // the tip rotation of the mixed roll-up with the rotation vector is exact to round-off
+    // (constant curvature).
+    check_both_rotations(h_sequence, "cantilever-moment", rollup_tip, kRollupFloor, 20);
 }
 
 BOOST_AUTO_TEST_CASE(p_plus_one_on_the_bend) {
-    const Reference reference = bend_reference();
-    for (const char* rotation : {"quaternion", "rotation-vector"}) {
-        Checked c;
-        c.floor = kBendFloor;
-        p_sequence("bend-45", rotation, reference, c);
-        BOOST_TEST(c.asymptotic >= 15, rotation << ": " << c.asymptotic << " asymptotic points");
-    }
+    check_both_rotations(p_sequence, "bend-45", test::bend_tip_reference(), kBendFloor, 15);
 }
 
 BOOST_AUTO_TEST_CASE(h_refinement_on_the_bend) {
-    const Reference reference = bend_reference();
-    for (const char* rotation : {"quaternion", "rotation-vector"}) {
-        Checked c;
-        c.floor = kBendFloor;
-        h_sequence("bend-45", rotation, reference, c);
-        BOOST_TEST(c.asymptotic >= 15, rotation << ": " << c.asymptotic << " asymptotic points");
-    }
+    check_both_rotations(h_sequence, "bend-45", test::bend_tip_reference(), kBendFloor, 15);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

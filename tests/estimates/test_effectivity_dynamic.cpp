@@ -170,6 +170,17 @@ int check_sequence(const cli::MotionRunSpec& spec, const std::vector<double>& dt
     return checked;
 }
 
+// The manufactured motion in the mixed formulation with the quaternion, 8 elements per member.
+cli::MotionRunSpec mixed_quaternion(Integrator integrator) {
+    cli::MotionRunSpec s;
+    s.formulation = Formulation::mixed;
+    s.rotation = param::id_of<param::Quaternion>();
+    s.integrator = integrator;
+    s.elements = 8;
+    s.motion = cli::motion_within_reach(Formulation::mixed, s.rotation);
+    return s;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(dynamic_estimate)
@@ -195,12 +206,7 @@ BOOST_AUTO_TEST_CASE(effectivity_in_time_displacement_manufactured) {
 
 // Mixed formulation, trapezoidal rule, 8 elements per member (h/2, h/4 companions: 16, 32).
 BOOST_AUTO_TEST_CASE(effectivity_in_time_mixed_manufactured) {
-    cli::MotionRunSpec s;
-    s.formulation = Formulation::mixed;
-    s.rotation = param::id_of<param::Quaternion>();
-    s.integrator = Integrator::trapezoidal;
-    s.elements = 8;
-    s.motion = cli::motion_within_reach(Formulation::mixed, s.rotation);
+    const cli::MotionRunSpec s = mixed_quaternion(Integrator::trapezoidal);
     const int checked = check_sequence(s, {0.1, 0.05, 0.025, 0.0125});
     BOOST_TEST_MESSAGE("mixed asymptotic points: " << checked);
 }
@@ -208,13 +214,8 @@ BOOST_AUTO_TEST_CASE(effectivity_in_time_mixed_manufactured) {
 // Mixed formulation, IDA (BDF ≤ 2) with the tolerance/4 companion: a sequence of tolerances
 // (each a quarter of the previous, the ratio 4 of the asymptotic check), 8 elements per member.
 BOOST_AUTO_TEST_CASE(effectivity_in_tolerance_mixed_ida_manufactured) {
-    cli::MotionRunSpec s;
-    s.formulation = Formulation::mixed;
-    s.rotation = param::id_of<param::Quaternion>();
-    s.integrator = Integrator::ida;
-    s.elements = 8;
+    cli::MotionRunSpec s = mixed_quaternion(Integrator::ida);
     s.dt = 0.05;
-    s.motion = cli::motion_within_reach(Formulation::mixed, s.rotation);
     const int checked = check_sequence(s, {1.6e-3, 4e-4, 1e-4, 2.5e-5});
     BOOST_TEST_MESSAGE("IDA asymptotic points: " << checked);
 }

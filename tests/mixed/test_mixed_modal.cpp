@@ -15,12 +15,12 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "tests/harness/type_lists.hpp"
 #include "tests/mixed/modal_state.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
-using Parameterizations = std::tuple<param::WienerMilenkovic, param::Rodrigues,
-                                     param::RotationVector, param::WienerMilenkovicContinuous>;
+using Parameterizations = test::MixedParameterizationTypes<>;
 
 namespace {
 
@@ -47,13 +47,15 @@ Model joined_beam(int n) {
     return m;
 }
 
+// The modes about the reference configuration (the statics' initial state: identity rotations,
+// ρ = 1 at a further support of the quaternion), at rest.
 template <class P>
 form::DaeModalSolution modes_of(const Model& model, int count, bool dense = false) {
     form::MixedDynamics<P> dyn(model, 1.0);
+    const VecX x0 = dyn.from_static_state(form::MixedStatics<P>(model).state_vector());
     VecX r;
     SparseMatrix A, B;
-    const VecX zero = VecX::Zero(dyn.size());
-    dyn.evaluate(0.0, zero, zero, r, &A, &B);
+    dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
     return dense ? form::solve_dae_modal_dense(A, B, count) : form::solve_dae_modal(A, B, count);
 }
 

@@ -1,9 +1,10 @@
 // The mixed statics with four rotation unknowns (the quaternion; formulations/mixed/
-// mixed_statics.hpp with MixedNumbering's redundant parameter): the unknown count, exactness of the
-// reference configuration, no heap allocation after the first evaluation, and the norm
+// mixed_statics.hpp with MixedNumbering's redundant parameter): the unknown count and the norm
 // conservation of the discrete Eq. 48 (the analytic Jacobian against central differences, one
 // support and two supports with the scale ρ, is the generic harness's:
-// tests/harness/test_jacobians.cpp).
+// tests/harness/test_jacobians.cpp; exactness of the reference configuration and no heap
+// allocation after the first evaluation, with both supports, are every parameterization's:
+// tests/mixed/test_mixed_jacobian.cpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -11,9 +12,7 @@
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rotation_vector.hpp"
-#include "tests/mixed/allocation_counter.hpp"
 #include "tests/mixed/deformed_model.hpp"
-#include "tests/mixed/deformed_state.hpp"
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
@@ -81,35 +80,6 @@ BOOST_AUTO_TEST_CASE(closed_loop_is_refused_with_an_input_error) {
     Model m = test::deformed_test_model();
     m.members.push_back(test::member("back", 2, 0, m.members[0].sections[0].section, 2));
     BOOST_CHECK_THROW(Statics{m}, InputError);
-}
-
-BOOST_AUTO_TEST_CASE(reference_configuration_solves_the_unloaded_curved_structure) {
-    for (const Model& m : {test::deformed_test_model(), test::two_support_model()}) {
-        Statics problem(m);
-        problem.set_load_factor(0.0);
-        VecX r;
-        problem.evaluate(r, nullptr);
-        BOOST_TEST(r.size() == problem.size());
-        BOOST_TEST(r.cwiseAbs().maxCoeff() < 1e-14);  // round-off of frames and chords only
-    }
-}
-
-BOOST_AUTO_TEST_CASE(evaluation_keeps_the_pattern_and_allocates_nothing_after_first_call) {
-    Statics problem(test::two_support_model());
-    problem.set_load_factor(0.8);
-    problem.set_state_vector(test::deformed_mixed_state<Q>(problem.numbering()));
-    VecX r;
-    SparseMatrix J;
-    problem.evaluate(r, &J);
-    const long nnz = J.nonZeros();
-    const int* const outer = J.outerIndexPtr();
-    const long before = test::allocation_count();
-    problem.evaluate(r, &J);
-    problem.evaluate(r, nullptr);
-    test::check_no_allocation_since(before);
-    BOOST_TEST(J.nonZeros() == nnz);
-    BOOST_TEST(J.outerIndexPtr() == outer);
-    BOOST_TEST(problem.counters().inertial_terms == 0);  // statics: no momenta, no inertia
 }
 
 // The discrete Eq. 48 is a Cayley transform from node to node: |q̂| stays 1 to round-off at every

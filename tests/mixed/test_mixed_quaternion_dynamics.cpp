@@ -1,9 +1,11 @@
 // The mixed dynamics with the quaternion (formulations/mixed/mixed_dynamics.hpp): the
-// unknown count (one support, and a second, prescribed and moving support with the scale ρ), no
-// allocation after the first evaluation, consistent initial conditions from a non-equilibrium
-// start by IDACalcIC and by the Newton on the initial-condition chart, and the norm kept by the
-// Cayley relations along a fixed-step run (∂F/∂X and ∂F/∂Ẋ against central differences, and the
-// radial rate entering nowhere, are the generic harness's: tests/harness/test_jacobians.cpp).
+// unknown count (one support, and a second, prescribed and moving support with the scale ρ),
+// consistent initial conditions from a non-equilibrium start by IDACalcIC and by the Newton on the
+// initial-condition chart, and the norm kept by the Cayley relations along a fixed-step run
+// (∂F/∂X and ∂F/∂Ẋ against central differences, and the radial rate entering nowhere, are the
+// generic harness's: tests/harness/test_jacobians.cpp; no allocation after the first evaluation,
+// with both supports, and the follower-load counters are every parameterization's:
+// tests/mixed/test_mixed_dynamics_jacobian.cpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -11,25 +13,12 @@
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/quaternion.hpp"
-#include "tests/mixed/allocation_counter.hpp"
-#include "tests/mixed/deformed_state.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 #include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
 using Q = param::Quaternion;
 using Dynamics = form::MixedDynamics<Q>;
-
-namespace {
-
-// The deformed, moving state of tests/mixed/deformed_state.hpp: quaternions off the unit sphere,
-// ρ = −0.9 at a second support, unit-order rates of every unknown.
-void moving_state(const Dynamics& dyn, VecX& x, VecX& xdot) {
-    x = test::deformed_mixed_state<Q>(dyn.numbering());
-    xdot = test::mixed_rates(dyn.size());
-}
-
-}  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_quaternion_dynamics)
 
@@ -71,40 +60,6 @@ BOOST_AUTO_TEST_CASE(at_rest_the_residual_is_the_static_one) {
                        .maxCoeff() < 1e-12);
         BOOST_TEST(rd.segment<6>(r + dyn.numbering().fP()).cwiseAbs().maxCoeff() == 0.0);
     }
-}
-
-BOOST_AUTO_TEST_CASE(evaluation_allocates_nothing_after_first_call) {
-    Dynamics dyn(test::two_support_dynamic_model(), 1.0);
-    VecX x, xd, r;
-    moving_state(dyn, x, xd);
-    SparseMatrix Jx, Jxd;
-    dyn.evaluate(0.1, x, xd, r, &Jx, &Jxd);
-    const int* const outer = Jx.outerIndexPtr();
-    const long before = test::allocation_count();
-    dyn.evaluate(0.2, x, xd, r, &Jx, &Jxd);
-    dyn.evaluate(0.3, x, xd, r, nullptr, nullptr);
-    test::check_no_allocation_since(before);
-    BOOST_TEST(Jx.outerIndexPtr() == outer);
-    BOOST_TEST(dyn.counters().inertial_terms == 3L * dyn.element_count());
-}
-
-// A follower point load's stiffness block is counted at every Jacobian, a dead one's never.
-BOOST_AUTO_TEST_CASE(follower_point_load_stiffness_is_counted) {
-    Model m = test::dynamic_test_model();
-    m.distributed_loads.erase(m.distributed_loads.begin());  // the follower distributed load
-    Dynamics follower(m, 1.0);
-    m.point_loads.at(0).frame = LoadFrame::dead;
-    Dynamics dead(m, 1.0);
-    for (Dynamics* dyn : {&follower, &dead}) {
-        VecX x, xd, r;
-        moving_state(*dyn, x, xd);
-        SparseMatrix Jx, Jxd;
-        dyn->evaluate(0.1, x, xd, r, &Jx, &Jxd);
-        dyn->evaluate(0.2, x, xd, r, &Jx, &Jxd);
-        dyn->evaluate(0.3, x, xd, r, nullptr, nullptr);
-    }
-    BOOST_TEST(follower.counters().follower_stiffness == 2);
-    BOOST_TEST(dead.counters().follower_stiffness == 0);
 }
 
 // A start far from consistency (reference configuration, rigid initial velocity, loads on at

@@ -18,12 +18,12 @@
 #include "parameterizations/rotation_vector.hpp"
 #include "parameterizations/wiener_milenkovic.hpp"
 #include "tests/cases/catalog_model.hpp"
+#include "tests/harness/type_lists.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 #include "tests/mixed/initial_conditions.hpp"
 
 using namespace rotbeam;
-using ThreeParameterTypes =
-    std::tuple<param::WienerMilenkovic, param::Rodrigues, param::RotationVector>;
+using ThreeParameterTypes = test::ParameterizationTypes<test::ThreeParameters>;
 
 namespace {
 

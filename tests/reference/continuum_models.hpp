@@ -1,4 +1,8 @@
-// The continuum tests' models, built in code (docs/benchmarks.md §1, §2, §5, §6 and the elastica).
+// The continuum tests' models that are not catalog cases, built in code: the elastica, the
+// Timoshenko and linear-theory checks, the refused and unreachable models, the twisted roll-up and
+// the ring segment are variants made to isolate one property, with no YAML of their own. The
+// catalog's benchmarks (roll-up, helix, precessing helix, 45° bend) are read from cases/*.yaml
+// (tests/cases/catalog_model.hpp).
 #pragma once
 
 #include <vector>

@@ -2,12 +2,14 @@
 // (to ≤ 1e-9 relative).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <string>
 
 #include "continuum_models.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/elastica.hpp"
 #include "core/oracles/helix.hpp"
 #include "core/oracles/rollup.hpp"
+#include "tests/cases/catalog_model.hpp"
 
 using namespace rotbeam;
 
@@ -22,13 +24,10 @@ constexpr double kExact = 1e-9;
 BOOST_AUTO_TEST_SUITE(continuum_exact)
 
 BOOST_AUTO_TEST_CASE(rollup_matches_the_exact_circle_up_to_two_full_turns) {
-    // docs/benchmarks.md §1: L = 12, EI = 2.5e6, M = −λ π EI/L e_y; λ to 4 (two turns).
-    const double L = 12.0, EI = 2.5e6, G = 30e6 / 2.6;
-    const Mat6 C = test::diagonal_compliance(
-        (Vec6() << 30e6, 5.0 / 6.0 * G, 5.0 / 6.0 * G, G * 0.1406, EI, EI).finished());
-    const std::vector<double> lambdas = {0.4, 1.0, 1.6, 2.0, 2.5, 3.0, 4.0};
-    const Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3::Zero(), Vec3(0, -kPi * EI / L, 0),
-                                         LoadFrame::dead, lambdas);
+    // docs/benchmarks.md §1 (cases/cantilever-moment-4.yaml): L = 12, EI = 2.5e6,
+    // M = −λ π EI/L e_y; λ to 4 (two turns) in steps of 0.25.
+    const double L = 12.0;
+    const Model model = test::catalog_model("cantilever-moment-4", {});
     const ContinuumOutcome outcome = solve_continuum(model);
     BOOST_TEST_REQUIRE(outcome.status == "converged", outcome.message);
     double worst = 0.0;
@@ -48,15 +47,15 @@ BOOST_AUTO_TEST_CASE(rollup_matches_the_exact_circle_up_to_two_full_turns) {
 }
 
 BOOST_AUTO_TEST_CASE(helix_matches_the_exact_solution_to_kappa_L_4pi_dead_and_follower) {
-    // docs/benchmarks.md §5: L = 10, EI₂ = EI₃ = GJ = 100, EA = GA = 1e4·EI/L², M = κ EI n.
-    const double L = 10.0, EI = 100.0;
+    // docs/benchmarks.md §5 (cases/helix.yaml): L = 10, EI₂ = EI₃ = GJ = 100, EA = GA = 1e4,
+    // M = κ EI n, κL = π/2 … 4π; the follower variant by override.
+    const double L = 10.0;
     const Vec3 n(0.6, 0.0, 0.8);
-    const Mat6 C = test::diagonal_compliance((Vec6() << 1e4, 1e4, 1e4, EI, EI, EI).finished());
-    std::vector<double> kappa_L;
-    for (int i = 1; i <= 8; ++i) kappa_L.push_back(i * kPi / 2.0);
     for (LoadFrame frame : {LoadFrame::dead, LoadFrame::follower}) {
-        Model model = test::cantilever(Vec3(L, 0, 0), C, Vec3::Zero(), EI / L * n, frame, kappa_L);
-        model.analysis.statics.substeps = 2;
+        const Model model = test::catalog_model(
+            "helix", {"loads.tip-moment.frame=" +
+                      std::string(frame == LoadFrame::dead ? "dead" : "follower")});
+        BOOST_TEST_REQUIRE((model.point_loads.at(0).frame == frame));
         const ContinuumOutcome outcome = solve_continuum(model);
         BOOST_TEST_REQUIRE(outcome.status == "converged", outcome.message);
         double worst = 0.0;
