@@ -56,8 +56,9 @@ bool row_is(const nlohmann::json& row, const nlohmann::json& run) {
         if (key == "order") {
             if (std::to_string(run.value("order", 0)) != value) return false;
         } else if (key == "elements") {
-            for (const auto& [member, n] :
-                 run.value("elements_per_member", nlohmann::json::object()).items()) {
+            const nlohmann::json per_member =
+                run.value("elements_per_member", nlohmann::json::object());
+            for (const auto& [member, n] : per_member.items()) {
                 if (n.dump() != value) return false;
             }
         } else if (option(key) != value) {
