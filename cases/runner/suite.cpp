@@ -194,7 +194,8 @@ void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
         if (terminal) {
             std::cout << "\r[" << d << "/" << runs.size() << "] " << std::fixed
                       << std::setprecision(1) << elapsed << " s elapsed, ETA "
-                      << elapsed / d * (runs.size() - d) << " s   " << std::flush;
+                      << elapsed / static_cast<double>(d) * static_cast<double>(runs.size() - d)
+                      << " s   " << std::flush;
         }
     });
     if (terminal) std::cout << "\n";
