@@ -21,6 +21,7 @@
 #include "core/version.hpp"
 #include "parameterizations/registry.hpp"
 #include "report_dynamics.hpp"
+#include "report_summary.hpp"
 #include "report_table_one.hpp"
 #include "studies/gnuplot.hpp"
 #include "studies/study_common.hpp"
@@ -177,26 +178,55 @@ std::vector<Figure> rotation_study_figures(const std::string& out) {
              "singular."}};
 }
 
+// The contents: a link to every level-2 section of `body`, which follows the summary and the
+// contents themselves (their headings come first in the page's ids, heading_id()).
+std::string contents(const std::string& body) {
+    std::map<std::string, int> used;
+    heading_id("Summary", used);
+    heading_id("Contents", used);
+    std::ostringstream md;
+    md << "## Contents\n\n";
+    std::istringstream in(body);
+    bool fenced = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("```", 0) == 0) fenced = !fenced;
+        if (fenced || line.rfind("## ", 0) != 0) continue;
+        std::string title = line.substr(3);
+        // The heading's text as the HTML page has it: without code-span and emphasis marks.
+        std::string plain;
+        for (char c : title) {
+            if (c != '`' && c != '*') plain += c;
+        }
+        md << "- [" << markdown_cell(plain) << "](#" << heading_id(plain, used) << ")\n";
+    }
+    return md.str() + "\n";
+}
+
 }  // namespace
 
 void write_report(const std::string& out_dir, const std::vector<std::string>& run_files,
-                  const std::vector<std::string>& study_names) {
+                  const std::vector<std::string>& study_names,
+                  const nlohmann::json& published_checks) {
     std::vector<nlohmann::json> runs;
     for (const std::string& f : run_files) {
         nlohmann::json j = read_json(f);
         if (!j.is_null()) runs.push_back(std::move(j));
     }
     std::ostringstream md;
-    md << "# rotbeam report\n\nrotbeam " << kGitDescribe << ", " << machine_description() << ", "
-       << today() << ".\n\n## Runs\n\nEvery static, modal and dynamic catalog case with every "
+    md << "## Runs\n\nEvery static, modal and dynamic catalog case with every "
        << "parameterization and formulation at the case's own mesh. `status` is the solver's own "
-       << "verdict; the last column is the tip (or joint) displacement at the last converged "
-       << "step (the last output time of a dynamic run), or the natural frequencies of a modal "
-          "run.\n\n"
+       << "verdict; `displacement / frequencies` is the tip (or joint) displacement at the last "
+          "converged step (the last output time of a dynamic run), or the natural frequencies of "
+          "a modal run; `estimate` the run's worst estimated error relative to its scale "
+          "(docs/error-estimates.md; the suite's runs are not estimated); `true error` the error "
+          "against the exact solution (the roll-up, ‖Δu‖/L at the last converged step) or the "
+          "largest difference to the published values checked at the case's own discretization "
+          "(— without a reference).\n\n"
        << "| case | elements | rotation | formulation | status | steps | Newton iterations | "
-          "wall [s] | last point displacement / frequencies [Hz] |\n"
-          "|---|---|---|---|---|---|---|---|---|\n";
-    for (const nlohmann::json& r : runs) {
+          "wall [s] | displacement / frequencies [Hz] | estimate | true error |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t i = 0; i < runs.size(); ++i) {
+        const nlohmann::json& r = runs[i];
         int iterations = 0;
         for (const auto& s : r["steps"]) iterations += s.value("newton_iterations", 0);
         std::ostringstream last;
@@ -220,10 +250,13 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
             message += ": " + m;
         }
         message = markdown_cell(message);
-        md << "| " << r.value("case", "") << " | " << r.value("elements", 0) << " | "
-           << r.value("rotation", "") << " | " << r.value("formulation", "") << " | " << message
-           << " | " << r["steps"].size() << " | " << iterations << " | " << std::setprecision(3)
-           << r.value("wall_seconds", 0.0) << " | " << last.str() << " |\n";
+        // The row's anchor, the target of the summary's links.
+        md << "| <a id=\"" << run_row_id(i) << "\"></a>" << r.value("case", "") << " | "
+           << r.value("elements", 0) << " | " << r.value("rotation", "") << " | "
+           << r.value("formulation", "") << " | " << message << " | " << r["steps"].size() << " | "
+           << iterations << " | " << std::setprecision(3) << r.value("wall_seconds", 0.0) << " | "
+           << last.str() << " | " << estimate_cell(r) << " | "
+           << true_error_cell(r, published_checks) << " |\n";
     }
     md << "\n"
        << table_one_section("cantilever-moment", runs) << table_three_section(runs)
@@ -244,9 +277,14 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
         std::ifstream study(fs::path(out_dir) / ("study-" + name + ".md"));
         if (study) md << "\n" << study.rdbuf() << "\n";
     }
-    write_file_atomically((fs::path(out_dir) / "index.md").string(), md.str());
+    const std::string body = md.str();
+    std::ostringstream page;
+    page << "# rotbeam report\n\nrotbeam " << kGitDescribe << ", " << machine_description() << ", "
+         << today() << ".\n\n"
+         << summary_section(runs, published_checks) << contents(body) << body;
+    write_file_atomically((fs::path(out_dir) / "index.md").string(), page.str());
     write_file_atomically((fs::path(out_dir) / "index.html").string(),
-                          markdown_page_html(md.str(), out_dir));
+                          markdown_page_html(page.str(), out_dir));
 }
 
 }  // namespace rotbeam::cli

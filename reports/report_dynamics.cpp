@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "parameterizations/registry.hpp"
 #include "studies/gnuplot.hpp"
+#include "studies/study_common.hpp"
 
 namespace rotbeam::cli {
 
@@ -109,8 +110,9 @@ CaseRuns case_runs(const std::vector<nlohmann::json>& runs, const std::string& c
         } else {
             std::string m = r.value("message", "");
             if (m.size() > 80) m = m.substr(0, 77) + "...";
-            c.missing.push_back(combination(r) + " (" + r.value("status", "error") + ": " + m +
-                                ")");
+            // The message as text: a backtick, `<` or `*` in it is not Markdown.
+            c.missing.push_back(combination(r) + " (" + r.value("status", "error") + ": " +
+                                markdown_cell(m) + ")");
         }
     }
     return c;

@@ -1,14 +1,26 @@
-// A self-contained HTML page from the report's small Markdown subset (headings, paragraphs,
-// pipe tables, images), with the images embedded as base64 data URIs.
+// The report's Markdown as one self-contained HTML page, converted by cmark-gfm (CommonMark with
+// GitHub's pipe tables). Every image is the SVG of the figure the Markdown links as PNG (the
+// gnuplot scripts write both), embedded as a data URI; a figure without its SVG stops the report.
+// Level-2 headings get the ids that heading_id() gives, so the contents' links land on them.
+#include <cmark-gfm-core-extensions.h>
+#include <cmark-gfm.h>
+
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "report.hpp"
 
 namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -33,90 +45,107 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::string escape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        if (c == '<')
-            o += "&lt;";
-        else if (c == '>')
-            o += "&gt;";
-        else if (c == '&')
-            o += "&amp;";
-        else
-            o += c;
+// The figure `png` (a file name in out_dir) as an SVG data URI.
+std::string svg_data_uri(const std::string& png, const std::string& out_dir) {
+    fs::path svg = fs::path(out_dir) / png;
+    svg.replace_extension(".svg");
+    std::ifstream in(svg, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (!in || bytes.str().empty()) {
+        throw std::runtime_error("report: the HTML page shows figures as SVG, and " + svg.string() +
+                                 " (the SVG of " + png +
+                                 ") is missing or empty: its gnuplot script must write both");
     }
-    return o;
+    return "data:image/svg+xml;base64," + base64(bytes.str());
 }
 
-std::vector<std::string> table_cells(const std::string& line) {
-    std::vector<std::string> cells;
-    std::string cell;
-    for (size_t i = 1; i < line.size(); ++i) {
-        // A cell's escaped characters (markdown_cell, studies/study_common.hpp) are plain text.
-        const bool escaped = line[i] == '\\' && i + 1 < line.size() &&
-                             (line[i + 1] == '\\' || line[i + 1] == '|' || line[i + 1] == '`');
-        if (escaped) {
-            cell += line[++i];
-        } else if (line[i] == '|') {
-            const size_t a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
-            cells.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
-            cell.clear();
-        } else {
-            cell += line[i];
-        }
+// The literal text of a node's inline children (a heading's words without their markup).
+std::string text_of(cmark_node* node) {
+    std::string text;
+    for (cmark_node* c = cmark_node_first_child(node); c; c = cmark_node_next(c)) {
+        const char* literal = cmark_node_get_literal(c);
+        text += literal ? std::string(literal) : text_of(c);
     }
-    return cells;
+    return text;
 }
+
+struct Parser {
+    cmark_parser* p;
+    Parser() : p(cmark_parser_new(CMARK_OPT_DEFAULT)) {}
+    ~Parser() { cmark_parser_free(p); }
+    Parser(const Parser&) = delete;
+    Parser& operator=(const Parser&) = delete;
+};
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;max-width:1400px;margin:2em auto;padding:0 1em}"
+    "table{border-collapse:collapse;font-size:90%;margin:1em 0;display:block;overflow-x:auto}"
+    "td,th{border:1px solid #bbb;padding:2px 6px;vertical-align:top}"
+    "img{max-width:100%}code{background:#f4f4f4}"
+    "td a{text-decoration:none}";
 
 }  // namespace
 
-std::string markdown_page_html(const std::string& markdown, const std::string& out_dir) {
-    std::ostringstream html;
-    html << "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>rotbeam report</title>"
-            "<style>body{font-family:sans-serif;max-width:1200px;margin:2em auto}"
-            "table{border-collapse:collapse;font-size:90%}td,th{border:1px solid #bbb;"
-            "padding:2px 6px}img{max-width:100%}</style></head><body>\n";
-    std::istringstream in(markdown);
-    std::string line;
-    bool in_table = false, header_row = false;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line[0] == '|') {
-            if (line.rfind("|---", 0) == 0) continue;
-            if (!in_table) {
-                html << "<table>\n";
-                in_table = header_row = true;
-            }
-            html << "<tr>";
-            for (const std::string& c : table_cells(line)) {
-                html << (header_row ? "<th>" : "<td>") << escape(c)
-                     << (header_row ? "</th>" : "</td>");
-            }
-            html << "</tr>\n";
-            header_row = false;
-            continue;
-        }
-        if (in_table) {
-            html << "</table>\n";
-            in_table = false;
-        }
-        if (line.rfind("## ", 0) == 0) {
-            html << "<h2>" << escape(line.substr(3)) << "</h2>\n";
-        } else if (line.rfind("# ", 0) == 0) {
-            html << "<h1>" << escape(line.substr(2)) << "</h1>\n";
-        } else if (line.rfind("![", 0) == 0) {
-            const size_t open = line.find("](");
-            const std::string file = line.substr(open + 2, line.size() - open - 3);
-            std::ifstream img(std::filesystem::path(out_dir) / file, std::ios::binary);
-            std::ostringstream bytes;
-            bytes << img.rdbuf();
-            html << "<p><img alt=\"" << escape(line.substr(2, open - 2))
-                 << "\" src=\"data:image/png;base64," << base64(bytes.str()) << "\"></p>\n";
-        } else if (!line.empty()) {
-            html << "<p>" << escape(line) << "</p>\n";
+std::string heading_id(const std::string& title, std::map<std::string, int>& used) {
+    std::string id;
+    for (unsigned char c : title) {
+        if (std::isalnum(c)) {
+            id += static_cast<char>(std::tolower(c));
+        } else if (!id.empty() && id.back() != '-') {
+            id += '-';
         }
     }
-    if (in_table) html << "</table>\n";
-    html << "</body></html>\n";
+    while (!id.empty() && id.back() == '-') id.pop_back();
+    if (id.empty()) id = "section";
+    const int n = ++used[id];
+    return n == 1 ? id : id + "-" + std::to_string(n);
+}
+
+std::string markdown_page_html(const std::string& markdown, const std::string& out_dir) {
+    cmark_gfm_core_extensions_ensure_registered();
+    Parser parser;
+    cmark_syntax_extension* table = cmark_find_syntax_extension("table");
+    if (!table || !cmark_parser_attach_syntax_extension(parser.p, table)) {
+        throw std::runtime_error("report: cmark-gfm has no table extension");
+    }
+    cmark_parser_feed(parser.p, markdown.data(), markdown.size());
+    const std::unique_ptr<cmark_node, void (*)(cmark_node*)> document(cmark_parser_finish(parser.p),
+                                                                      cmark_node_free);
+
+    // Figures as embedded SVG; each level-2 heading with its id (an empty anchor before its text:
+    // cmark-gfm writes no attributes on headings).
+    std::map<std::string, int> used;
+    cmark_iter* it = cmark_iter_new(document.get());
+    std::vector<cmark_node*> headings;
+    for (cmark_event_type e; (e = cmark_iter_next(it)) != CMARK_EVENT_DONE;) {
+        cmark_node* node = cmark_iter_get_node(it);
+        if (e != CMARK_EVENT_ENTER) continue;
+        if (cmark_node_get_type(node) == CMARK_NODE_IMAGE) {
+            const std::string url = cmark_node_get_url(node);
+            cmark_node_set_url(node, svg_data_uri(url, out_dir).c_str());
+        } else if (cmark_node_get_type(node) == CMARK_NODE_HEADING &&
+                   cmark_node_get_heading_level(node) == 2) {
+            headings.push_back(node);
+        }
+    }
+    cmark_iter_free(it);
+    for (cmark_node* h : headings) {
+        cmark_node* anchor = cmark_node_new(CMARK_NODE_HTML_INLINE);
+        const std::string html = "<a id=\"" + heading_id(text_of(h), used) + "\"></a>";
+        cmark_node_set_literal(anchor, html.c_str());
+        cmark_node_prepend_child(h, anchor);
+    }
+    // CMARK_OPT_UNSAFE keeps the raw HTML: the anchors above, and the row anchors the report
+    // writes into its tables (report text is escaped where it enters a table, markdown_cell).
+    char* body = cmark_render_html(document.get(), CMARK_OPT_UNSAFE,
+                                   cmark_parser_get_syntax_extensions(parser.p));
+    std::ostringstream html;
+    html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            "<title>rotbeam report</title><style>"
+         << kStyle << "</style></head><body>\n"
+         << body << "</body></html>\n";
+    std::free(body);
     return html.str();
 }
 

@@ -30,7 +30,7 @@ do for [fmt in "pngcairo svg"] {
     set multiplot layout 2,1 title "Cantilever roll-up: tip displacement vs load factor (exact: lines)"
     set lmargin 12
     set rmargin 36
-    set xlabel "load factor λ (tip moment λ·πEI/L)"
+    set xlabel "load factor λ [-] (tip moment λ·πEI/L)"
     set ylabel "tip displacement [in]"
     set yrange [-16:10]
     unset logscale y
@@ -39,7 +39,7 @@ do for [fmt in "pngcairo svg"] {
          u3(x) w l lw 2 lc rgb "gray70" t "exact u3", \
          for [i=1:n] word(files, i) u 1:2 w p pt mark_shape(i) ps mark_size(i) lw 1.5 lc rgb colour(i) t label(word(files, i)), \
          for [i=1:n] word(files, i) u 1:3 w p pt mark_shape(i) ps mark_size(i) lw 1.5 lc rgb colour(i) notitle
-    set ylabel "tip error ‖u - u_{exact}‖/L"
+    set ylabel "tip error ‖u - u_{exact}‖/L [-]"
     set logscale y
     set format y "10^{%L}"
     set yrange [*:*]

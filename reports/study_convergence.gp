@@ -23,3 +23,8 @@ plot for [i=1:n] word(files, i) using (column(xc)):4 with linespoints lw 1.5 pt 
        lc i title word(titles, i), \
      ref2(x) with lines dt 2 lw 2 lc rgb "black" title "slope -2 (reference)", \
      ref4(x) with lines dt 3 lw 2 lc rgb "gray40" title "slope -4 (reference)"
+# The same figure as SVG, for the HTML report.
+set terminal svg size 1000,650 dynamic enhanced font ",10"
+set output outbase.'.svg'
+replot
+unset output

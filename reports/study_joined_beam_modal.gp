@@ -25,3 +25,8 @@ plot for [i=1:n] word(files, i) using (column(xc)):4 with linespoints lw 1.5 pt 
      ref2(x) with lines dt 2 lw 2 lc rgb "black" title "slope -2 (reference)", \
      ref4(x) with lines dt 3 lw 2 lc rgb "gray40" title "slope -4 (reference)", \
      ref8(x) with lines dt 4 lw 2 lc rgb "gray60" title "slope -8 (reference)"
+# The same figure as SVG, for the HTML report.
+set terminal svg size 1000,650 dynamic enhanced font ",10"
+set output outbase.'.svg'
+replot
+unset output

@@ -26,3 +26,8 @@ if (hline eq '') {
     plot for [i=1:n] word(files, i) using xc:yc with linespoints lw 1.5 pt (i % 13 + 1) lc i \
          title word(titles, i), hy with lines dt 2 lw 2 lc rgb "black" title hlabel
 }
+# The same figure as SVG, for the HTML report.
+set terminal svg size 1000,600 dynamic enhanced font ",10"
+set output outbase.'.svg'
+replot
+unset output

@@ -46,3 +46,8 @@ dash(k) = (k - 1) % 5 + 1
 plot for [i=1:n] word(files, i) using (column(xc)):(column(yc)) with linespoints lw 1.2 \
        dt dash(i) pt (mark_shape(i)) ps (mark_size(i)) lc rgb colour(i) title word(titles, i), \
      ref(x) with lines dt 2 lw 2 lc rgb "black" title sprintf("slope %g (reference)", sl)
+# The same figure as SVG, for the HTML report.
+set terminal svg size 900, 560 + 16 * rows dynamic enhanced font ",10"
+set output outbase.'.svg'
+replot
+unset output

@@ -64,50 +64,54 @@ y0 = pad(ymin, ymax, ly, -1); y1 = pad(ymin, ymax, ly, 1)
 # The failed runs' row: just under the top of the frame.
 yfail = ly ? y1 / 10**(0.03 * log10(y1 / y0)) : y1 - 0.03 * (y1 - y0)
 
-set terminal pngcairo size 420 * cols + 120, 430 * rows + 60 enhanced font ",9"
-set output outbase.'.png'
-if (lx) { set logscale x; set format x "10^{%L}" }
-if (ly) { set logscale y; set format y "10^{%L}" }
-set xrange [x0:x1]
-set yrange [y0:y1]
-set xlabel xlabel noenhanced
-set ylabel ylabel
-set grid
-set key outside below left Left reverse noenhanced font ",8" maxrows 6 height 1.5
-hy = (hline ne '') ? hline + 0.0 : NaN
-sx = (slopes ne '') ? word(slopes, 1) + 0.0 : 1.0
-sy = (slopes ne '') ? word(slopes, 2) + 0.0 : NaN
-extrafile = (extra ne '') ? extra : '/dev/null'
-failedfile = (failed ne '') ? failed : '/dev/null'
-# Marker of the k-th curve of a panel: open shapes, each smaller than the last.
-colour(k) = word("#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #17becf #8c564b #e377c2 #000000 #7f7f7f", (k - 1) % 10 + 1)
-mark_shape(k) = word("6 4 8 12 10 14 2 1 3", (k - 1) % 9 + 1) + 0
-mark_size(k) = 2.4 - 0.4 * ((k - 1) % 5)
-dash(k) = (k - 1) % 5 + 1
-set multiplot layout rows, cols title plottitle noenhanced font ",11"
-do for [p=1:np] {
-    set title spaces(word(panels, p)) noenhanced
-    # Files of this panel: their order inside it picks marker, size, colour and dash.
-    members = ''
-    do for [i=1:n] { if (int(word(groups, i)) == p) { members = members.' '.i } }
-    m = words(members)
-    # The failure marker's key entry only where this panel has failures.
-    nfail = 0
-    if (failed ne '') {
-        nfail = int(system(sprintf("awk '!/^#/ && $2 == %d' %s | wc -l", p, failed)))
+# The PNG for the Markdown report, the SVG for the HTML one.
+do for [fmt in "pngcairo svg"] {
+    if (fmt eq "svg") { set terminal svg size 420 * cols + 120, 430 * rows + 60 dynamic enhanced font ",9"; set output outbase.'.svg' } \
+    else { set terminal pngcairo size 420 * cols + 120, 430 * rows + 60 enhanced font ",9"; set output outbase.'.png' }
+    if (lx) { set logscale x; set format x "10^{%L}" }
+    if (ly) { set logscale y; set format y "10^{%L}" }
+    set xrange [x0:x1]
+    set yrange [y0:y1]
+    set xlabel xlabel noenhanced
+    set ylabel ylabel
+    set grid
+    set key outside below left Left reverse noenhanced font ",8" maxrows 6 height 1.5
+    hy = (hline ne '') ? hline + 0.0 : NaN
+    sx = (slopes ne '') ? word(slopes, 1) + 0.0 : 1.0
+    sy = (slopes ne '') ? word(slopes, 2) + 0.0 : NaN
+    extrafile = (extra ne '') ? extra : '/dev/null'
+    failedfile = (failed ne '') ? failed : '/dev/null'
+    # Marker of the k-th curve of a panel: open shapes, each smaller than the last.
+    colour(k) = word("#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e #17becf #8c564b #e377c2 #000000 #7f7f7f", (k - 1) % 10 + 1)
+    mark_shape(k) = word("6 4 8 12 10 14 2 1 3", (k - 1) % 9 + 1) + 0
+    mark_size(k) = 2.4 - 0.4 * ((k - 1) % 5)
+    dash(k) = (k - 1) % 5 + 1
+    set multiplot layout rows, cols title plottitle noenhanced font ",11"
+    do for [p=1:np] {
+        set title spaces(word(panels, p)) noenhanced
+        # Files of this panel: their order inside it picks marker, size, colour and dash.
+        members = ''
+        do for [i=1:n] { if (int(word(groups, i)) == p) { members = members.' '.i } }
+        m = words(members)
+        # The failure marker's key entry only where this panel has failures.
+        nfail = 0
+        if (failed ne '') {
+            nfail = int(system(sprintf("awk '!/^#/ && $2 == %d' %s | wc -l", p, failed)))
+        }
+        plot for [j=1:m] word(files, int(word(members, j))) using xc:yc \
+                 with linespoints lw 1.2 dt dash(j) pt (mark_shape(j)) ps (mark_size(j)) lc rgb colour(j) \
+                 title word(titles, int(word(members, j))), \
+             hy with lines dt 2 lw 1.5 lc rgb "black" \
+                 title (hline ne '' ? hlabel : ''), \
+             sy * (x / sx)**-2 with lines dt 2 lw 1.5 lc rgb "gray30" \
+                 title (slopes ne '' ? 'slope -2' : ''), \
+             sy * (x / sx)**-4 with lines dt 3 lw 1.5 lc rgb "gray50" \
+                 title (slopes ne '' ? 'slope -4' : ''), \
+             extrafile using 1:2 with steps lw 2.5 lc rgb "black" \
+                 title (extra ne '' ? extratitle : ''), \
+             failedfile using 1:($2 == p ? yfail : NaN) with points \
+                 pt 2 ps 1.8 lw 2 lc rgb "red" title (nfail > 0 ? 'failed: no result' : '')
     }
-    plot for [j=1:m] word(files, int(word(members, j))) using xc:yc \
-             with linespoints lw 1.2 dt dash(j) pt (mark_shape(j)) ps (mark_size(j)) lc rgb colour(j) \
-             title word(titles, int(word(members, j))), \
-         hy with lines dt 2 lw 1.5 lc rgb "black" \
-             title (hline ne '' ? hlabel : ''), \
-         sy * (x / sx)**-2 with lines dt 2 lw 1.5 lc rgb "gray30" \
-             title (slopes ne '' ? 'slope -2' : ''), \
-         sy * (x / sx)**-4 with lines dt 3 lw 1.5 lc rgb "gray50" \
-             title (slopes ne '' ? 'slope -4' : ''), \
-         extrafile using 1:2 with steps lw 2.5 lc rgb "black" \
-             title (extra ne '' ? extratitle : ''), \
-         failedfile using 1:($2 == p ? yfail : NaN) with points \
-             pt 2 ps 1.8 lw 2 lc rgb "red" title (nfail > 0 ? 'failed: no result' : '')
+    unset multiplot
+    unset output
 }
-unset multiplot

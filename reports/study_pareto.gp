@@ -18,3 +18,8 @@ plot for [i=1:n] word(files, i) using 3:4 with linespoints lw 1.2 pt (i % 13 + 1
        title word(titles, i), \
      front using 1:2 with steps lw 3 lc rgb "black" title "Pareto front (all combinations)", \
      front using 1:2 with points pt 7 ps 1.6 lc rgb "black" notitle
+# The same figure as SVG, for the HTML report.
+set terminal svg size 1000,650 dynamic enhanced font ",10"
+set output outbase.'.svg'
+replot
+unset output

@@ -180,7 +180,7 @@ std::string markdown_cell(const std::string& text) {
     std::string cell;
     cell.reserve(text.size());
     for (const char c : text) {
-        if (c == '\\' || c == '|' || c == '`') cell += '\\';
+        if (c == '\\' || c == '|' || c == '`' || c == '<' || c == '*' || c == '_') cell += '\\';
         cell += (c == '\n' || c == '\r') ? ' ' : c;
     }
     return cell;

@@ -104,10 +104,11 @@ std::string sci(double value, int digits = 2);  // "—" for NaN
 std::string fixed(double value, int digits = 2);
 // The same, with a non-finite value as the stream prints it ("nan", "inf").
 std::string fixed_as_printed(double value, int digits);
-std::string quoted(const std::string& s);       // for gnuplot data-file titles
-// Free text (a solver's or the loader's message) as one cell of a Markdown pipe table: the
-// backslash, `|` and the backtick escaped with a backslash, line breaks as spaces. Unescaped, a `|`
-// would split the cell and a backtick open a code span that swallows the rest of the row.
+std::string quoted(const std::string& s);  // for gnuplot data-file titles
+// Free text (a solver's or the loader's message) as Markdown, e.g. one cell of a pipe table: the
+// backslash, `|`, the backtick, `<`, `*` and `_` escaped with a backslash, line breaks as spaces.
+// Unescaped, a `|` would split the cell, a backtick open a code span that swallows the rest of the
+// row, a `<` open raw HTML, and `*` or `_` emphasis.
 std::string markdown_cell(const std::string& text);
 
 }  // namespace rotbeam::cli

@@ -3,6 +3,7 @@
 // main with its one-line message).
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,13 @@ int command_check(const Args& args);
 int command_run(const Args& args);
 int command_suite(const Args& args);
 int command_verify(const Args& args);
-// The comparison `verify` makes, for the given cases, as the report's Markdown section.
-std::string published_references_markdown(const std::vector<std::string>& cases);
+// The comparison `verify` makes, for the given cases: the report's Markdown section and the rows
+// as `verify --json` writes them (for the report's summary).
+struct PublishedReferences {
+    std::string markdown;
+    nlohmann::json checks;
+};
+PublishedReferences published_references(const std::vector<std::string>& cases);
 // The --set overrides that put a case into the discretization a reference applies to (verify.cpp).
 std::vector<std::string> reference_overrides(const ReferenceValue& ref);
 int command_reference(const Args& args);

@@ -194,7 +194,8 @@ void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
         if (terminal) {
             std::cout << "\r[" << d << "/" << runs.size() << "] " << std::fixed
                       << std::setprecision(1) << elapsed << " s elapsed, ETA "
-                      << elapsed / d * (runs.size() - d) << " s   " << std::flush;
+                      << elapsed / static_cast<double>(d) * static_cast<double>(runs.size() - d)
+                      << " s   " << std::flush;
         }
     });
     if (terminal) std::cout << "\n";
@@ -242,15 +243,13 @@ int command_suite(const Args& args) {
     // result file): clear it so the resumed folder is the one an uninterrupted suite writes.
     if (fs::exists(out)) remove_stale_temporaries(out);
     run_all(runs, jobs, a.has("force"));
-    {
-        // The published numbers of the cases run (Tables I–III), as `verify` computes them.
-        std::vector<std::string> names;
-        for (const PlannedRun& r : runs) {
-            if (names.empty() || names.back() != r.case_name) names.push_back(r.case_name);
-        }
-        write_file_atomically((fs::path(out) / "published.md").string(),
-                              published_references_markdown(names));
+    // The published numbers of the cases run (Tables I–III), as `verify` computes them.
+    std::vector<std::string> names;
+    for (const PlannedRun& r : runs) {
+        if (names.empty() || names.back() != r.case_name) names.push_back(r.case_name);
     }
+    const PublishedReferences published = published_references(names);
+    write_file_atomically((fs::path(out) / "published.md").string(), published.markdown);
     write_file_atomically((fs::path(out) / "rotation-study.json").string(),
                           param::rotation_study(721).dump(1) + "\n");
     // The static studies belong to the main job: on by default for the whole catalog, off
@@ -259,7 +258,7 @@ int command_suite(const Args& args) {
     if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);
     std::vector<std::string> files;
     for (const PlannedRun& r : runs) files.push_back(r.output);
-    write_report(out, files, study_names());
+    write_report(out, files, study_names(), published.checks);
     std::cout << "report: " << (fs::path(out) / "index.md").string() << "\n";
     return 0;
 }

@@ -254,6 +254,12 @@ std::vector<Row> verify_rows(const std::vector<std::string>& cases) {
     return rows;
 }
 
+nlohmann::json row_json(const Row& r) {
+    return {{"case", r.case_name},          {"reference", r.id},        {"quantity", r.quantity},
+            {"combination", r.combination}, {"published", r.published}, {"computed", r.computed},
+            {"difference", r.difference},   {"tolerance", r.tolerance}, {"result", r.verdict}};
+}
+
 void print_table(const std::vector<Row>& rows, std::ostream& os) {
     const char* headers[] = {"case",     "reference",  "quantity",  "combination", "published",
                              "computed", "difference", "tolerance", "result"};
@@ -282,9 +288,11 @@ void print_table(const std::vector<Row>& rows, std::ostream& os) {
 
 }  // namespace
 
-std::string published_references_markdown(const std::vector<std::string>& cases) {
+PublishedReferences published_references(const std::vector<std::string>& cases) {
     const std::vector<Row> rows = verify_rows(cases);
-    if (rows.empty()) return {};
+    nlohmann::json checks = nlohmann::json::array();
+    for (const Row& r : rows) checks.push_back(row_json(r));
+    if (rows.empty()) return {{}, checks};
     std::ostringstream md;
     md << "## Published numbers\n\nEvery published reference of the cases run (the case files' "
           "`references`: Table I, Table II and the other 45° bend values, Table III), computed "
@@ -299,7 +307,7 @@ std::string published_references_markdown(const std::vector<std::string>& cases)
            << " | " << r.computed << " | " << r.difference << " | " << r.tolerance << " | "
            << r.verdict << " |\n";
     }
-    return md.str() + "\n";
+    return {md.str() + "\n", checks};
 }
 
 int command_verify(const Args& args) {
@@ -338,15 +346,7 @@ int command_verify(const Args& args) {
         } else {
             ++recorded;
         }
-        table.push_back({{"case", r.case_name},
-                         {"reference", r.id},
-                         {"quantity", r.quantity},
-                         {"combination", r.combination},
-                         {"published", r.published},
-                         {"computed", r.computed},
-                         {"difference", r.difference},
-                         {"tolerance", r.tolerance},
-                         {"result", r.verdict}});
+        table.push_back(row_json(r));
     }
     std::cout << "\nverify: " << pairs - pair_misses << " of " << pairs
               << " gated (reference × combination) pairs passed, " << pair_misses << " missed; "

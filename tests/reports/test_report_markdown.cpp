@@ -65,15 +65,118 @@ BOOST_AUTO_TEST_CASE(a_stop_message_with_a_pipe_and_backticks_stays_in_its_cell)
     write_report(dir.string(), {(dir / "run.json").string()}, {});
 
     const std::string md = text_of(dir / "index.md");
-    const size_t at = md.find("| tip-load-cantilever |");
-    BOOST_TEST_REQUIRE(at != std::string::npos);
+    // The runs table's row (the summary's matrix has a row of the case too).
+    const size_t anchor = md.find("<a id=\"run-1\"></a>tip-load-cantilever |");
+    BOOST_TEST_REQUIRE(anchor != std::string::npos);
+    const size_t at = md.rfind('\n', anchor) + 1;
     const std::string row = md.substr(at, md.find('\n', at) - at);
     const std::vector<std::string> cells = cells_of(row);
-    BOOST_TEST_REQUIRE(cells.size() == 9u);  // the header's nine columns
+    BOOST_TEST_REQUIRE(cells.size() == 11u);  // the header's eleven columns
     BOOST_TEST(cells[4] == " diverged: " + markdown_cell(kMessage) + " ");
 
     // The HTML page: the whole message in one cell, as written (no character is special in HTML).
     const std::string html = text_of(dir / "index.html");
     BOOST_TEST(html.find("<td>diverged: " + kMessage + "</td>") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+namespace {
+
+// A static run of the roll-up (case cantilever-moment: 16 elements of order 4, L = 12, stated
+// accuracy 1e-7 for the displacement formulation) with one step, and optionally an estimate of its
+// tip at that step.
+nlohmann::json rollup_run(const std::string& rotation, const std::string& formulation,
+                          const std::string& status, double estimate = -1.0) {
+    nlohmann::json step = {{"load_factor", 2.0},
+                           {"newton_iterations", 3},
+                           {"points", {{"tip", {{"displacement", {-12.0, 0.0, 1.2e-8}}}}}}};
+    nlohmann::json run = {{"case", "cantilever-moment"},
+                          {"elements", 16},
+                          {"elements_per_member", {{"beam", 16}}},
+                          {"order", 4},
+                          {"options", {{"interpolation", "relative"}, {"wm_map", "plain"}}},
+                          {"rotation", rotation},
+                          {"formulation", formulation},
+                          {"status", status},
+                          {"message", "stopped at step 2 <why>"},
+                          {"steps", nlohmann::json::array({step})},
+                          {"wall_seconds", 0.1}};
+    if (estimate >= 0.0) {
+        run["estimate"] = {{"status", "estimated"}};
+        run["steps"][0]["estimate"] = {
+            {"tip",
+             {{"displacement", {{"error", estimate}, {"reliable", true}}},
+              {"rotation", {{"error", estimate / 120.0}, {"reliable", true}}}}}};
+    }
+    return run;
+}
+
+nlohmann::json check(const std::string& combination, const std::string& quantity,
+                     const std::string& result) {
+    return {{"case", "cantilever-moment"}, {"reference", "ref-" + result}, {"quantity", quantity},
+            {"combination", combination},  {"difference", "1e-10"},        {"result", result}};
+}
+
+}  // namespace
+
+// The summary's verdicts, each from hand-made runs and `verify` rows: a check at another
+// discretization does not count, a missed one makes the combination inaccurate, an expected stop
+// says so, an estimate is held against the case's stated accuracy (1e-7: half of it is 5e-8 of
+// L = 12, i.e. 6e-7 in), and the front sentence counts them.
+BOOST_AUTO_TEST_CASE(the_summary_says_which_combination_met_its_accuracy_and_links_to_its_run) {
+    const fs::path dir = fs::temp_directory_path() / "rotbeam-test-report-summary";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::vector<nlohmann::json> runs = {
+        rollup_run("quaternion", "displacement", "converged"),
+        rollup_run("rodrigues", "displacement", "singular"),
+        rollup_run("quaternion", "mixed", "converged"),
+        rollup_run("rotation-vector", "mixed", "converged"),
+        rollup_run("euler-angles", "displacement", "converged", 1e-7),     // 8e-9 of L: met
+        rollup_run("rotation-vector", "displacement", "converged", 1e-6),  // 8e-8 of L: above
+        rollup_run("wiener-milenkovic", "displacement", "error")};
+    const nlohmann::json checks = {
+        check("displacement/quaternion/relative order=4", "displacement", "pass"),
+        check("displacement/quaternion/direct order=4", "displacement", "FAIL"),  // not this run
+        check("displacement/rodrigues/relative", "stop", "pass"),
+        check("mixed/quaternion", "displacement", "FAIL"),
+        check("mixed/rotation-vector elements=8", "displacement", "pass")};  // another mesh
+    std::vector<std::string> files;
+    for (size_t i = 0; i < runs.size(); ++i) {
+        files.push_back((dir / ("run" + std::to_string(i) + ".json")).string());
+        std::ofstream(files.back()) << runs[i].dump();
+    }
+    write_report(dir.string(), files, {}, checks);
+    const std::string md = text_of(dir / "index.md");
+    // Columns in the order of the runs (the suite plans them in registry order).
+    BOOST_TEST(md.find("| cantilever-moment | [met (1)](#run-1) | "
+                       "[stopped: singular, expected](#run-2) | [met (estimate)](#run-5) | "
+                       "[inaccurate: estimate](#run-6) | [not run](#run-7) |") !=
+               std::string::npos);
+    BOOST_TEST(md.find("| cantilever-moment | [inaccurate: misses ref-FAIL](#run-3) | "
+                       "[unchecked](#run-4) |") != std::string::npos);
+    BOOST_TEST(md.find("- **cantilever-moment**: 2 of 7 combinations met their accuracy; "
+                       "unchecked: mixed/rotation-vector; stopped: displacement/rodrigues; "
+                       "inaccurate: mixed/quaternion, displacement/rotation-vector; not run: "
+                       "displacement/wiener-milenkovic.") != std::string::npos);
+    // The runs table: the estimate relative to L, the true error against the exact roll-up
+    // (λ = 2: the tip is back at the root, u = (−12, 0, 0) exactly; the runs' u₃ is 1.2e-8 off).
+    BOOST_TEST(md.find("<a id=\"run-5\"></a>cantilever-moment") != std::string::npos);
+    BOOST_TEST(
+        md.find("| 8.3e-09 (tip at load factor 2 (displacement)) | 1.0e-09 (exact, ‖Δu‖/L) |") !=
+        std::string::npos);
+    // The page opens with the summary and the contents, and every heading has its id.
+    const std::string html = text_of(dir / "index.html");
+    const size_t summary = html.find("<h2><a id=\"summary\"></a>Summary</h2>");
+    const size_t contents = html.find("<h2><a id=\"contents\"></a>Contents</h2>");
+    const size_t table = html.find("<h2><a id=\"runs\"></a>Runs</h2>");
+    BOOST_TEST_REQUIRE(summary != std::string::npos);
+    BOOST_TEST(summary < contents);
+    BOOST_TEST(contents < table);
+    BOOST_TEST(html.find("<a href=\"#runs\">Runs</a>") != std::string::npos);
+    BOOST_TEST(html.find("<a href=\"#run-2\">stopped: singular, expected</a>") !=
+               std::string::npos);
+    // A message is text: its `<` is not a tag.
+    BOOST_TEST(html.find("stopped at step 2 &lt;why&gt;") != std::string::npos);
     fs::remove_all(dir);
 }

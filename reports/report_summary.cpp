@@ -1,0 +1,284 @@
+#include "report_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "cases/loader/case_loader.hpp"
+#include "core/choices.hpp"
+#include "core/oracles/rollup.hpp"
+#include "core/static_driver.hpp"
+#include "estimates/accuracy_scale.hpp"
+#include "parameterizations/registry.hpp"
+#include "runs/catalog.hpp"
+#include "studies/study_common.hpp"
+
+namespace rotbeam::cli {
+
+namespace {
+
+std::string combination(const nlohmann::json& run) {
+    return run.value("formulation", "") + "/" + run.value("rotation", "");
+}
+
+// Whether a verify row was computed with the run's own combination and discretization. Its
+// `combination` label is "formulation/rotation[/interpolation or wm_map][ key=value ...]"
+// (verify_plan.hpp, settings_label): every part must be the run's (the key=value settings compared
+// with the run's `order`, `elements_per_member` or `options`).
+bool row_is(const nlohmann::json& row, const nlohmann::json& run) {
+    if (row.value("case", "") != run.value("case", "")) return false;
+    std::istringstream label(row.value("combination", ""));
+    std::string head;
+    label >> head;
+    std::vector<std::string> parts;
+    for (size_t start = 0, slash = 0; slash != std::string::npos; start = slash + 1) {
+        slash = head.find('/', start);
+        parts.push_back(head.substr(start, slash == std::string::npos ? slash : slash - start));
+    }
+    if (parts.size() < 2 || parts[0] != run.value("formulation", "") ||
+        parts[1] != run.value("rotation", "")) {
+        return false;
+    }
+    const nlohmann::json& options = run.value("options", nlohmann::json::object());
+    const auto option = [&](const std::string& key) -> std::string {
+        if (!options.contains(key)) return {};
+        const nlohmann::json& v = options[key];
+        return v.is_string() ? v.get<std::string>() : v.dump();
+    };
+    if (parts.size() > 2 && parts[2] != option("interpolation") && parts[2] != option("wm_map"))
+        return false;
+    for (std::string setting; label >> setting;) {
+        const size_t eq = setting.find('=');
+        const std::string key = setting.substr(0, eq), value = setting.substr(eq + 1);
+        if (key == "order") {
+            if (std::to_string(run.value("order", 0)) != value) return false;
+        } else if (key == "elements") {
+            const nlohmann::json per_member =
+                run.value("elements_per_member", nlohmann::json::object());
+            for (const auto& [member, n] : per_member.items()) {
+                if (n.dump() != value) return false;
+            }
+        } else if (option(key) != value) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::string scientific(double v, int digits = 1) {
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(digits) << v;
+    return s.str();
+}
+
+// The model of a run's case, loaded once per case (nullptr when the case no longer loads).
+const Model* model_of(const std::string& case_name) {
+    static std::map<std::string, std::optional<Model>> models;
+    auto it = models.find(case_name);
+    if (it == models.end()) {
+        std::optional<Model> m;
+        try {
+            m = load_case(resolve_case_path(case_name), {});
+        } catch (const std::exception&) {
+        }
+        it = models.emplace(case_name, std::move(m)).first;
+    }
+    return it->second ? &*it->second : nullptr;
+}
+
+struct Verdict {
+    std::string kind;  // met, unchecked, stopped, inaccurate, not run
+    std::string text;  // the cell's words
+};
+
+Verdict verdict(const nlohmann::json* run, const std::string& case_name,
+                const nlohmann::json& checks) {
+    if (!run) return {"not run", "not run"};
+    const std::string status = run->value("status", "error");
+    if (status == "error") return {"not run", "not run"};
+    if (status == "inaccurate") return {"inaccurate", "inaccurate: its estimate"};
+    int passed = 0, failed = 0;
+    bool expected_stop = false;
+    std::string missed;
+    for (const nlohmann::json& row : checks) {
+        if (!row_is(row, *run)) continue;
+        const std::string result = row.value("result", "");
+        if (row.value("quantity", "") == "stop") {
+            expected_stop = expected_stop || result == "pass";
+        } else if (result == "pass") {
+            ++passed;
+        } else if (result == "FAIL") {
+            ++failed;
+            if (missed.empty()) missed = row.value("reference", "");
+        }
+    }
+    if (!has_solution(status)) {
+        return {"stopped", "stopped: " + status + (expected_stop ? ", expected" : "")};
+    }
+    if (failed > 0) return {"inaccurate", "inaccurate: misses " + missed};
+    const Model* model = model_of(case_name);
+    const nlohmann::json& estimate = run->value("estimate", nlohmann::json::object());
+    const std::string estimated = estimate.value("status", "");
+    if (model && (estimated == "estimated" || estimated == "partial")) {
+        const std::map<Formulation, double>& accuracy = model->discretization.stated_accuracy;
+        const std::optional<Formulation> f =
+            parse_choice<Formulation>(run->value("formulation", ""));
+        const auto stated = f ? accuracy.find(*f) : accuracy.end();
+        if (stated != accuracy.end()) {
+            const double target = stated->second / 2;
+            // Static and modal estimates (a dynamic run's histories are not measured against a
+            // stated accuracy: its `inaccurate` status says when the estimate cannot vouch).
+            const estimate::AccuracyMeasure m = estimate::measure_accuracy(*model, *run, target);
+            if (m.quantities > 0) {
+                if (!estimate::meets(m, target)) return {"inaccurate", "inaccurate: estimate"};
+                return {"met", "met (estimate)"};
+            }
+        }
+    }
+    if (passed > 0) return {"met", "met (" + std::to_string(passed) + ")"};
+    return {"unchecked", "unchecked"};
+}
+
+}  // namespace
+
+std::string run_row_id(size_t index) { return "run-" + std::to_string(index + 1); }
+
+std::string summary_section(const std::vector<nlohmann::json>& runs,
+                            const nlohmann::json& published_checks) {
+    // Cases and combinations in the order of the runs (the suite plans them in registry order);
+    // each cell the case's first run of that combination (later ones are the modal variants).
+    std::vector<std::string> cases, combos;
+    std::map<std::pair<std::string, std::string>, size_t> first;
+    for (size_t i = 0; i < runs.size(); ++i) {
+        const std::string c = runs[i].value("case", ""), k = combination(runs[i]);
+        if (std::find(cases.begin(), cases.end(), c) == cases.end()) cases.push_back(c);
+        if (std::find(combos.begin(), combos.end(), k) == combos.end()) combos.push_back(k);
+        first.emplace(std::make_pair(c, k), i);
+    }
+    // Every cell's verdict, then a sentence per case.
+    std::map<std::pair<std::string, std::string>, Verdict> cells;
+    std::ostringstream sentences;
+    for (const std::string& c : cases) {
+        std::map<std::string, std::vector<std::string>> by_kind;
+        for (const std::string& k : combos) {
+            const auto it = first.find({c, k});
+            const Verdict v =
+                verdict(it == first.end() ? nullptr : &runs[it->second], c, published_checks);
+            by_kind[v.kind].push_back(k);
+            cells[{c, k}] = v;
+        }
+        const size_t n = combos.size(), met = by_kind["met"].size();
+        sentences << "- **" << c << "**: ";
+        if (met == n) {
+            sentences << "every combination met its accuracy.";
+        } else {
+            sentences << met << " of " << n << " combinations met their accuracy";
+            for (const char* kind : {"unchecked", "stopped", "inaccurate", "not run"}) {
+                const auto& list = by_kind[kind];
+                if (list.empty()) continue;
+                sentences << "; " << kind << ": ";
+                for (size_t i = 0; i < list.size(); ++i) sentences << (i ? ", " : "") << list[i];
+            }
+            sentences << ".";
+        }
+        sentences << "\n";
+    }
+    // One matrix per formulation (a page's width holds five parameterizations, not ten).
+    std::vector<std::string> formulations;
+    for (const std::string& k : combos) {
+        const std::string f = k.substr(0, k.find('/'));
+        if (std::find(formulations.begin(), formulations.end(), f) == formulations.end())
+            formulations.push_back(f);
+    }
+    std::ostringstream matrix;
+    for (const std::string& f : formulations) {
+        std::vector<std::string> mine;
+        for (const std::string& k : combos) {
+            if (k.substr(0, k.find('/')) == f) mine.push_back(k);
+        }
+        matrix << "| " << f << " formulation |";
+        for (const std::string& k : mine) matrix << " " << k.substr(k.find('/') + 1) << " |";
+        matrix << "\n|---|";
+        for (size_t i = 0; i < mine.size(); ++i) matrix << "---|";
+        matrix << "\n";
+        for (const std::string& c : cases) {
+            matrix << "| " << c << " |";
+            for (const std::string& k : mine) {
+                const auto it = first.find({c, k});
+                const std::string text = markdown_cell(cells[{c, k}].text);
+                if (it == first.end()) {
+                    matrix << " " << text << " |";
+                } else {
+                    matrix << " [" << text << "](#" << run_row_id(it->second) << ") |";
+                }
+            }
+            matrix << "\n";
+        }
+        matrix << "\n";
+    }
+    std::ostringstream md;
+    md << "## Summary\n\nWhether each case's combinations met their accuracy, case by case, then "
+          "combination by combination. *met (n)*: solved, and all n published checks that "
+          "`verify` makes with the combination at the case's own discretization passed; *met "
+          "(estimate)*: solved, and every error estimate of the run within half the case's stated "
+          "accuracy; *unchecked*: solved, with neither a published check nor an estimate (the "
+          "suite does not estimate); *stopped*: the solve stopped (*expected* when the case file "
+          "says it must); *inaccurate*: a published check missed, or an estimate above the stated "
+          "accuracy; *not run*: the combination does not exist for the case. Each cell links to "
+          "its run in the runs table.\n\n"
+       << sentences.str() << "\n"
+       << matrix.str();
+    return md.str();
+}
+
+std::string estimate_cell(const nlohmann::json& run) {
+    const nlohmann::json& estimate = run.value("estimate", nlohmann::json::object());
+    const std::string status = estimate.value("status", "");
+    if (status != "estimated" && status != "partial") return "not estimated";
+    const Model* model = model_of(run.value("case", ""));
+    if (!model) return "not estimated";
+    const estimate::AccuracyMeasure m = estimate::measure_accuracy(*model, run, 1.0);
+    if (m.quantities == 0) return "not estimated";
+    return scientific(m.worst) + " (" + m.worst_what + ")";
+}
+
+std::string true_error_cell(const nlohmann::json& run, const nlohmann::json& published_checks) {
+    const std::string case_name = run.value("case", "");
+    if (case_name == "cantilever-moment" && !run["steps"].empty()) {
+        const Model* rollup = model_of(case_name);
+        const nlohmann::json& step = run["steps"].back();
+        if (rollup && step.contains("load_factor") && step["points"].contains("tip")) {
+            const double length = (rollup->points[1].position - rollup->points[0].position).norm();
+            const Vec3 exact =
+                oracle::rollup_tip(length, step["load_factor"].get<double>()).displacement;
+            const auto& u = step["points"]["tip"]["displacement"];
+            const Vec3 v(u[0].get<double>(), u[1].get<double>(), u[2].get<double>());
+            return scientific((v - exact).norm() / length) + " (exact, ‖Δu‖/L)";
+        }
+    }
+    std::string worst;
+    double largest = -1.0;
+    int count = 0;
+    for (const nlohmann::json& row : published_checks) {
+        if (!row_is(row, run) || row.value("quantity", "") == "stop") continue;
+        const std::string difference = row.value("difference", "-");
+        double d = 0.0;
+        try {
+            d = std::stod(difference);
+        } catch (const std::exception&) {
+            continue;  // no computed value ("-")
+        }
+        ++count;
+        if (d > largest) {
+            largest = d;
+            worst = difference + " (" + row.value("reference", "") + ")";
+        }
+    }
+    if (count == 0) return "—";
+    return markdown_cell(worst) + ", worst of " + std::to_string(count) + " published";
+}
+
+}  // namespace rotbeam::cli

@@ -1,0 +1,34 @@
+// The report's front: one sentence per case saying whether every combination met its accuracy,
+// and the matrix case × combination (met, stopped and why, inaccurate, not run), each cell linked
+// to the run's row in the runs table; and the runs table's estimate and true-error cells.
+//
+// "Met" means: solved, and either every published check of the combination at the case's own
+// discretization passed (`verify`'s rows, docs/case-format.md "references"), or, for a run that
+// carries its error estimate, every estimate within half the case's stated accuracy
+// (discretization.accuracy, docs/accuracy-control.md). A solved run with neither (the suite does
+// not estimate, docs/error-estimates.md) is "unchecked": the report does not claim an accuracy.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rotbeam::cli {
+
+// The HTML id of the runs table's row of runs[index].
+std::string run_row_id(size_t index);
+
+// The "## Summary" section.
+std::string summary_section(const std::vector<nlohmann::json>& runs,
+                            const nlohmann::json& published_checks);
+
+// The run's worst estimated error relative to its scale (estimates/accuracy_scale.hpp), or why
+// there is none.
+std::string estimate_cell(const nlohmann::json& run);
+
+// The run's true error where a reference exists: ‖u − u_exact‖/L at the last converged step of the
+// roll-up (exact), else the largest difference to the published values checked at the case's own
+// discretization; "—" without a reference.
+std::string true_error_cell(const nlohmann::json& run, const nlohmann::json& published_checks);
+
+}  // namespace rotbeam::cli
