@@ -119,9 +119,9 @@ std::string Progress::line_locked() const {
         s << "time left not yet known";
     } else {
         const bool by_cost = total_cost_ > 0.0 && cost_done_ > 0.0;
-        const double left = by_cost ? elapsed * (total_cost_ - cost_done_) / cost_done_
-                                    : elapsed / static_cast<double>(done_) *
-                                          static_cast<double>(total_ - done_);
+        const double left =
+            by_cost ? elapsed * (total_cost_ - cost_done_) / cost_done_
+                    : elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_);
         s << "about " << human_seconds(left) << " left";
     }
     return s.str();

@@ -33,7 +33,7 @@ struct ProgressOptions {
 ProgressOptions progress_options_for_stderr();
 
 class Progress {
-public:
+  public:
     // `what` opens every line ("rotbeam suite"); `total` items.
     Progress(std::string what, size_t total, std::ostream& out, ProgressOptions options);
     ~Progress();  // stops the ticker, ends the terminal line
@@ -53,7 +53,7 @@ public:
     // The line as it would be printed now (the facts: done/total, current item, elapsed, left).
     std::string line() const;
 
-private:
+  private:
     void print_locked(bool force);
     std::string line_locked() const;
     double now() const;

@@ -13,7 +13,8 @@ double modelled_seconds(const Model& model) {
     double steps = 1.0;
     switch (model.analysis.kind) {
         case AnalysisKind::static_:
-            steps = static_cast<double>(std::max<size_t>(1, model.analysis.statics.load_factors.size())) *
+            steps = static_cast<double>(
+                        std::max<size_t>(1, model.analysis.statics.load_factors.size())) *
                     std::max(1, model.analysis.statics.substeps);
             break;
         case AnalysisKind::dynamic: {

@@ -24,8 +24,7 @@ Shard parse_shard(const std::string& command, const std::string& text) {
     };
     const int index = number(text.substr(0, slash));
     const int count = number(text.substr(slash + 1));
-    if (count < 1 || count > kMaxShards)
-        throw bad("N must be 1 to " + std::to_string(kMaxShards));
+    if (count < 1 || count > kMaxShards) throw bad("N must be 1 to " + std::to_string(kMaxShards));
     if (index < 1 || index > count) throw bad("I must be 1 to N");
     return {index, count};
 }
@@ -57,8 +56,8 @@ std::vector<double> expected_seconds(const std::vector<double>& modelled,
             sum_modelled += modelled[i];
         }
     }
-    const double scale = sum_modelled > 0.0 && sum_measured > 0.0 ? sum_measured / sum_modelled
-                                                                  : 1.0;
+    const double scale =
+        sum_modelled > 0.0 && sum_measured > 0.0 ? sum_measured / sum_modelled : 1.0;
     std::vector<double> expected(modelled.size());
     for (size_t i = 0; i < modelled.size(); ++i)
         expected[i] = measured[i] ? *measured[i] : modelled[i] * scale;

@@ -13,6 +13,7 @@
 #include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
+#include "distributed.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
@@ -20,7 +21,6 @@
 #include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
 #include "runs/steps_csv.hpp"
-#include "distributed.hpp"
 #include "study_commands.hpp"
 
 namespace rotbeam::cli {
@@ -400,7 +400,8 @@ int command_study(const Args& args) {
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},
          {"reduced-follower", "",
           "joined-beam-dynamics: the follower load with the --quick sweep on the full window"},
-         {"shard", "I/N", "make only the I-th of N shards of the study's runs, for `rotbeam merge`"},
+         {"shard", "I/N",
+          "make only the I-th of N shards of the study's runs, for `rotbeam merge`"},
          {"timings", "DIR", "with --shard: balance by the run times in DIR (repeatable)", true},
          {"jobs", "N", "with --shard: worker threads, 1 to 256 (default: all cores)"}}};
     const ParsedArguments a = parse_arguments(spec, args);

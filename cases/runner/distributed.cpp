@@ -208,8 +208,7 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
         u.file = "studies/" + name + ".done.json";
         u.label = "study " + name;
         u.key = stable_hash("study\n" + name + "\n" + (job.quick ? "quick" : "full") + "\n" +
-                            (job.reduced_follower ? "reduced-follower" : "") + "\n" +
-                            kGitDescribe);
+                            (job.reduced_follower ? "reduced-follower" : "") + "\n" + kGitDescribe);
         u.modelled_seconds = whole_study_seconds(name, job.quick);
         u.study = name;
         u.timed = timed_study(name);
@@ -282,8 +281,8 @@ void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
             const fs::path folder = fs::path(s.dir) / "studies" / u.study;
             fs::remove_all(folder);
             fs::remove(file);
-            run_study_whole(u.study, StudyOptions{folder.string(), plan.job.quick,
-                                                  plan.job.reduced_follower});
+            run_study_whole(
+                u.study, StudyOptions{folder.string(), plan.job.quick, plan.job.reduced_follower});
             const nlohmann::json record = {{"study", u.study},
                                            {"input_key", u.key},
                                            {"seconds", since(start)},
@@ -315,13 +314,10 @@ void run_shard(const Job& job, const ShardSettings& s) {
     // Longest first within the shard too: the worker threads end together.
     std::stable_sort(mine.begin(), mine.end(),
                      [&](size_t a, size_t b) { return expected[a] > expected[b]; });
-    nlohmann::json manifest = {{"format", "rotbeam-shard"},
-                               {"version", kGitDescribe},
-                               {"job", job.to_json()},
-                               {"shard", s.shard.index},
-                               {"of", s.shard.count},
-                               {"timed_by", s.timings},
-                               {"units", nlohmann::json::array()}};
+    nlohmann::json manifest = {
+        {"format", "rotbeam-shard"},       {"version", kGitDescribe}, {"job", job.to_json()},
+        {"shard", s.shard.index},          {"of", s.shard.count},     {"timed_by", s.timings},
+        {"units", nlohmann::json::array()}};
     double my_seconds = 0.0;
     for (const size_t i : mine) {
         manifest["units"].push_back(plan.units[i].file);
@@ -330,8 +326,8 @@ void run_shard(const Job& job, const ShardSettings& s) {
     write_file_atomically((fs::path(s.dir) / "shard.json").string(), manifest.dump(1) + "\n");
     const std::string what = "rotbeam " + job.command + " shard " + std::to_string(s.shard.index) +
                              "/" + std::to_string(s.shard.count);
-    std::cout << what << ": " << mine.size() << " of " << plan.units.size()
-              << " units, expected " << human_seconds(my_seconds) << " of "
+    std::cout << what << ": " << mine.size() << " of " << plan.units.size() << " units, expected "
+              << human_seconds(my_seconds) << " of "
               << human_seconds(std::accumulate(expected.begin(), expected.end(), 0.0)) << " on "
               << s.jobs << " threads → " << s.dir << "\n";
     std::vector<size_t> pooled, alone;

@@ -126,8 +126,7 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
         const fs::path from = fs::path(found.at(&u)) / u.file;
         switch (u.kind) {
             case Unit::Kind::case_run:
-                write_file_atomically(plan.case_runs[u.plan].output,
-                                      read_text_file(from.string()));
+                write_file_atomically(plan.case_runs[u.plan].output, read_text_file(from.string()));
                 break;
             case Unit::Kind::study_run:
                 results[u.plan][u.index] =
@@ -139,8 +138,9 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
                 for (const auto& name : record.at("files")) {
                     const fs::path target = fs::path(out) / name.get<std::string>();
                     fs::create_directories(target.parent_path());
-                    write_file_atomically(target.string(),
-                                          read_text_file((folder / name.get<std::string>()).string()));
+                    write_file_atomically(
+                        target.string(),
+                        read_text_file((folder / name.get<std::string>()).string()));
                 }
                 break;
             }

@@ -46,8 +46,8 @@ void run_study_whole(const std::string& name, const StudyOptions& o) {
     entry->second(o);
     std::cout << "study " << name << ": "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-              << " s → "
-              << (std::filesystem::path(o.out_dir) / ("study-" + name + ".md")).string() << "\n";
+              << " s → " << (std::filesystem::path(o.out_dir) / ("study-" + name + ".md")).string()
+              << "\n";
 }
 
 void check_study_name(const std::string& name) {
@@ -121,7 +121,13 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
     }
     std::vector<std::vector<nlohmann::json>> results(plans.size());
     for (size_t p = 0; p < plans.size(); ++p) results[p].resize(plans[p].size());
-    Progress progress("rotbeam suite: studies", whole.size() + items.size(), std::cerr,
+    std::vector<std::string> timed;
+    for (const auto& entry : static_studies()) {
+        if (timed_study(entry.first)) timed.push_back(entry.first);
+    }
+    // Progress over every step: the pooled runs and whole studies, the combines, the timed ones.
+    Progress progress("rotbeam suite: studies",
+                      whole.size() + items.size() + split.size() + timed.size(), std::cerr,
                       progress_options_for_stderr());
     for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
         if (i < whole.size()) {
@@ -138,7 +144,9 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
     });
     for (size_t p = 0; p < split.size(); ++p) {
         const auto start = std::chrono::steady_clock::now();
+        progress.started("combining " + split[p].first);
         split[p].second.combine(o, results_by_key(plans[p], std::move(results[p])));
+        progress.finished("combining " + split[p].first);
         std::cout
             << "study " << split[p].first << " (" << plans[p].size()
             << " runs in the pool), combined in "
@@ -147,8 +155,10 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
             << (std::filesystem::path(o.out_dir) / ("study-" + split[p].first + ".md")).string()
             << "\n";
     }
-    for (const auto& entry : static_studies()) {
-        if (timed_study(entry.first)) run_study_whole(entry.first, o);
+    for (const std::string& name : timed) {
+        progress.started("study " + name);
+        run_study_whole(name, o);
+        progress.finished("study " + name);
     }
 }
 

@@ -6,22 +6,22 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
 #include "combinations/registry.hpp"
 #include "commands.hpp"
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
 #include "parameterizations/registry.hpp"
-#include "runs/run_case.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "reports/report.hpp"
+#include "runs/run_case.hpp"
 #include "runs/run_cost.hpp"
 #include "study_commands.hpp"
-#include "core/atomic_file.hpp"
-#include <iostream>
 
 namespace rotbeam::cli {
 

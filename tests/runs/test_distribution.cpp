@@ -123,8 +123,9 @@ BOOST_AUTO_TEST_CASE(log_lines_come_at_most_once_per_interval_with_every_fact) {
         "[0-9]+ s elapsed, (about [0-9]+ s left( \\(expected\\))?|time left not yet known|"
         "nothing left)");
     for (const std::string& line : lines) BOOST_TEST(std::regex_match(line, format), line);
-    BOOST_TEST(lines[0] == "rotbeam suite: 0/40 done, running run-0, 0 s elapsed, time left not "
-                           "yet known");
+    BOOST_TEST(lines[0] ==
+               "rotbeam suite: 0/40 done, running run-0, 0 s elapsed, time left not "
+               "yet known");
     // At 10.5 s the 14th item ends: 0.75 s each, 26 left: about 19.5 s, printed rounded.
     BOOST_TEST(lines[1] == "rotbeam suite: 14/40 done, 11 s elapsed, about 20 s left");
 }
@@ -141,8 +142,9 @@ BOOST_AUTO_TEST_CASE(polls_print_during_a_long_item) {
     }
     const std::vector<std::string> lines = lines_of(out.str());
     BOOST_TEST(lines.size() == 4u);  // at 0, 10, 20, 30 s
-    BOOST_TEST(lines[3] == "rotbeam study: 0/2 done, running convergence, 30 s elapsed, time "
-                           "left not yet known");
+    BOOST_TEST(lines[3] ==
+               "rotbeam study: 0/2 done, running convergence, 30 s elapsed, time "
+               "left not yet known");
 }
 
 // With the items' expected costs, the time left follows the cost left, not the item count.
@@ -165,8 +167,9 @@ BOOST_AUTO_TEST_CASE(time_left_before_the_first_item_is_the_expected_cost) {
     p.set_total_cost(120.0);
     p.started("study speed-accuracy");
     now = 30.0;
-    BOOST_TEST(p.line() == "rotbeam suite: 0/1 done, running study speed-accuracy, 30 s elapsed, "
-                           "about 1 min 30 s left (expected)");
+    BOOST_TEST(p.line() ==
+               "rotbeam suite: 0/1 done, running study speed-accuracy, 30 s elapsed, "
+               "about 1 min 30 s left (expected)");
 }
 
 // On a terminal the line is redrawn in place: carriage return, the line, clear to its end.
