@@ -87,14 +87,15 @@ void report_missing(const JobPlan& plan, const std::vector<const Unit*>& missing
         for (const ShardFolder& s : shards) {
             if (s.units.count(u->file)) owner = &s;
         }
-        std::cerr << "  " << u->file << " (" << u->label << "): ";
+        std::cerr << "  " << u->file;
+        if (u->kind != Unit::Kind::case_run) std::cerr << " (" << u->label << ")";
+        std::cerr << ": ";
         if (owner) {
             std::cerr << "shard " << owner->shard.index << "/" << owner->shard.count << ", "
                       << owner->dir << "\n";
             rerun.emplace(owner->dir, owner);
         } else {
-            std::cerr << "in no shard folder given (a shard not merged, or shards split with "
-                         "other --timings)\n";
+            std::cerr << "in no shard folder given\n";
         }
     }
     if (!rerun.empty()) {
@@ -103,7 +104,9 @@ void report_missing(const JobPlan& plan, const std::vector<const Unit*>& missing
         for (const auto& [dir, s] : rerun)
             std::cerr << "  " << shard_command(plan.job, s->shard, dir) << "\n";
     }
-    int count = shards.empty() ? 0 : shards.front().shard.count;
+    // A shard folder not given (or shards split with different --timings: then the unit is in
+    // none of them).
+    const int count = shards.empty() ? 0 : shards.front().shard.count;
     std::set<int> given;
     for (const ShardFolder& s : shards) given.insert(s.shard.index);
     for (int i = 1; i <= count; ++i) {
