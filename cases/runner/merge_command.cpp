@@ -152,7 +152,8 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
     if (plan.job.command == "suite") write_suite_summaries(out, plan.case_runs);
     const StudyOptions o{out, plan.job.quick, plan.job.reduced_follower};
     for (size_t s = 0; s < plan.split.size(); ++s) {
-        const auto& [name, runs] = plan.split[s];
+        const std::string& name = plan.split[s].first;
+        const std::vector<StudyRun>& runs = plan.split[s].second;
         const auto study = std::find_if(split_studies().begin(), split_studies().end(),
                                         [&](const auto& e) { return e.first == name; });
         study->second.combine(o, results_by_key(runs, std::move(results[s])));
