@@ -2,35 +2,20 @@
 // --cases) with every parameterization × formulation, in parallel over --jobs worker threads,
 // writes one result file per run (skipped on a rerun when its inputs and the rotbeam version are
 // unchanged), the rotation study, and a report (index.md + index.html) with the runs table and the
-// plots made by gnuplot scripts in reports/.
+// plots made by gnuplot scripts in reports/. With --shard I/N it makes only one shard of the
+// runs and studies, for `rotbeam merge` (distributed.hpp).
 #include <fnmatch.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <functional>
-#include <iomanip>
 #include <iostream>
-#include <map>
-#include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "arguments.hpp"
-#include "cases/loader/case_loader.hpp"
-#include "combinations/registry.hpp"
 #include "commands.hpp"
+#include "core/atomic_file.hpp"
 #include "core/errors.hpp"
-#include "core/results.hpp"
-#include "core/version.hpp"
 #include "distributed.hpp"
-#include "parameterizations/registry.hpp"
-#include "parameterizations/rotation_study.hpp"
-#include "reports/report.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 #include "study_commands.hpp"
