@@ -25,6 +25,7 @@
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
 #include "runs/make_problem.hpp"
+#include "runs/progress.hpp"
 #include "runs/timing.hpp"
 
 namespace rotbeam::cli {
@@ -154,7 +155,7 @@ void print_target_summary(const BenchTarget& t, const nlohmann::json& rows, std:
 
 // One target for every combination: the table on stdout, the rows as JSON (null when the
 // target's reference cannot be computed).
-nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats) {
+nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats, Progress& progress) {
     const nlohmann::json reference =
         t.case_name == "bend-45"
             ? continuum_reference(t.case_name, {kExactBendTip, "analysis.load_factors=[600]"})
@@ -163,6 +164,7 @@ nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats) {
         (!has_solution(reference.value("status", "")) || reference["steps"].empty())) {
         std::cout << t.name << ": no continuum reference (" << reference.value("message", "")
                   << "); skipped\n\n";
+        for (size_t i = 0; i < all_combinations(false).size(); ++i) progress.finished(t.name);
         return nlohmann::json();
     }
     std::cout << t.name << " (" << t.measure << " ≤ " << sci(t.accuracy, 0) << ")\n  " << std::left
@@ -173,7 +175,10 @@ nlohmann::json bench_target(const BenchTarget& t, bool quick, int repeats) {
               << "\n";
     nlohmann::json rows = nlohmann::json::array();
     for (const Combination& c : all_combinations(false)) {
+        const std::string item = t.name + " " + c.label();
+        progress.started(item);
         rows.push_back(bench_combination(t, c, reference, quick, repeats));
+        progress.finished(item);
         print_row(rows.back(), std::cout);
         std::cout << std::flush;
     }
@@ -265,26 +270,38 @@ int command_bench(const Args& args) {
         whole.push_back(',');
         return selection == ",," || selection.find(whole) != std::string::npos;
     };
+    // Progress: one item per static target × combination and one per joined-beam target.
+    size_t items = 0;
+    for (const BenchTarget& t : bench_targets())
+        items += selected(t.name) ? all_combinations(false).size() : 0;
+    const std::vector<std::string> whole = {"joined-beam-modal", "joined-beam-dynamic", "long-run",
+                                            "accuracy-control"};
+    for (const std::string& name : whole) items += selected(name) ? 1 : 0;
+    Progress progress("rotbeam bench", items, std::cerr, progress_options_for_stderr());
+    const auto whole_target = [&](const std::string& name, const auto& make) {
+        if (!selected(name)) return;
+        progress.started(name);
+        out["targets"].push_back(make());
+        progress.finished(name);
+    };
     out["targets"] = nlohmann::json::array();
     for (const BenchTarget& t : bench_targets()) {
         if (!selected(t.name)) continue;
-        nlohmann::json target = bench_target(t, quick, repeats);
+        nlohmann::json target = bench_target(t, quick, repeats, progress);
         if (!target.is_null()) out["targets"].push_back(std::move(target));
     }
-    if (selected("joined-beam-modal"))
-        out["targets"].push_back(bench_joined_beam_modal(quick, repeats));
-    if (selected("joined-beam-dynamic")) {
+    whole_target("joined-beam-modal", [&] { return bench_joined_beam_modal(quick, repeats); });
+    whole_target("joined-beam-dynamic", [&] {
         const fs::path json_dir =
             fs::path(a.value("json").value_or("out/bench.json")).parent_path();
         const std::string references =
             a.value("references")
                 .value_or(((json_dir.empty() ? fs::path(".") : json_dir) / "joined-beam-references")
                               .string());
-        out["targets"].push_back(bench_joined_beam_dynamic(quick, repeats, references));
-    }
-    if (selected("long-run")) out["targets"].push_back(bench_long_run(quick));
-    if (selected("accuracy-control"))
-        out["targets"].push_back(bench_accuracy_control(quick, repeats));
+        return bench_joined_beam_dynamic(quick, repeats, references);
+    });
+    whole_target("long-run", [&] { return bench_long_run(quick); });
+    whole_target("accuracy-control", [&] { return bench_accuracy_control(quick, repeats); });
     write_bench_outputs(a, out);
     return 0;
 }

@@ -6,12 +6,14 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "arguments.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
+#include "distributed.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
@@ -397,12 +399,30 @@ int command_study(const Args& args) {
          {"out", "DIR", "output folder of the static studies (default out)"},
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},
          {"reduced-follower", "",
-          "joined-beam-dynamics: the follower load with the --quick sweep on the full window"}}};
+          "joined-beam-dynamics: the follower load with the --quick sweep on the full window"},
+         {"shard", "I/N",
+          "make only the I-th of N shards of the study's runs, for `rotbeam merge`"},
+         {"timings", "DIR", "with --shard: balance by the run times in DIR (repeatable)", true},
+         {"jobs", "N", "with --shard: worker threads, 1 to 256 (default: all cores)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
         return 0;
     }
+    if (const auto shard = a.value("shard")) {
+        Job job;
+        job.command = "study";
+        job.study = a.positional[0];
+        job.quick = a.has("quick");
+        job.reduced_follower = a.has("reduced-follower");
+        const int jobs = a.positive_int("study", "jobs", kMaxJobs)
+                             .value_or(std::max(1u, std::thread::hardware_concurrency()));
+        run_shard(job, ShardSettings{parse_shard("study", *shard), a.value("out").value_or("out"),
+                                     jobs, false, a.values("timings")});
+        return 0;
+    }
+    if (a.has("timings") || a.has("jobs"))
+        throw InputError("rotbeam study: --timings and --jobs: only with --shard I/N");
     if (a.positional[0] != "rotations") {
         run_named_study(a.positional[0], StudyOptions{a.value("out").value_or("out"),
                                                       a.has("quick"), a.has("reduced-follower")});

@@ -1,7 +1,8 @@
 // The rotbeam program. Bad input → one line on stderr naming the file/option and the problem, exit
 // code 2, no partial output; anything unexpected → exit 3 with the message (a bug); an output file
 // that cannot be written (full disk, file size limit) → exit 4 with its name, nothing partial left;
-// stopped by SIGINT/SIGTERM/SIGHUP → exit 128 + signal (interrupt.hpp).
+// stopped by SIGINT/SIGTERM/SIGHUP → exit 128 + signal (interrupt.hpp); `merge` with runs missing
+// from its shard folders → exit 5 (distributed.hpp).
 #include <iostream>
 #include <map>
 #include <string>
@@ -12,6 +13,7 @@
 #include "commands.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "distributed.hpp"
 #include "interrupt.hpp"
 #include "runs/timing.hpp"
 
@@ -28,6 +30,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
         {"import", {command_import, "translate a BeamDyn input deck into a case file"}},
         {"run", {command_run, "run a case with one parameterization and formulation"}},
         {"suite", {command_suite, "run the benchmark suite and write the report"}},
+        {"merge", {command_merge, "combine the shard folders of a suite or study into one output"}},
         {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},
         {"reference", {command_reference, "continuum reference solution of a static case"}},
         {"study",

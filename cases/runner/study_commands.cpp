@@ -12,6 +12,7 @@
 #include "benches/study_speed.hpp"
 #include "core/errors.hpp"
 #include "runs/parallel.hpp"
+#include "runs/progress.hpp"
 #include "studies/studies.hpp"
 
 namespace rotbeam::cli {
@@ -36,7 +37,20 @@ std::vector<std::string> study_names() {
     return names;
 }
 
-void run_named_study(const std::string& name, const StudyOptions& o) {
+void run_study_whole(const std::string& name, const StudyOptions& o) {
+    const auto entry = std::find_if(static_studies().begin(), static_studies().end(),
+                                    [&](const auto& e) { return e.first == name; });
+    ROTBEAM_VERIFY(entry != static_studies().end(), "run_study_whole: unknown study " + name);
+    std::filesystem::create_directories(o.out_dir);
+    const auto start = std::chrono::steady_clock::now();
+    entry->second(o);
+    std::cout << "study " << name << ": "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s → " << (std::filesystem::path(o.out_dir) / ("study-" + name + ".md")).string()
+              << "\n";
+}
+
+void check_study_name(const std::string& name) {
     bool found = name == "all";
     for (const auto& entry : static_studies()) found = found || entry.first == name;
     if (!found) {
@@ -45,20 +59,22 @@ void run_named_study(const std::string& name, const StudyOptions& o) {
         throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
                          ", all)");
     }
-    std::filesystem::create_directories(o.out_dir);  // only for a valid study: no stray output
-    for (const auto& [study, function] : static_studies()) {
-        if (name != "all" && name != study) continue;
-        const auto start = std::chrono::steady_clock::now();
-        function(o);
-        std::cout << "study " << study << ": "
-                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                  << " s → "
-                  << (std::filesystem::path(o.out_dir) / ("study-" + study + ".md")).string()
-                  << "\n";
-    }
 }
 
-namespace {
+void run_named_study(const std::string& name, const StudyOptions& o) {
+    check_study_name(name);
+    std::filesystem::create_directories(o.out_dir);  // only for a valid study: no stray output
+    std::vector<std::string> chosen;
+    for (const auto& entry : static_studies()) {
+        if (name == "all" || name == entry.first) chosen.push_back(entry.first);
+    }
+    Progress progress("rotbeam study", chosen.size(), std::cerr, progress_options_for_stderr());
+    for (const std::string& study : chosen) {
+        progress.started(study);
+        run_study_whole(study, o);
+        progress.finished(study);
+    }
+}
 
 // Studies whose timings decide their results: run alone, after the others.
 bool timed_study(const std::string& name) { return name == "speed-accuracy"; }
@@ -70,8 +86,6 @@ bool timed_study(const std::string& name) { return name == "speed-accuracy"; }
 bool standalone_study(const std::string& name) {
     return name == "joined-beam-dynamics" || name == "joined-beam-agreement";
 }
-
-}  // namespace
 
 const std::vector<std::pair<std::string, SplitStudy>>& split_studies() {
     static const std::vector<std::pair<std::string, SplitStudy>> table = {
@@ -107,17 +121,32 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
     }
     std::vector<std::vector<nlohmann::json>> results(plans.size());
     for (size_t p = 0; p < plans.size(); ++p) results[p].resize(plans[p].size());
+    std::vector<std::string> timed;
+    for (const auto& entry : static_studies()) {
+        if (timed_study(entry.first)) timed.push_back(entry.first);
+    }
+    // Progress over every step: the pooled runs and whole studies, the combines, the timed ones.
+    Progress progress("rotbeam suite: studies",
+                      whole.size() + items.size() + split.size() + timed.size(), std::cerr,
+                      progress_options_for_stderr());
     for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
         if (i < whole.size()) {
-            run_named_study(whole[i], o);
+            progress.started("study " + whole[i]);
+            run_study_whole(whole[i], o);
+            progress.finished("study " + whole[i]);
         } else {
             const auto [p, r] = items[i - whole.size()];
+            const std::string label = split[p].first + " " + plans[p][r].key;
+            progress.started(label);
             results[p][r] = execute_run(plans[p][r]);
+            progress.finished(label);
         }
     });
     for (size_t p = 0; p < split.size(); ++p) {
         const auto start = std::chrono::steady_clock::now();
+        progress.started("combining " + split[p].first);
         split[p].second.combine(o, results_by_key(plans[p], std::move(results[p])));
+        progress.finished("combining " + split[p].first);
         std::cout
             << "study " << split[p].first << " (" << plans[p].size()
             << " runs in the pool), combined in "
@@ -126,8 +155,10 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
             << (std::filesystem::path(o.out_dir) / ("study-" + split[p].first + ".md")).string()
             << "\n";
     }
-    for (const auto& entry : static_studies()) {
-        if (timed_study(entry.first)) run_named_study(entry.first, o);
+    for (const std::string& name : timed) {
+        progress.started("study " + name);
+        run_study_whole(name, o);
+        progress.finished("study " + name);
     }
 }
 

@@ -26,8 +26,19 @@ const std::vector<std::pair<std::string, SplitStudy>>& split_studies();
 // (study_commands.cpp says why).
 void run_suite_studies(const StudyOptions& o, int jobs);
 
-// Runs the named study (InputError for an unknown name) or, for "all", every study.
+// Runs the named study (InputError for an unknown name) or, for "all", every study, with a
+// progress line on stderr (runs/progress.hpp).
 void run_named_study(const std::string& name, const StudyOptions& o);
+// InputError unless `name` is a study of the registry or "all".
+void check_study_name(const std::string& name);
+// Runs one study of the registry whole into o.out_dir and prints its time.
+void run_study_whole(const std::string& name, const StudyOptions& o);
+
+// Studies whose timings are their results (speed-accuracy): run alone, after the others.
+bool timed_study(const std::string& name);
+// Studies the suite leaves out (joined-beam-dynamics, -agreement: tens of CPU-minutes); run by
+// name or `all`.
+bool standalone_study(const std::string& name);
 
 // The names of the studies, in report order (the report reads DIR/study-NAME.md of each).
 std::vector<std::string> study_names();

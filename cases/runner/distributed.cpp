@@ -1,0 +1,347 @@
+#include "distributed.hpp"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <numeric>
+
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "core/version.hpp"
+#include "runs/catalog.hpp"
+#include "runs/parallel.hpp"
+#include "runs/progress.hpp"
+#include "runs/run_cost.hpp"
+#include "study_commands.hpp"
+
+namespace rotbeam::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The expected time of a study made whole, before it has ever run (quick, full), in seconds of
+// one core: measured on the 2-core machine (docs/distributed-runs.md, "Cost model").
+struct StudyCost {
+    const char* name;
+    double quick, full;
+};
+constexpr StudyCost kStudyCosts[] = {
+    {"manufactured-time", 42.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
+    {"speed-accuracy", 120.0, 600.0},        {"joined-beam-dynamics", 60.0, 1200.0},
+    {"joined-beam-agreement", 30.0, 1200.0},
+};
+// A study without an entry above, and a continuum reference run of a split study.
+constexpr double kUnknownStudySeconds = 60.0;
+constexpr double kContinuumReferenceSeconds = 0.5;
+
+double whole_study_seconds(const std::string& name, bool quick) {
+    for (const StudyCost& c : kStudyCosts) {
+        if (name == c.name) return quick ? c.quick : c.full;
+    }
+    return kUnknownStudySeconds;
+}
+
+double study_run_seconds(const StudyRun& run) {
+    if (run.kind == StudyRun::Kind::continuum_reference) return kContinuumReferenceSeconds;
+    try {
+        return modelled_seconds(build_model(run.spec));
+    } catch (const InputError&) {
+        return kFixedSeconds;  // a combination that does not exist: refused at once
+    }
+}
+
+std::string case_text(const std::string& case_name) {
+    try {
+        return read_text_file(resolve_case_path(case_name));
+    } catch (const InputError&) {
+        return "";
+    }
+}
+
+// Every file under `root` (relative paths, sorted), leaving out interrupted writes' temporaries.
+std::vector<std::string> files_under(const fs::path& root) {
+    std::vector<std::string> files;
+    if (!fs::exists(root)) return files;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string name = entry.path().filename().string();
+        if (name.find(".rotbeam-tmp.") != std::string::npos) continue;
+        files.push_back(fs::relative(entry.path(), root).string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+double since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The time an earlier run of the unit took, from the first of `folders` (shard or output
+// folders) that has its file: the run's wall_seconds, or the shard file's seconds.
+std::optional<double> measured_seconds(const std::vector<std::string>& folders, const Unit& u) {
+    for (const std::string& folder : folders) {
+        const fs::path file = fs::path(folder) / u.file;
+        if (!fs::exists(file)) continue;
+        try {
+            const nlohmann::json j = nlohmann::json::parse(read_text_file(file.string()));
+            for (const char* key : {"wall_seconds", "seconds"}) {
+                if (j.contains(key) && j[key].is_number() && j[key].get<double>() >= 0.0)
+                    return j[key].get<double>();
+            }
+        } catch (const nlohmann::json::exception&) {
+            // an unreadable timing is no timing: the cost model stands in
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+nlohmann::json Job::to_json() const {
+    return {{"command", command}, {"study", study},     {"cases", cases},
+            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower}};
+}
+
+Job job_from_json(const nlohmann::json& j, const std::string& file) {
+    try {
+        Job job;
+        job.command = j.at("command").get<std::string>();
+        job.study = j.at("study").get<std::string>();
+        job.cases = j.at("cases").get<std::string>();
+        job.quick = j.at("quick").get<bool>();
+        job.studies = j.at("studies").get<bool>();
+        job.reduced_follower = j.at("reduced_follower").get<bool>();
+        if (job.command != "suite" && job.command != "study")
+            throw InputError("unknown command '" + job.command + "'");
+        return job;
+    } catch (const std::exception& e) {
+        throw InputError(file + ": job: not a rotbeam shard job (" + std::string(e.what()) + ")");
+    }
+}
+
+std::string shard_command(const Job& job, const Shard& shard, const std::string& dir) {
+    std::string c = "rotbeam " + job.command;
+    if (job.command == "study") c += " " + job.study;
+    if (job.command == "suite" && job.cases != "*") c += " --cases '" + job.cases + "'";
+    if (job.quick) c += " --quick";
+    if (job.command == "suite" && job.cases != "*" && job.studies) c += " --studies";
+    if (job.command == "suite" && job.cases == "*" && !job.studies) c += " --no-studies";
+    if (job.reduced_follower) c += " --reduced-follower";
+    return c + " --shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+           " --out " + dir;
+}
+
+JobPlan plan_job(const Job& job, const std::string& dir) {
+    JobPlan p{job, {}, {}, {}, {}};
+    const StudyOptions o{dir, job.quick, job.reduced_follower};
+    std::vector<std::string> studies;
+    if (job.command == "suite") {
+        const std::vector<std::string> catalog = catalog_cases();
+        if (std::none_of(catalog.begin(), catalog.end(), [&](const std::string& name) {
+                return fnmatch(job.cases.c_str(), name.c_str(), 0) == 0;
+            })) {
+            throw InputError("rotbeam suite: --cases: '" + job.cases +
+                             "' matches no catalog case (see 'rotbeam list')");
+        }
+        p.case_runs = plan_runs(job.cases, dir, job.quick);
+        if (job.studies) {
+            for (const auto& entry : static_studies()) {
+                if (!standalone_study(entry.first)) studies.push_back(entry.first);
+            }
+        }
+    } else {
+        if (job.study == "rotations") {
+            throw InputError(
+                "rotbeam study: --shard: 'rotations' is one sweep of a second; run it whole");
+        }
+        check_study_name(job.study);
+        for (const auto& entry : static_studies()) {
+            if (job.study == "all" || job.study == entry.first) studies.push_back(entry.first);
+        }
+    }
+    for (const std::string& name : studies) {
+        const auto s = std::find_if(split_studies().begin(), split_studies().end(),
+                                    [&](const auto& e) { return e.first == name; });
+        if (s != split_studies().end() && !timed_study(name)) {
+            p.split.emplace_back(name, s->second.plan(o));
+        } else {
+            p.whole.push_back(name);
+        }
+    }
+    for (size_t i = 0; i < p.case_runs.size(); ++i) {
+        const PlannedRun& run = p.case_runs[i];
+        Unit u;
+        u.kind = Unit::Kind::case_run;
+        u.file = "runs/" + fs::path(run.output).filename().string();
+        u.label = fs::path(run.output).stem().string();
+        u.key = run.key;
+        u.modelled_seconds = run.modelled_seconds;
+        u.plan = i;
+        p.units.push_back(u);
+    }
+    for (size_t s = 0; s < p.split.size(); ++s) {
+        const auto& [name, runs] = p.split[s];
+        for (size_t r = 0; r < runs.size(); ++r) {
+            const StudyRun& run = runs[r];
+            Unit u;
+            u.kind = Unit::Kind::study_run;
+            u.file = "study-runs/" + name + "/" + stable_hash(run.key) + ".json";
+            u.label = name + " " + run.key;
+            u.key = stable_hash(name + "\n" + run.key + "\n" +
+                                std::to_string(static_cast<int>(run.kind)) + "\n" +
+                                (job.quick ? "quick" : "full") + "\n" +
+                                case_text(run.spec.case_name) + "\n" + kGitDescribe);
+            u.modelled_seconds = study_run_seconds(run);
+            u.plan = s;
+            u.index = r;
+            u.study = name;
+            p.units.push_back(u);
+        }
+    }
+    for (const std::string& name : p.whole) {
+        Unit u;
+        u.kind = Unit::Kind::whole_study;
+        u.file = "studies/" + name + ".done.json";
+        u.label = "study " + name;
+        u.key = stable_hash("study\n" + name + "\n" + (job.quick ? "quick" : "full") + "\n" +
+                            (job.reduced_follower ? "reduced-follower" : "") + "\n" + kGitDescribe);
+        u.modelled_seconds = whole_study_seconds(name, job.quick);
+        u.study = name;
+        u.timed = timed_study(name);
+        p.units.push_back(u);
+    }
+    return p;
+}
+
+UnitCheck check_unit(const std::string& dir, const Unit& u) {
+    const fs::path file = fs::path(dir) / u.file;
+    if (!fs::exists(file)) return {UnitState::absent, ""};
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(read_text_file(file.string()));
+    } catch (const nlohmann::json::exception& e) {
+        return {UnitState::damaged, "not complete JSON (" + std::string(e.what()) + ")"};
+    }
+    if (!j.is_object() || j.value("input_key", "") != u.key) {
+        return {UnitState::damaged,
+                "made from other inputs or another rotbeam version (input_key is not the "
+                "plan's)"};
+    }
+    if (u.kind == Unit::Kind::study_run && (!j.contains("result") || !j["result"].is_object()))
+        return {UnitState::damaged, "no result"};
+    if (u.kind == Unit::Kind::whole_study) {
+        if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
+            return {UnitState::damaged, "no list of the study's files"};
+        const fs::path folder = fs::path(dir) / "studies" / u.study;
+        for (const auto& name : j["files"]) {
+            const fs::path f = folder / name.get<std::string>();
+            if (!fs::exists(f)) return {UnitState::damaged, f.string() + " is missing"};
+            if (f.extension() == ".json") {
+                if (!nlohmann::json::accept(read_text_file(f.string())))
+                    return {UnitState::damaged, f.string() + " is not complete JSON"};
+            }
+        }
+    }
+    return {UnitState::made, ""};
+}
+
+namespace {
+
+void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
+    if (!s.force && u.kind != Unit::Kind::case_run &&
+        check_unit(s.dir, u).state == UnitState::made) {
+        return;
+    }
+    const fs::path file = fs::path(s.dir) / u.file;
+    const auto start = std::chrono::steady_clock::now();
+    switch (u.kind) {
+        case Unit::Kind::case_run: {
+            const PlannedRun& run = plan.case_runs[u.plan];
+            if (s.force || !up_to_date(run))
+                write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
+            return;
+        }
+        case Unit::Kind::study_run: {
+            nlohmann::json result = execute_run(plan.split[u.plan].second[u.index]);
+            const nlohmann::json record = {{"study", u.study},
+                                           {"key", plan.split[u.plan].second[u.index].key},
+                                           {"input_key", u.key},
+                                           {"seconds", since(start)},
+                                           {"result", std::move(result)}};
+            fs::create_directories(file.parent_path());
+            write_file_atomically(file.string(), record.dump(1) + "\n");
+            return;
+        }
+        case Unit::Kind::whole_study: {
+            // A study stopped halfway left some of its files: start its folder afresh.
+            const fs::path folder = fs::path(s.dir) / "studies" / u.study;
+            fs::remove_all(folder);
+            fs::remove(file);
+            run_study_whole(
+                u.study, StudyOptions{folder.string(), plan.job.quick, plan.job.reduced_follower});
+            const nlohmann::json record = {{"study", u.study},
+                                           {"input_key", u.key},
+                                           {"seconds", since(start)},
+                                           {"files", files_under(folder)}};
+            write_file_atomically(file.string(), record.dump(1) + "\n");
+            return;
+        }
+    }
+}
+
+}  // namespace
+
+void run_shard(const Job& job, const ShardSettings& s) {
+    fs::create_directories(s.dir);
+    remove_stale_temporaries(s.dir);
+    const JobPlan plan = plan_job(job, s.dir);
+    std::vector<double> modelled;
+    std::vector<std::optional<double>> measured;
+    for (const Unit& u : plan.units) {
+        modelled.push_back(u.modelled_seconds);
+        measured.push_back(measured_seconds(s.timings, u));
+    }
+    const std::vector<double> expected = expected_seconds(modelled, measured);
+    const std::vector<int> shard_of = assign_longest_first(expected, s.shard.count);
+    std::vector<size_t> mine;
+    for (size_t i = 0; i < plan.units.size(); ++i) {
+        if (shard_of[i] == s.shard.index - 1) mine.push_back(i);
+    }
+    // Longest first within the shard too: the worker threads end together.
+    std::stable_sort(mine.begin(), mine.end(),
+                     [&](size_t a, size_t b) { return expected[a] > expected[b]; });
+    nlohmann::json manifest = {
+        {"format", "rotbeam-shard"},       {"version", kGitDescribe}, {"job", job.to_json()},
+        {"shard", s.shard.index},          {"of", s.shard.count},     {"timed_by", s.timings},
+        {"units", nlohmann::json::array()}};
+    double my_seconds = 0.0;
+    for (const size_t i : mine) {
+        manifest["units"].push_back(plan.units[i].file);
+        my_seconds += expected[i];
+    }
+    write_file_atomically((fs::path(s.dir) / "shard.json").string(), manifest.dump(1) + "\n");
+    const std::string what = "rotbeam " + job.command + " shard " + std::to_string(s.shard.index) +
+                             "/" + std::to_string(s.shard.count);
+    std::cout << what << ": " << mine.size() << " of " << plan.units.size() << " units, expected "
+              << human_seconds(my_seconds) << " of "
+              << human_seconds(std::accumulate(expected.begin(), expected.end(), 0.0)) << " on "
+              << s.jobs << " threads → " << s.dir << "\n";
+    std::vector<size_t> pooled, alone;
+    for (const size_t i : mine) (plan.units[i].timed ? alone : pooled).push_back(i);
+    Progress progress(what, mine.size(), std::cerr, progress_options_for_stderr());
+    progress.set_total_cost(my_seconds);
+    const auto make = [&](size_t i) {
+        progress.started(plan.units[i].label);
+        make_unit(plan, plan.units[i], s);
+        progress.finished(plan.units[i].label, expected[i]);
+    };
+    for_each_parallel(pooled.size(), s.jobs, [&](size_t k) { make(pooled[k]); });
+    for (const size_t i : alone) make(i);
+    std::cout << what << ": done → " << s.dir << " (merge with 'rotbeam merge DIR... --out DIR')\n";
+}
+
+}  // namespace rotbeam::cli

@@ -1,0 +1,44 @@
+// The suite's case runs: which runs `rotbeam suite` makes (every catalog case matching --cases ×
+// every parameterization × formulation, and the Table III variants of the modal cases), where
+// each result goes, when a result on disk is still valid, and how one run is made. Shared by the
+// suite, its shards and `rotbeam merge` (docs/distributed-runs.md).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace rotbeam::cli {
+
+struct PlannedRun {
+    std::string case_name, case_path, rotation, formulation;
+    std::string output{};                  // result file
+    std::string key{};                     // hash of the inputs
+    std::vector<std::string> overrides{};  // further --set overrides (a variant's settings)
+    int elements_per_member = 0;           // 0: the case's own mesh
+    double modelled_seconds = 0.0;         // expected run time by the cost model (run_cost.hpp)
+};
+
+// The whole file as text ("" when it cannot be read).
+std::string read_text_file(const std::string& path);
+
+// The runs of the suite over the catalog cases matching `glob`, results under out_dir/runs/.
+std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick);
+
+// The run's result file exists, parses, and carries the run's input key (same case text, settings
+// and rotbeam version): resuming skips it.
+bool up_to_date(const PlannedRun& run);
+
+// Makes the run (the code path of `rotbeam run`); a combination that does not exist for the case
+// comes back as status "error" with the loader's or runner's message. The result carries the key.
+nlohmann::json execute_planned_run(const PlannedRun& run);
+
+// published.md (the published numbers of the cases run) and rotation-study.json; returns the
+// published checks (the rows `verify --json` writes) for the report's summary.
+nlohmann::json write_suite_summaries(const std::string& out, const std::vector<PlannedRun>& runs);
+// The report (index.md, index.html, figures) from the runs' files, the studies' pages and the
+// published checks.
+void write_suite_report(const std::string& out, const std::vector<PlannedRun>& runs,
+                        const nlohmann::json& published_checks);
+
+}  // namespace rotbeam::cli

@@ -1,0 +1,199 @@
+// Splitting runs into shards (runs/shards.hpp) and the progress lines of long work
+// (runs/progress.hpp).
+#define BOOST_TEST_MODULE rotbeam distribution
+#include <boost/test/unit_test.hpp>
+#include <regex>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "runs/progress.hpp"
+#include "runs/shards.hpp"
+
+using namespace rotbeam;
+using namespace rotbeam::cli;
+
+BOOST_AUTO_TEST_SUITE(shards)
+
+BOOST_AUTO_TEST_CASE(parse_shard_accepts_i_of_n_and_refuses_the_rest) {
+    const Shard s = parse_shard("suite", "2/3");
+    BOOST_TEST(s.index == 2);
+    BOOST_TEST(s.count == 3);
+    for (const char* bad : {"", "3", "0/3", "4/3", "1/0", "a/3", "1/3x", "-1/3", "1.5/3", "/3"})
+        BOOST_CHECK_THROW(parse_shard("suite", bad), InputError);
+}
+
+// LPT on a case whose optimum is known by hand: {7, 5, 4, 3, 3, 2} on two machines. LPT gives
+// 7+3+2 = 12 and 5+4+3 = 12 — the optimum (24 / 2), every item once.
+BOOST_AUTO_TEST_CASE(longest_first_balances_a_hand_checked_case) {
+    const std::vector<double> seconds = {3, 7, 2, 5, 3, 4};
+    const std::vector<int> shard = assign_longest_first(seconds, 2);
+    double load[2] = {0, 0};
+    for (size_t i = 0; i < seconds.size(); ++i) load[shard[i]] += seconds[i];
+    BOOST_TEST(load[0] == 12.0);
+    BOOST_TEST(load[1] == 12.0);
+    BOOST_TEST(shard[1] == 0);  // the longest item goes to the first shard
+}
+
+// Graham's bound: LPT's make-span ≤ (4/3 − 1/(3N)) × optimum ≤ (4/3) × max(mean load, longest
+// item); checked on a deterministic pseudo-random set, with every item in exactly one shard, and
+// the split the same when computed again (no state between calls).
+BOOST_AUTO_TEST_CASE(longest_first_is_deterministic_and_within_grahams_bound) {
+    std::vector<double> seconds;
+    unsigned x = 12345;
+    for (int i = 0; i < 113; ++i) {
+        x = x * 1103515245u + 12345u;
+        seconds.push_back(0.01 + (x >> 16) % 1000 / 100.0);
+    }
+    for (int n : {1, 2, 3, 7, 200}) {
+        const std::vector<int> a = assign_longest_first(seconds, n);
+        BOOST_TEST(a == assign_longest_first(seconds, n));
+        std::vector<double> load(n, 0.0);
+        double total = 0.0, longest = 0.0;
+        for (size_t i = 0; i < seconds.size(); ++i) {
+            BOOST_TEST((a[i] >= 0 && a[i] < n));
+            load[a[i]] += seconds[i];
+            total += seconds[i];
+            longest = std::max(longest, seconds[i]);
+        }
+        const double lower_bound = std::max(total / n, longest);  // no split does better
+        const double makespan = *std::max_element(load.begin(), load.end());
+        BOOST_TEST(makespan <= (4.0 / 3.0 - 1.0 / (3.0 * n)) * lower_bound + 1e-9);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(expected_seconds_prefers_measurements_and_scales_the_model) {
+    // Items 0 and 1 measured at twice their modelled cost: the model is scaled by 2 for item 2.
+    const std::vector<double> e = expected_seconds({1.0, 3.0, 5.0}, {2.0, 6.0, std::nullopt});
+    BOOST_TEST(e[0] == 2.0);
+    BOOST_TEST(e[1] == 6.0);
+    BOOST_TEST(e[2] == 10.0);
+    const std::vector<double> none = expected_seconds({1.0, 3.0}, {std::nullopt, std::nullopt});
+    BOOST_TEST(none[1] == 3.0);
+}
+
+// FNV-1a 64 of "a" is af63dc4c8601ec8c (the published test vector of the FNV reference code).
+BOOST_AUTO_TEST_CASE(stable_hash_is_fnv1a) {
+    BOOST_TEST(stable_hash("") == "cbf29ce484222325");
+    BOOST_TEST(stable_hash("a") == "af63dc4c8601ec8c");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(progress)
+
+namespace {
+
+ProgressOptions log_options(double& now, double interval) {
+    ProgressOptions o;
+    o.terminal = false;
+    o.interval_seconds = interval;
+    o.clock = [&now] { return now; };
+    o.ticker = false;
+    return o;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+// Not a terminal: one plain line at the first event, then at most one per interval however many
+// items start and finish, each with done/total, the current item, the time spent and left.
+BOOST_AUTO_TEST_CASE(log_lines_come_at_most_once_per_interval_with_every_fact) {
+    double now = 0.0;
+    std::ostringstream out;
+    {
+        Progress p("rotbeam suite", 40, out, log_options(now, 10.0));
+        for (int i = 0; i < 40; ++i) {
+            const std::string item = "run-" + std::to_string(i);
+            p.started(item);
+            now += 0.75;  // 30 s in all: lines at 0, 10.5 (the first event ≥ 10 s later), 21
+            p.finished(item);
+            p.poll();
+        }
+    }
+    const std::vector<std::string> lines = lines_of(out.str());
+    BOOST_TEST(lines.size() == 3u);
+    const std::regex format(
+        "rotbeam suite: [0-9]+/40 done(, running [a-z0-9-]+( \\(\\+[0-9]+ more\\))?)?, "
+        "[0-9]+ s elapsed, (about [0-9]+ s left( \\(expected\\))?|time left not yet known|"
+        "nothing left)");
+    for (const std::string& line : lines) BOOST_TEST(std::regex_match(line, format), line);
+    BOOST_TEST(lines[0] ==
+               "rotbeam suite: 0/40 done, running run-0, 0 s elapsed, time left not "
+               "yet known");
+    // At 10.5 s the 14th item ends: 0.75 s each, 26 left: about 19.5 s, printed rounded.
+    BOOST_TEST(lines[1] == "rotbeam suite: 14/40 done, 11 s elapsed, about 20 s left");
+}
+
+// A long item with nothing starting or ending: the ticker's polls still print, once per interval.
+BOOST_AUTO_TEST_CASE(polls_print_during_a_long_item) {
+    double now = 0.0;
+    std::ostringstream out;
+    Progress p("rotbeam study", 2, out, log_options(now, 10.0));
+    p.started("convergence");
+    for (int second = 1; second <= 35; ++second) {
+        now = second;
+        p.poll();
+    }
+    const std::vector<std::string> lines = lines_of(out.str());
+    BOOST_TEST(lines.size() == 4u);  // at 0, 10, 20, 30 s
+    BOOST_TEST(lines[3] ==
+               "rotbeam study: 0/2 done, running convergence, 30 s elapsed, time "
+               "left not yet known");
+}
+
+// With the items' expected costs, the time left follows the cost left, not the item count.
+BOOST_AUTO_TEST_CASE(time_left_follows_the_cost_when_known) {
+    double now = 0.0;
+    std::ostringstream out;
+    Progress p("rotbeam suite", 3, out, log_options(now, 10.0));
+    p.set_total_cost(10.0);
+    p.started("long");
+    now = 8.0;
+    p.finished("long", 8.0);  // 8 of 10 cost units in 8 s: about 2 s left
+    BOOST_TEST(p.line() == "rotbeam suite: 1/3 done, 8 s elapsed, about 2 s left");
+}
+
+// Before any item has finished, the expected cost (in seconds) gives the estimate.
+BOOST_AUTO_TEST_CASE(time_left_before_the_first_item_is_the_expected_cost) {
+    double now = 0.0;
+    std::ostringstream out;
+    Progress p("rotbeam suite", 1, out, log_options(now, 10.0));
+    p.set_total_cost(120.0);
+    p.started("study speed-accuracy");
+    now = 30.0;
+    BOOST_TEST(p.line() ==
+               "rotbeam suite: 0/1 done, running study speed-accuracy, 30 s elapsed, "
+               "about 1 min 30 s left (expected)");
+}
+
+// On a terminal the line is redrawn in place: carriage return, the line, clear to its end.
+BOOST_AUTO_TEST_CASE(terminal_redraws_one_line) {
+    double now = 0.0;
+    std::ostringstream out;
+    {
+        ProgressOptions o = log_options(now, 10.0);
+        o.terminal = true;
+        Progress p("rotbeam bench", 1, out, o);
+        p.started("roll-up");
+        p.finished("roll-up");
+    }
+    const std::string text = out.str();
+    BOOST_TEST(std::count(text.begin(), text.end(), '\n') == 1);  // only the final newline
+    BOOST_TEST(text.find("\r") == 0u);
+    BOOST_TEST(text.find("rotbeam bench: 1/1 done, 0 s elapsed, nothing left\033[K\r\n") !=
+               std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(human_seconds_reads_like_a_clock) {
+    BOOST_TEST(human_seconds(42.4) == "42 s");
+    BOOST_TEST(human_seconds(185) == "3 min 05 s");
+    BOOST_TEST(human_seconds(3720) == "1 h 02 min");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
