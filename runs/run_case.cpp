@@ -90,7 +90,8 @@ std::string kinematics_message(const Model& model, const KinematicStop& stop) {
 void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
     result["dofs"] = problem->size();
-    const StaticRecording recording{.steps = true, .convergence = true, .kinematic_check = true};
+    const StaticRecording recording{
+        .steps = true, .convergence = true, .kinematic_check = true, .frames = true};
     const StaticSolve solve = solve_static(model, *problem, model.analysis.statics.load_factors,
                                            recording, trace, result);
     result["counters"] = counters_json(problem->counters());

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "arguments.hpp"
@@ -16,9 +17,11 @@
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
 #include "runs/continuum_json.hpp"
+#include "runs/frame_recorder.hpp"
 #include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
 #include "runs/steps_csv.hpp"
+#include "runs/vtk_output.hpp"
 #include "study_commands.hpp"
 
 namespace rotbeam::cli {
@@ -246,6 +249,31 @@ void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
     }
 }
 
+// What --vtk cannot write, refused before the run.
+void check_vtk_request(const ParsedArguments& a, const Model& model) {
+    if (!a.has("vtk")) return;
+    if (model.analysis.accuracy > 0.0) {
+        throw InputError(
+            "run: --vtk: not with accuracy control (analysis.accuracy or --accuracy), whose "
+            "attempts are several runs; run the chosen discretization without it");
+    }
+    if (model.discretization.formulation == Formulation::mixed &&
+        model.analysis.kind != AnalysisKind::static_) {
+        throw InputError(
+            "run: --vtk: the mixed formulation gives node frames for static analyses only");
+    }
+}
+
+// The recorded frames of every step (or mode) the result reports: none of a run whose steps were
+// dropped (time limit, non-finite values).
+void write_vtk_files(const std::string& dir, const Model& model, const nlohmann::json& result,
+                     std::vector<FrameSnapshot> frames) {
+    const size_t reported =
+        result.contains("modes") ? result["modes"].size() : result["steps"].size();
+    frames.resize(std::min(frames.size(), reported));
+    write_vtk(dir, model, result, frames);
+}
+
 }  // namespace
 
 int command_list(const Args& args) {
@@ -302,6 +330,10 @@ int command_run(const Args& args) {
          kSetOption,
          {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
          {"json", "FILE", "write the result JSON to FILE"},
+         {"vtk", "DIR",
+          "write the deformed line and section frames of every load step, output time or mode "
+          "as VTK files and DIR/<case>_<rotation>_<formulation>.pvd for ParaView "
+          "(docs/paraview-output.md)"},
          {"quiet", "", "print nothing on success"},
          {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
          {"time-limit", "SECONDS",
@@ -333,18 +365,27 @@ int command_run(const Args& args) {
             "run: --estimate off: accuracy control (analysis.accuracy or --accuracy) needs the "
             "error estimate");
     }
+    check_vtk_request(a, model);
     const RunRequest request{path, model, a.has("trace-newton"), limit};
     nlohmann::json result;
+    FrameRecorder frames;
     if (model.analysis.accuracy > 0.0) {
         result = run_to_accuracy(request);
-    } else if (estimate == "on") {
-        result = run_case(request);
-        add_run_estimate(request, result);
     } else {
-        result = run_case(request);
-        result["estimate"] = estimate_off();
+        {
+            // The frames of the run itself, not of the companion runs of its estimate.
+            std::optional<ScopedFrameRecorder> recording;
+            if (a.has("vtk")) recording.emplace(frames);
+            result = run_case(request);
+        }
+        if (estimate == "on") {
+            add_run_estimate(request, result);
+        } else {
+            result["estimate"] = estimate_off();
+        }
     }
     write_outputs(a, result);
+    if (const auto dir = a.value("vtk")) write_vtk_files(*dir, model, result, frames.snapshots);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;
 }
