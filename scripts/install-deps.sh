@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages rotbeam needs, and nothing when they are all present.
 # clang-14, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and llvm-14 (llvm-cov) are for
-# the fuzz preset (docs/fuzzing.md). Idempotent: `apt-get update` runs only when something must be installed.
+# the fuzz preset (docs/fuzzing.md); python3-meshio reads the ParaView files back in a test. Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libgsl-dev libsundials-dev libsuitesparse-dev
   libboost-test-dev libyaml-cpp-dev nlohmann-json3-dev libspectra-dev
-  gnuplot-nox clang-tidy
+  gnuplot-nox clang-tidy python3-meshio
   clang-14 libclang-rt-14-dev llvm-14
 )
 
