@@ -59,6 +59,7 @@ nlohmann::json result_header(const RunRequest& request) {
             {"message", ""},
             {"wall_seconds", 0.0},
             {"version", kGitDescribe},
+            {"schema_version", kSchemaVersion},
             {"options",
              {{"interpolation", choice_name(d.displacement.interpolation)},
               {"update", choice_name(d.displacement.update)},

@@ -485,6 +485,7 @@ nlohmann::json study_joined_beam_agreement(const StudyOptions& o) {
     md << "![joined-beam-agreement.png](joined-beam-agreement.png)\n\n"
           "![joined-beam-agreement-history.png](joined-beam-agreement-history.png)\n\n";
     write_text(o, "study-joined-beam-agreement.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-joined-beam-agreement.json", out.dump(1) + "\n");
     return out;
 }

@@ -31,7 +31,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
-                            "override any case key, validated like the file", true};
+                            "override any case key, validated like the file (default: none)", true};
 
 // Whether the key path `key` is one `pattern` stands for (a `*` segment matches any one segment).
 bool key_matches(const std::string& pattern, const std::string& key) {
@@ -322,28 +322,34 @@ int command_run(const Args& args) {
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
         "result (docs/architecture.md). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME",
-          "quaternion | wiener-milenkovic | rodrigues | rotation-vector | euler-angles"},
-         {"formulation", "NAME", "displacement | mixed"},
-         {"elements", "N", "elements of every member (members.*.elements)"},
-         {"order", "P", "element order (displacement formulation)"},
-         {"interpolation", "NAME", "relative | direct"},
+          "quaternion | wiener-milenkovic | rodrigues | rotation-vector | euler-angles (default: "
+          "the case's discretization.rotation)"},
+         {"formulation", "NAME",
+          "displacement | mixed (default: the case's discretization.formulation)"},
+         {"elements", "N", "elements of every member (default: the case's members.*.elements)"},
+         {"order", "P",
+          "element order, displacement formulation (default: the case's discretization.order)"},
+         {"interpolation", "NAME",
+          "relative | direct (default: the case's discretization.interpolation)"},
          kSetOption,
-         {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
-         {"json", "FILE", "write the result JSON to FILE"},
+         {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json (default: not written)"},
+         {"json", "FILE", "write the result JSON to FILE (default: not written)"},
          {"vtk", "DIR",
           "write the deformed line and section frames of every load step, output time or mode "
           "as VTK files and DIR/<case>_<rotation>_<formulation>.pvd for ParaView "
-          "(docs/paraview-output.md)"},
+          "(docs/paraview-output.md; default: not written)"},
          {"quiet", "", "print nothing on success"},
          {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
          {"time-limit", "SECONDS",
-          "stop the run after this wall-clock time with the status time-limit"},
+          "stop the run after this wall-clock time with the status time-limit (default: no "
+          "limit)"},
          {"estimate", "on|off",
           "estimate the discretization error with companion runs (default: the case's "
           "analysis.estimate, on; docs/error-estimates.md)"},
          {"accuracy", "TOL",
           "refine the discretization until every estimate is <= TOL/2 of its scale, 1e-12 <= "
-          "TOL < 1 (analysis.accuracy; static and modal; docs/accuracy-control.md)"}}};
+          "TOL < 1 (static and modal; docs/accuracy-control.md; default: the case's "
+          "analysis.accuracy, none)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -399,8 +405,8 @@ int command_reference(const Args& args) {
         "Continuum reference solution of a static single-member case with tip loads (shooting on "
         "the Cosserat rod equations with GSL), in the same JSON contract as `run`.",
         {kSetOption,
-         {"json", "FILE", "write the result JSON to FILE"},
-         {"out", "DIR", "write DIR/<case>_continuum.json"},
+         {"json", "FILE", "write the result JSON to FILE (default: not written)"},
+         {"out", "DIR", "write DIR/<case>_continuum.json (default: not written)"},
          {"quiet", "", "print nothing"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
@@ -433,7 +439,7 @@ int command_study(const Args& args) {
         "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error "
         "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
         "(study-NAME.md, .json, figures).",
-        {{"json", "FILE", "write the study JSON to FILE (rotations)"},
+        {{"json", "FILE", "write the study JSON to FILE (rotations; default: standard output)"},
          {"samples", "N", "angles in the sweep, 2 to 20000 (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},
