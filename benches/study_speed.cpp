@@ -12,6 +12,7 @@
 
 #include "bench.hpp"
 #include "cases/loader/case_loader.hpp"
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "runs/catalog.hpp"
 #include "runs/timing.hpp"
@@ -285,6 +286,7 @@ nlohmann::json study_speed_accuracy(const StudyOptions& o) {
     out["counters"] = counters_table(o, md);
     out["assembly_savings"] = assembly_savings(o, md);
     write_text(o, "study-speed-accuracy.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-speed-accuracy.json", out.dump(1) + "\n");
     return out;
 }

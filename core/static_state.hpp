@@ -62,6 +62,18 @@ class StaticState {
         Vec3 turn = Vec3::Zero();
     };
     virtual std::vector<RotationStation> rotation_stations() const { return {}; }
+    // The state at every node of every member in arc-length order (the shared end node once):
+    // arc length, reference position, displacement and rotation R^c R^rᵀ, for the ParaView
+    // output (runs/vtk_output.hpp), which adds the reference frame R^r(s). Empty when the
+    // formulation does not provide them.
+    struct NodeFrame {
+        int member = -1;
+        double s = 0.0;
+        Vec3 reference = Vec3::Zero();
+        Vec3 displacement = Vec3::Zero();
+        Mat3 rotation = Mat3::Identity();
+    };
+    virtual std::vector<NodeFrame> node_frames() const { return {}; }
 };
 
 // A formulation set up for a static analysis of a model: solved as a StaticSystem, observed as a

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/results.hpp"
 #include "core/so3.hpp"
 #include "parameterizations/registry.hpp"
 
@@ -85,7 +86,9 @@ nlohmann::json rotation_study(int samples) {
     nlohmann::json angles = nlohmann::json::array();
     for (int i = 0; i < samples; ++i) angles.push_back(4.0 * kPi * i / (samples - 1));
     const Vec3 axis = study_axis();
-    nlohmann::json result = {{"axis", {axis.x(), axis.y(), axis.z()}}, {"angles", angles}};
+    nlohmann::json result = {{"schema_version", kSchemaVersion},
+                             {"axis", {axis.x(), axis.y(), axis.z()}},
+                             {"angles", angles}};
     nlohmann::json list = nlohmann::json::array();
     for_each_parameterization([&]<class P>() {
         nlohmann::json rows = nlohmann::json::array();

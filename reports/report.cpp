@@ -22,6 +22,7 @@
 #include "parameterizations/registry.hpp"
 #include "report_dynamics.hpp"
 #include "report_summary.hpp"
+#include "report_ribbon.hpp"
 #include "report_table_one.hpp"
 #include "studies/gnuplot.hpp"
 #include "studies/study_common.hpp"
@@ -267,6 +268,7 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
     }
     std::vector<Figure> figures = rollup_figures(out_dir, runs);
     for (Figure& f : rollup_shape_figures(out_dir, runs)) figures.push_back(f);
+    if (auto f = rollup_ribbon_figure(out_dir, runs)) figures.push_back({f->file, f->caption});
     for (Figure& f : rotation_study_figures(out_dir)) figures.push_back(f);
     md << "\n## Figures\n\n";
     if (figures.empty()) md << "(no figures: gnuplot missing or no data)\n";

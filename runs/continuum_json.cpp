@@ -22,6 +22,7 @@ nlohmann::json continuum_result_json(const Model& model, const std::string& case
                              {"status", outcome.status},
                              {"message", outcome.message},
                              {"version", kGitDescribe},
+                             {"schema_version", kSchemaVersion},
                              {"steps", nlohmann::json::array()}};
     for (const ContinuumStep& step : outcome.steps) {
         const std::vector<Vec3> continued =

@@ -59,6 +59,7 @@ nlohmann::json result_header(const RunRequest& request) {
             {"message", ""},
             {"wall_seconds", 0.0},
             {"version", kGitDescribe},
+            {"schema_version", kSchemaVersion},
             {"options",
              {{"interpolation", choice_name(d.displacement.interpolation)},
               {"update", choice_name(d.displacement.update)},
@@ -90,7 +91,8 @@ std::string kinematics_message(const Model& model, const KinematicStop& stop) {
 void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
     result["dofs"] = problem->size();
-    const StaticRecording recording{.steps = true, .convergence = true, .kinematic_check = true};
+    const StaticRecording recording{
+        .steps = true, .convergence = true, .kinematic_check = true, .frames = true};
     const StaticSolve solve = solve_static(model, *problem, model.analysis.statics.load_factors,
                                            recording, trace, result);
     result["counters"] = counters_json(problem->counters());

@@ -12,6 +12,7 @@
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "frame_recorder.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
@@ -47,6 +48,23 @@ nlohmann::json mode_json(const Model& model, const form::Mesh& mesh, const VecX&
     return {{"frequency_hz", frequency_hz}, {"growth_rate", 0.0}, {"points", points}};
 }
 
+// A mode's [u; θ] amplitude at every node, in the order of node_frames(), normalized like the
+// named points' (largest component 1); zero at a support.
+std::vector<Vec6> node_amplitudes(const form::Mesh& mesh, const VecX& shape) {
+    const double peak = shape.cwiseAbs().maxCoeff();
+    const VecX v = peak > 0.0 ? VecX(shape / peak) : shape;
+    std::vector<Vec6> out;
+    int member = -1;
+    for (const form::MeshElement& e : mesh.elements) {
+        for (size_t j = e.member != member ? 0 : 1; j < e.nodes.size(); ++j) {
+            const int dof = mesh.nodes[static_cast<size_t>(e.nodes[j])].dof;
+            out.push_back(dof < 0 ? Vec6(Vec6::Zero()) : Vec6(v.segment<6>(dof)));
+        }
+        member = e.member;
+    }
+    return out;
+}
+
 template <class P>
 void modal(const Model& model, bool trace, nlohmann::json& result) {
     form::DisplacementStatics<P> problem(model);
@@ -76,6 +94,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
             nodes.push_back({n.x0, n.dof < 0 ? Vec3::Zero() : Vec3(s.shapes[i].segment<3>(n.dof))});
         }
         result["modes"].back()["stations"] = station_displacements(model, nodes);
+        if (frames_recorded()) record_frames(problem, node_amplitudes(problem.mesh(), s.shapes[i]));
         checked.push_back({p.frequency_hz, p.growth_rate,
                            std::complex<double>(p.growth_rate, 2.0 * kPi * p.frequency_hz),
                            p.check});
@@ -148,6 +167,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
             const form::BeamEnergy e = problem.energy();
             step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};
             result["steps"].push_back(std::move(step));
+            record_frames(problem.statics());
         });
     set_analysis_status(result, out.status, out.message);
     result["integrator"] = {{"scheme", "Lie-group generalized-alpha"},

@@ -4,6 +4,7 @@
 
 #include "core/errors.hpp"
 #include "core/kinsol_driver.hpp"
+#include "frame_recorder.hpp"
 #include "static_observers.hpp"
 
 namespace rotbeam {
@@ -71,6 +72,7 @@ StaticSolve solve_static(const Model& model, StaticProblem& problem,
             }
         }
         result["steps"].push_back(std::move(entry));
+        if (recording.frames) record_frames(problem);
     };
     try {
         solve.outcome = run_static(problem, load_factors, settings, on_step, solver);

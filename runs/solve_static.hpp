@@ -26,6 +26,9 @@ struct StaticRecording {
     // The kinematic check (core/kinematic_check.hpp) before the step is recorded: the first step
     // that fails it stops the solve (StaticSolve::unresolved).
     bool kinematic_check = false;
+    // A snapshot of the node frames for the ParaView output, when a recorder is installed
+    // (frame_recorder.hpp).
+    bool frames = false;
 };
 
 // The reported step that failed the kinematic check.

@@ -3,14 +3,14 @@
 # clang-14, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and llvm-14 (llvm-cov) are for
 # the fuzz preset (docs/fuzzing.md). libcmark-gfm-dev and libcmark-gfm-extensions-dev convert the
 # report's Markdown to HTML; chromium and python3-websockets run the report's browser test
-# (tests/reports/browser_check.py). Idempotent: `apt-get update` runs only when something must be installed.
+# (tests/reports/browser_check.py); python3-meshio reads the ParaView files back in a test. Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libgsl-dev libsundials-dev libsuitesparse-dev
   libboost-test-dev libyaml-cpp-dev nlohmann-json3-dev libspectra-dev
-  gnuplot-nox clang-tidy
+  gnuplot-nox clang-tidy python3-meshio
   libcmark-gfm-dev libcmark-gfm-extensions-dev
   chromium python3-websockets
   clang-14 libclang-rt-14-dev llvm-14

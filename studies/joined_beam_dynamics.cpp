@@ -245,6 +245,7 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
                                   {"extrapolation_change", ref.extrapolation_change},
                                   {"cpu_seconds", ref.cpu_seconds},
                                   {"version", ref.version},
+                                  {"schema_version", kSchemaVersion},
                                   {"status", ref.status},
                                   {"history", history_json(ref.history)}};
         write_file_atomically(file, j.dump() + "\n");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
@@ -272,6 +273,7 @@ nlohmann::json convergence_combine(const StudyOptions& o, const StudyResults& re
         }
     }
     write_text(o, "study-convergence.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-convergence.json", out.dump(1) + "\n");
     return out;
 }

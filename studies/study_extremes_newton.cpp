@@ -4,6 +4,7 @@
 // that plans the four parts' runs and assembles their sections.
 #include <cmath>
 
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_extremes.hpp"
@@ -223,6 +224,7 @@ nlohmann::json extremes_combine(const StudyOptions& o, const StudyResults& resul
     out["single_step"] = extremes_single_step(o, results, md);
     out["round_off"] = extremes_round_off(o, results, md);
     write_text(o, "study-extremes.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-extremes.json", out.dump(1) + "\n");
     return out;
 }

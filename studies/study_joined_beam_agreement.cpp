@@ -136,10 +136,16 @@ ReferenceResponse ida_response(const Combination& c, const ResponseWindow& w, do
             std::to_string(dynamic_steps(run)) + " steps)";
     if (r.status == "converged") {
         std::filesystem::create_directories(cache_dir);
-        const nlohmann::json j = {
-            {"key", key},           {"how", r.how},       {"cpu_seconds", r.cpu_seconds},
-            {"version", r.version}, {"status", r.status}, {"time", r.history.time},
-            {"x", r.history.x},     {"y", r.history.y},   {"z", r.history.z}};
+        const nlohmann::json j = {{"key", key},
+                                  {"how", r.how},
+                                  {"cpu_seconds", r.cpu_seconds},
+                                  {"version", r.version},
+                                  {"schema_version", kSchemaVersion},
+                                  {"status", r.status},
+                                  {"time", r.history.time},
+                                  {"x", r.history.x},
+                                  {"y", r.history.y},
+                                  {"z", r.history.z}};
         write_file_atomically(file, j.dump() + "\n");
     }
     return r;
@@ -485,6 +491,7 @@ nlohmann::json study_joined_beam_agreement(const StudyOptions& o) {
     md << "![joined-beam-agreement.png](joined-beam-agreement.png)\n\n"
           "![joined-beam-agreement-history.png](joined-beam-agreement-history.png)\n\n";
     write_text(o, "study-joined-beam-agreement.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-joined-beam-agreement.json", out.dump(1) + "\n");
     return out;
 }

@@ -17,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "runs/timing.hpp"
@@ -514,6 +515,7 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
         out["loads"][l.load] = l.json;
     }
     write_text(o, "study-joined-beam-dynamics.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-joined-beam-dynamics.json", out.dump(1) + "\n");
     return out;
 }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "runs/mode_matching.hpp"
@@ -296,6 +297,7 @@ nlohmann::json study_joined_beam_modal(const StudyOptions& o) {
         md << "![" << base << ".png](" << base << ".png)\n\n";
     }
     write_text(o, "study-joined-beam-modal.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-joined-beam-modal.json", out.dump(1) + "\n");
     return out;
 }

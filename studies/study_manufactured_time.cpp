@@ -12,6 +12,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "manufactured_motion_runs.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
@@ -278,6 +279,7 @@ nlohmann::json study_manufactured_time(const StudyOptions& o) {
         md << "\n![" << base << "](" << base << ".png)\n";
     }
     write_text(o, "study-manufactured-time.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-manufactured-time.json", out.dump(1) + "\n");
     return out;
 }

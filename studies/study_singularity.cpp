@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "studies.hpp"
 #include "study_common.hpp"
@@ -182,8 +183,8 @@ nlohmann::json path_case(const StudyOptions& o, const PathCase& c, const StudyRe
         md << "| " << c.key << " | " << comb.label() << " | "
            << fixed_as_printed(p.reach.load_factor, 3) << " | "
            << fixed_as_printed(p.reach_angle / kPi, 2) << "π | " << p.reach.stopped << " | "
-           << sci(p.max_error) << " | " << (p.reach.stopped == "completed" ? "" : markdown_cell(message))
-           << " |\n";
+           << sci(p.max_error) << " | "
+           << (p.reach.stopped == "completed" ? "" : markdown_cell(message)) << " |\n";
         if (p.lambda.empty()) continue;
         figure.add(
             panel_of(comb),
@@ -336,6 +337,7 @@ nlohmann::json singularity_combine(const StudyOptions& o, const StudyResults& re
         md << "![" << f.get<std::string>() << "](" << f.get<std::string>() << ")\n\n";
     }
     write_text(o, "study-singularity.md", md.str());
+    out["schema_version"] = kSchemaVersion;
     write_text(o, "study-singularity.json", out.dump(1) + "\n");
     return out;
 }

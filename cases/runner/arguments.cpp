@@ -68,6 +68,10 @@ const OptionSpec* find_option(const CommandSpec& spec, const std::string& name) 
 }  // namespace
 
 ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args) {
+    if (spec_capture != nullptr) {
+        spec_capture->push_back(spec);
+        throw SpecCaptured{};
+    }
     ParsedArguments parsed;
     const std::string prefix = "rotbeam " + spec.name + ": ";
     for (size_t i = 0; i < args.size(); ++i) {
@@ -133,11 +137,13 @@ std::string help_text(const CommandSpec& spec) {
     if (!spec.positional.empty()) s << " " << spec.positional;
     if (!spec.options.empty()) s << " [options]";
     s << "\n\n" << spec.summary << "\n";
+    if (spec.min_positional > 0) s << "\narguments:\n  " << spec.positional << " (required)\n";
     if (!spec.options.empty()) s << "\noptions:\n";
     for (const OptionSpec& o : spec.options) {
         std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
         if (left.size() < 30) left.resize(30, ' ');
-        s << left << " " << o.help << (o.repeatable ? " (repeatable)" : "") << "\n";
+        s << left << " " << o.help << (o.repeatable ? " (repeatable)" : "")
+          << (o.value_name.empty() ? " (default: off)" : "") << "\n";
     }
     s << "  --help                       print this help\n";
     return s.str();

@@ -54,7 +54,16 @@ class ParsedArguments {
 };
 
 ParsedArguments parse_arguments(const CommandSpec& spec, const std::vector<std::string>& args);
+// The usage, summary and every option with its default: a flag's is "off"; a value option's help
+// says its default or "required" (tests/runner/cli_conventions.sh checks it).
 std::string help_text(const CommandSpec& spec);
+
+// Reading a command's options without running it (the completion script, completion.cpp): each
+// command declares its CommandSpec beside its code and hands it to parse_arguments first; while a
+// capture is installed, parse_arguments records the spec and throws SpecCaptured instead of
+// parsing, so the command stops there.
+struct SpecCaptured {};
+inline thread_local std::vector<CommandSpec>* spec_capture = nullptr;
 
 // The shorthand options of `run` and `check`: each stands for a --set override of one case key
 // (`*`: every member): {option without its dashes, key}.

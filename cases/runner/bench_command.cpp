@@ -246,6 +246,7 @@ int command_bench(const Args& args) {
     const int repeats = a.positive_int("bench", "repeats", kMaxRepeats).value_or(quick ? 5 : 11);
     check_target_names(a.value("targets").value_or(""));
     nlohmann::json out = {{"version", kGitDescribe},
+                          {"schema_version", kSchemaVersion},
                           {"date", utc("%Y-%m-%d %H:%M UTC")},
                           {"machine", machine_json()},
                           {"quick", quick},

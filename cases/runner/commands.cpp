@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -18,9 +19,11 @@
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
 #include "runs/continuum_json.hpp"
+#include "runs/frame_recorder.hpp"
 #include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
 #include "runs/steps_csv.hpp"
+#include "runs/vtk_output.hpp"
 #include "study_commands.hpp"
 
 namespace rotbeam::cli {
@@ -30,7 +33,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const OptionSpec kSetOption{"set", "KEY.PATH=VALUE",
-                            "override any case key, validated like the file", true};
+                            "override any case key, validated like the file (default: none)", true};
 
 // Whether the key path `key` is one `pattern` stands for (a `*` segment matches any one segment).
 bool key_matches(const std::string& pattern, const std::string& key) {
@@ -248,6 +251,31 @@ void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
     }
 }
 
+// What --vtk cannot write, refused before the run.
+void check_vtk_request(const ParsedArguments& a, const Model& model) {
+    if (!a.has("vtk")) return;
+    if (model.analysis.accuracy > 0.0) {
+        throw InputError(
+            "run: --vtk: not with accuracy control (analysis.accuracy or --accuracy), whose "
+            "attempts are several runs; run the chosen discretization without it");
+    }
+    if (model.discretization.formulation == Formulation::mixed &&
+        model.analysis.kind != AnalysisKind::static_) {
+        throw InputError(
+            "run: --vtk: the mixed formulation gives node frames for static analyses only");
+    }
+}
+
+// The recorded frames of every step (or mode) the result reports: none of a run whose steps were
+// dropped (time limit, non-finite values).
+void write_vtk_files(const std::string& dir, const Model& model, const nlohmann::json& result,
+                     std::vector<FrameSnapshot> frames) {
+    const size_t reported =
+        result.contains("modes") ? result["modes"].size() : result["steps"].size();
+    frames.resize(std::min(frames.size(), reported));
+    write_vtk(dir, model, result, frames);
+}
+
 }  // namespace
 
 int command_list(const Args& args) {
@@ -296,24 +324,34 @@ int command_run(const Args& args) {
         "Run a case with one parameterization and formulation. Prints a summary; --json writes the "
         "result (docs/architecture.md). Exit 0 whatever the solver status, 2 on bad input.",
         {{"rotation", "NAME",
-          "quaternion | wiener-milenkovic | rodrigues | rotation-vector | euler-angles"},
-         {"formulation", "NAME", "displacement | mixed"},
-         {"elements", "N", "elements of every member (members.*.elements)"},
-         {"order", "P", "element order (displacement formulation)"},
-         {"interpolation", "NAME", "relative | direct"},
+          "quaternion | wiener-milenkovic | rodrigues | rotation-vector | euler-angles (default: "
+          "the case's discretization.rotation)"},
+         {"formulation", "NAME",
+          "displacement | mixed (default: the case's discretization.formulation)"},
+         {"elements", "N", "elements of every member (default: the case's members.*.elements)"},
+         {"order", "P",
+          "element order, displacement formulation (default: the case's discretization.order)"},
+         {"interpolation", "NAME",
+          "relative | direct (default: the case's discretization.interpolation)"},
          kSetOption,
-         {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json"},
-         {"json", "FILE", "write the result JSON to FILE"},
+         {"out", "DIR", "write DIR/<case>_<rotation>_<formulation>.json (default: not written)"},
+         {"json", "FILE", "write the result JSON to FILE (default: not written)"},
+         {"vtk", "DIR",
+          "write the deformed line and section frames of every load step, output time or mode "
+          "as VTK files and DIR/<case>_<rotation>_<formulation>.pvd for ParaView "
+          "(docs/paraview-output.md; default: not written)"},
          {"quiet", "", "print nothing on success"},
          {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
          {"time-limit", "SECONDS",
-          "stop the run after this wall-clock time with the status time-limit"},
+          "stop the run after this wall-clock time with the status time-limit (default: no "
+          "limit)"},
          {"estimate", "on|off",
           "estimate the discretization error with companion runs (default: the case's "
           "analysis.estimate, on; docs/error-estimates.md)"},
          {"accuracy", "TOL",
           "refine the discretization until every estimate is <= TOL/2 of its scale, 1e-12 <= "
-          "TOL < 1 (analysis.accuracy; static and modal; docs/accuracy-control.md)"}}};
+          "TOL < 1 (static and modal; docs/accuracy-control.md; default: the case's "
+          "analysis.accuracy, none)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -335,18 +373,27 @@ int command_run(const Args& args) {
             "run: --estimate off: accuracy control (analysis.accuracy or --accuracy) needs the "
             "error estimate");
     }
+    check_vtk_request(a, model);
     const RunRequest request{path, model, a.has("trace-newton"), limit};
     nlohmann::json result;
+    FrameRecorder frames;
     if (model.analysis.accuracy > 0.0) {
         result = run_to_accuracy(request);
-    } else if (estimate == "on") {
-        result = run_case(request);
-        add_run_estimate(request, result);
     } else {
-        result = run_case(request);
-        result["estimate"] = estimate_off();
+        {
+            // The frames of the run itself, not of the companion runs of its estimate.
+            std::optional<ScopedFrameRecorder> recording;
+            if (a.has("vtk")) recording.emplace(frames);
+            result = run_case(request);
+        }
+        if (estimate == "on") {
+            add_run_estimate(request, result);
+        } else {
+            result["estimate"] = estimate_off();
+        }
     }
     write_outputs(a, result);
+    if (const auto dir = a.value("vtk")) write_vtk_files(*dir, model, result, frames.snapshots);
     if (!a.has("quiet")) print_run_summary(result, std::cout);
     return 0;
 }
@@ -360,8 +407,8 @@ int command_reference(const Args& args) {
         "Continuum reference solution of a static single-member case with tip loads (shooting on "
         "the Cosserat rod equations with GSL), in the same JSON contract as `run`.",
         {kSetOption,
-         {"json", "FILE", "write the result JSON to FILE"},
-         {"out", "DIR", "write DIR/<case>_continuum.json"},
+         {"json", "FILE", "write the result JSON to FILE (default: not written)"},
+         {"out", "DIR", "write DIR/<case>_continuum.json (default: not written)"},
          {"quiet", "", "print nothing"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
@@ -394,7 +441,7 @@ int command_study(const Args& args) {
         "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error "
         "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
         "(study-NAME.md, .json, figures).",
-        {{"json", "FILE", "write the study JSON to FILE (rotations)"},
+        {{"json", "FILE", "write the study JSON to FILE (rotations; default: standard output)"},
          {"samples", "N", "angles in the sweep, 2 to 20000 (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},
          {"quick", "", "the static studies' smaller variant (CI smoke test)"},

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct ReferenceValue;
 namespace rotbeam::cli {
 
 using Args = std::vector<std::string>;
+using Command = int (*)(const Args&);
 
 int command_list(const Args& args);
 int command_check(const Args& args);
@@ -35,5 +37,7 @@ int command_reference(const Args& args);
 int command_study(const Args& args);
 int command_bench(const Args& args);   // bench_command.cpp
 int command_import(const Args& args);  // import_command.cpp
+// completion.cpp: `rotbeam completion bash`, from `commands` (name → command) and their options.
+int command_completion_with(const Args& args, const std::map<std::string, Command>& commands);
 
 }  // namespace rotbeam::cli

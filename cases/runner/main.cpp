@@ -12,15 +12,19 @@
 #include "cases/loader/yaml_reader.hpp"
 #include "commands.hpp"
 #include "core/errors.hpp"
+#include "core/results.hpp"
 #include "core/version.hpp"
 #include "distributed.hpp"
+#include "dependency_versions.hpp"
 #include "interrupt.hpp"
 #include "runs/timing.hpp"
 
 namespace {
 
 using rotbeam::cases::one_line;  // a message quoting what the user wrote stays one line
-using Command = int (*)(const rotbeam::cli::Args&);
+using rotbeam::cli::Command;
+
+int command_completion(const rotbeam::cli::Args& args);
 
 const std::map<std::string, std::pair<Command, const char*>>& commands() {
     using namespace rotbeam::cli;
@@ -38,8 +42,15 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
           "run a study (rotations, convergence, singularity, extremes, speed-accuracy, "
           "joined-beam-modal, joined-beam-dynamics)"}},
         {"bench", {command_bench, "time-to-solution benchmark (static and joined-beam targets)"}},
+        {"completion", {command_completion, "print the bash completion script"}},
     };
     return table;
+}
+
+int command_completion(const rotbeam::cli::Args& args) {
+    std::map<std::string, Command> table;
+    for (const auto& [name, entry] : commands()) table[name] = entry.first;
+    return rotbeam::cli::command_completion_with(args, table);
 }
 
 void print_usage(std::ostream& os) {
@@ -68,7 +79,9 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (all[0] == "--version") {
-        std::cout << "rotbeam " << rotbeam::kGitDescribe << "\n";
+        std::cout << "rotbeam " << rotbeam::kGitDescribe << " (JSON schema_version "
+                  << rotbeam::kSchemaVersion << ")\nbuilt with:\n"
+                  << rotbeam::cli::dependency_versions();
         return 0;
     }
     const auto it = commands().find(all[0]);

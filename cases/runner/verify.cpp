@@ -320,7 +320,7 @@ int command_verify(const Args& args) {
         "combination its applies_to selects and compare with its tolerance; check every expected "
         "stop. Prints a table; exit 1 on any gated miss (an unavailable result is one) or a "
         "changed stop.",
-        {{"json", "FILE", "also write the table as JSON"}}};
+        {{"json", "FILE", "also write the table as JSON (default: not written)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);

@@ -33,7 +33,7 @@ namespace rotbeam::form {
 
 template <param::RotationParameterization P>
 class DisplacementStatics : public StaticProblem {
-public:
+  public:
     using Params = param::Params<P::kSize>;
 
     explicit DisplacementStatics(const Model& model);
@@ -123,6 +123,19 @@ public:
         return out;
     }
 
+    // Every node of every element in arc-length order (the shared end node once).
+    std::vector<NodeFrame> node_frames() const override {
+        std::vector<NodeFrame> out;
+        for (const MeshElement& e : mesh_.elements) {
+            for (size_t j = out.empty() || out.back().member != e.member ? 0 : 1;
+                 j < e.nodes.size(); ++j) {
+                const int n = e.nodes[j];
+                out.push_back({e.member, e.node_s[j], mesh_.nodes[n].x0, u_[n], P::matrix(p_[n])});
+            }
+        }
+        return out;
+    }
+
     const Mesh& mesh() const { return mesh_; }
     // Nodal state (relative to the reference configuration), for tests and output.
     const Vec3& node_displacement(int node) const { return u_[node]; }
@@ -130,7 +143,7 @@ public:
     double force_scale() const { return force_scale_; }
     double length_scale() const { return length_scale_; }
 
-private:
+  private:
     struct NodeLoad {
         int node = -1;
         Vec3 force = Vec3::Zero();
@@ -192,7 +205,8 @@ private:
     Mat3 R0_ = Mat3::Identity();  // relative: the element's reference-node rotation
     bool relative_ = true;
     bool rescale_nodes_ = false;
-    // The case asked for rescaling but `direct` interpolation cannot do it (describe_state says so).
+    // The case asked for rescaling but `direct` interpolation cannot do it (describe_state says
+    // so).
     bool rescale_refused_ = false;
     // update: additive — the Newton unknowns of a node's rotation are δp (p ← p + δp) and the
     // Jacobian's rotation columns are multiplied by H_s(p) (δψ = H_s(p) δp); three-parameter

@@ -108,8 +108,10 @@ void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis&
         const double s0 = L * k / m.elements;
         const double s1 = L * (k + 1) / m.elements;
         std::vector<int> nodes{left};
+        std::vector<double> node_s{s0};
         for (int j = 1; j < p; ++j) {
             const double s = s0 + 0.5 * (basis.nodes()[j] + 1.0) * (s1 - s0);
+            node_s.push_back(s);
             MeshNode n;
             n.x0 = g.position(s);
             nodes.push_back(static_cast<int>(mesh.nodes.size()));
@@ -124,8 +126,10 @@ void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis&
             mesh.nodes.push_back(n);
         }
         nodes.push_back(left);
+        node_s.push_back(s1);
         MeshElement e = make_element(model, member, g, s0, s1, basis, rule);
         e.nodes = std::move(nodes);
+        e.node_s = std::move(node_s);
         // x^r′ from the nodal reference positions (seed 000's equivalent strain): with u
         // interpolated by the same functions, a rigid motion is strain-free exactly.
         for (size_t q = 0; q < e.qp.size(); ++q) {
@@ -144,8 +148,8 @@ void apply_constraints(Mesh& mesh, const Model& model) {
                              ? mesh.point_node[c.point]
                              : -1;
         if (node < 0) throw InputError("constraint on a point that no member reaches");
-        if (fixed[node]) throw InputError("point '" + model.points[c.point].name +
-                                          "' is constrained twice");
+        if (fixed[node])
+            throw InputError("point '" + model.points[c.point].name + "' is constrained twice");
         fixed[node] = true;
         PrescribedMotion pm;
         pm.node = node;
@@ -168,8 +172,7 @@ int quadrature_point_count(const Discretization& d, bool& gll) {
     const int p = d.order;
     gll = d.quadrature == Quadrature::gll;
     int n = p + 1;
-    if (d.quadrature == Quadrature::reduced ||
-        (d.quadrature == Quadrature::automatic && p <= 2)) {
+    if (d.quadrature == Quadrature::reduced || (d.quadrature == Quadrature::automatic && p <= 2)) {
         n = p;
     }
     if (d.quadrature_points > 0) n = d.quadrature_points;

@@ -28,20 +28,21 @@ struct MeshNode {
 };
 
 struct QuadraturePoint {
-    double weight = 0.0;         // Gauss weight × ds/dξ
-    double s = 0.0;              // arc length along the member (load fields)
+    double weight = 0.0;           // Gauss weight × ds/dξ
+    double s = 0.0;                // arc length along the member (load fields)
     Vec3 x0_prime = Vec3::Zero();  // x^r′ = Σ N_j′ x^r_j (interpolated from the nodes)
     Mat3 Rr = Mat3::Identity();    // R^r(s)
     Mat6 C_star = Mat6::Zero();    // material-axis stiffness
     double mass = 0.0;             // mass per unit length (gravity), 0 when no mass is given
     Vec3 eta_star = Vec3::Zero();  // centre of mass offset in material axes
-    Mat6 M_star = Mat6::Zero();    // material-axis 6×6 mass [m I, m η̃ᵀ; m η̃, ρ], zero when none
-    Mat6 D_star = Mat6::Zero();    // material-axis damping μ C* (seed 000 Eq. 10), zero when none
+    Mat6 M_star = Mat6::Zero();  // material-axis 6×6 mass [m I, m η̃ᵀ; m η̃, ρ], zero when none
+    Mat6 D_star = Mat6::Zero();  // material-axis damping μ C* (seed 000 Eq. 10), zero when none
 };
 
 struct MeshElement {
     int member = -1;
-    std::vector<int> nodes;              // p+1 global node indices
+    std::vector<int> nodes;      // p+1 global node indices
+    std::vector<double> node_s;  // their arc lengths along the member
     std::vector<QuadraturePoint> qp;
     MatX N;   // N(j, q): shape function j at quadrature point q (a column per point)
     MatX dN;  // dN_j/ds (per unit reference arc length), same layout

@@ -79,6 +79,7 @@ class MixedStatics : public StaticProblem {
     double max_rotation_angle() const;
     std::vector<SectionResultants> section_resultants() const override;
     std::vector<RotationStation> rotation_stations() const override;
+    std::vector<NodeFrame> node_frames() const override;
 
     const MixedLayout& layout() const { return layout_; }
     const MixedNumbering& numbering() const { return numbering_; }

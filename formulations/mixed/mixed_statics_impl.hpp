@@ -229,6 +229,26 @@ std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations()
     return out;
 }
 
+// Start node, then per element its end node; the elements of a member are of equal arc length,
+// so an end node's arc length is twice the mid-point's minus the start node's.
+template <param::RotationParameterization P>
+std::vector<StaticProblem::NodeFrame> MixedStatics<P>::node_frames() const {
+    std::vector<NodeFrame> out;
+    Vec3 u_hat;
+    Params c_hat;
+    auto add = [&](int member, double s, int node) {
+        node_motion(node, u_hat, c_hat);
+        out.push_back({member, s, layout_.nodes[static_cast<std::size_t>(node)].reference, u_hat,
+                       P::matrix(c_hat)});
+    };
+    for (int e = 0; e < numbering_.element_count; ++e) {
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        if (out.empty() || out.back().member != el.member) add(el.member, 0.0, el.start_node);
+        add(el.member, 2.0 * el.s_mid - out.back().s, el.end_node);
+    }
+    return out;
+}
+
 template <param::RotationParameterization P>
 QuaternionNormDrift MixedStatics<P>::norm_drift() const
     requires(param::ParameterConstraint<P>::kRows > 0) {

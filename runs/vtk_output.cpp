@@ -1,0 +1,218 @@
+#include "vtk_output.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <sstream>
+
+#include "core/atomic_file.hpp"
+#include "core/geometry.hpp"
+#include "core/so3.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+// The section frame R R^r(s) of every node (columns d1, d2, d3).
+std::vector<Mat3> section_frames(const Model& model, const FrameSnapshot& snapshot) {
+    std::vector<ReferenceGeometry> geometry;
+    for (size_t m = 0; m < model.members.size(); ++m)
+        geometry.emplace_back(model, static_cast<int>(m));
+    std::vector<Mat3> frames;
+    for (const StaticState::NodeFrame& n : snapshot.nodes) {
+        frames.push_back(n.rotation * geometry[static_cast<size_t>(n.member)].frame(n.s));
+    }
+    return frames;
+}
+
+// Every double with 17 significant digits, so that it reads back exactly.
+class DataArrayWriter {
+  public:
+    explicit DataArrayWriter(std::ostringstream& os) : os_(os) {}
+
+    // A Float64 array of `count` tuples of `components`, value(i, c).
+    void floats(const std::string& name, size_t count, int components,
+                const std::function<double(size_t, int)>& value) {
+        os_ << "        <DataArray type=\"Float64\" Name=\"" << name << "\" NumberOfComponents=\""
+            << components << "\" format=\"ascii\">\n         ";
+        for (size_t i = 0; i < count; ++i) {
+            for (int c = 0; c < components; ++c) os_ << " " << number(value(i, c));
+        }
+        os_ << "\n        </DataArray>\n";
+    }
+    void vectors(const std::string& name, const std::vector<Vec3>& v) {
+        floats(name, v.size(), 3, [&](size_t i, int c) { return v[i][c]; });
+    }
+    void integers(const std::string& type, const std::string& name, const std::vector<long>& v) {
+        os_ << "        <DataArray type=\"" << type << "\" Name=\"" << name
+            << "\" format=\"ascii\">\n         ";
+        for (long x : v) os_ << " " << x;
+        os_ << "\n        </DataArray>\n";
+    }
+
+  private:
+    static std::string number(double x) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", x);
+        return buffer;
+    }
+    std::ostringstream& os_;
+};
+
+// Field data of the step's (or mode's) error estimate, where the run has one.
+void estimate_field_data(const nlohmann::json& result, size_t index, DataArrayWriter& w) {
+    auto write = [&](const std::string& name, const nlohmann::json& q) {
+        if (!q.is_object() || !q.contains("error")) return;
+        const double error = q["error"].get<double>();
+        const double reliable = q.value("reliable", false) ? 1.0 : 0.0;
+        w.floats(name, 1, 1, [&](size_t, int) { return error; });
+        w.floats(name + "_reliable", 1, 1, [&](size_t, int) { return reliable; });
+    };
+    if (result.contains("modes")) {
+        const nlohmann::json& mode = result["modes"][index];
+        if (mode.contains("estimate"))
+            write("estimate_frequency_hz", mode["estimate"].value("frequency", nlohmann::json()));
+        return;
+    }
+    const nlohmann::json& step = result["steps"][index];
+    if (!step.contains("estimate")) return;
+    const nlohmann::json& e = step["estimate"];
+    for (const auto& [name, point] : step["points"].items()) {
+        const nlohmann::json& p = e.contains(name) ? e[name] : e;
+        write("estimate_" + name + "_displacement", p.value("displacement", nlohmann::json()));
+        write("estimate_" + name + "_rotation", p.value("rotation", nlohmann::json()));
+    }
+}
+
+// The step's load factor or time, or the mode's number (from 1).
+double time_value(const nlohmann::json& result, size_t index) {
+    if (result.contains("modes")) return static_cast<double>(index + 1);
+    const nlohmann::json& step = result["steps"][index];
+    return step.contains("time") ? step["time"].get<double>() : step["load_factor"].get<double>();
+}
+
+double ribbon_half_width(const Model& model) {
+    double longest = 0.0;
+    for (size_t m = 0; m < model.members.size(); ++m) {
+        longest = std::max(longest, ReferenceGeometry(model, static_cast<int>(m)).length());
+    }
+    return longest / 40.0;
+}
+
+}  // namespace
+
+std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& result, size_t index,
+                                  const FrameSnapshot& snapshot) {
+    const std::vector<StaticState::NodeFrame>& nodes = snapshot.nodes;
+    const size_t n = nodes.size();
+    const std::vector<Mat3> frames = section_frames(model, snapshot);
+    const double half_width = ribbon_half_width(model);
+    // Points: the nodes, then the ribbon's edges x ∓ h d2.
+    std::vector<Vec3> points(3 * n);
+    for (size_t i = 0; i < n; ++i) {
+        const Vec3 x = nodes[i].reference + nodes[i].displacement;
+        points[i] = x;
+        points[n + i] = x - half_width * frames[i].col(1);
+        points[2 * n + i] = x + half_width * frames[i].col(1);
+    }
+    // Cells: a line per pair of neighbouring nodes of a member, then the ribbon's quad over it.
+    std::vector<size_t> segments;  // the first node of each pair
+    for (size_t i = 0; i + 1 < n; ++i) {
+        if (nodes[i].member == nodes[i + 1].member) segments.push_back(i);
+    }
+    std::vector<long> connectivity, offsets, types, cell_member;
+    for (size_t i : segments) {
+        connectivity.insert(connectivity.end(), {long(i), long(i + 1)});
+        offsets.push_back(static_cast<long>(connectivity.size()));
+        types.push_back(3);  // VTK_LINE
+        cell_member.push_back(nodes[i].member);
+    }
+    for (size_t i : segments) {
+        connectivity.insert(connectivity.end(),
+                            {long(n + i), long(n + i + 1), long(2 * n + i + 1), long(2 * n + i)});
+        offsets.push_back(static_cast<long>(connectivity.size()));
+        types.push_back(9);  // VTK_QUAD
+        cell_member.push_back(nodes[i].member);
+    }
+    const size_t cells = types.size();
+
+    std::ostringstream os;
+    DataArrayWriter w(os);
+    os << "<?xml version=\"1.0\"?>\n"
+          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+          "header_type=\"UInt64\">\n  <UnstructuredGrid>\n      <FieldData>\n";
+    const double t = time_value(result, index);
+    w.floats("TimeValue", 1, 1, [&](size_t, int) { return t; });
+    estimate_field_data(result, index, w);
+    os << "      </FieldData>\n    <Piece NumberOfPoints=\"" << points.size()
+       << "\" NumberOfCells=\"" << cells << "\">\n      <PointData>\n";
+    // Point data: the ribbon's points (index ≥ n) carry their node's values.
+    const auto node_of = [n](size_t p) { return p % n; };
+    const auto per_point = [&](const std::string& name, const std::function<Vec3(size_t)>& f) {
+        w.floats(name, points.size(), 3, [&](size_t p, int c) { return f(node_of(p))[c]; });
+    };
+    per_point("displacement", [&](size_t i) { return nodes[i].displacement; });
+    per_point("rotation_vector", [&](size_t i) { return so3::log_map(nodes[i].rotation); });
+    for (int d = 0; d < 3; ++d) {
+        per_point("director_" + std::to_string(d + 1),
+                  [&](size_t i) { return Vec3(frames[i].col(d)); });
+    }
+    per_point("reference_position", [&](size_t i) { return nodes[i].reference; });
+    w.floats("arc_length", points.size(), 1, [&](size_t p, int) { return nodes[node_of(p)].s; });
+    w.floats("member", points.size(), 1,
+             [&](size_t p, int) { return static_cast<double>(nodes[node_of(p)].member); });
+    if (snapshot.mode.size() == n) {
+        per_point("mode_displacement", [&](size_t i) { return Vec3(snapshot.mode[i].head<3>()); });
+        per_point("mode_rotation", [&](size_t i) { return Vec3(snapshot.mode[i].tail<3>()); });
+    }
+    os << "      </PointData>\n      <CellData>\n";
+    w.floats("member", cells, 1,
+             [&](size_t c, int) { return static_cast<double>(cell_member[c]); });
+    // The mixed formulation's resultants: one per element, ordered like the segments.
+    if (snapshot.sections.size() == segments.size() && !segments.empty()) {
+        const std::vector<SectionResultants>& r = snapshot.sections;
+        const size_t k = segments.size();
+        const auto per_cell = [&](const std::string& name, Vec3 SectionResultants::*field) {
+            w.floats(name, cells, 3, [&](size_t c, int i) { return (r[c % k].*field)[i]; });
+        };
+        per_cell("section_force", &SectionResultants::force);
+        per_cell("section_moment", &SectionResultants::moment);
+        per_cell("section_force_material", &SectionResultants::force_material);
+        per_cell("section_moment_material", &SectionResultants::moment_material);
+    }
+    os << "      </CellData>\n      <Points>\n";
+    w.vectors("position", points);
+    os << "      </Points>\n      <Cells>\n";
+    w.integers("Int64", "connectivity", connectivity);
+    w.integers("Int64", "offsets", offsets);
+    w.integers("UInt8", "types", types);
+    os << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    return os.str();
+}
+
+std::string write_vtk(const std::string& directory, const Model& model,
+                      const nlohmann::json& result, const std::vector<FrameSnapshot>& snapshots) {
+    namespace fs = std::filesystem;
+    const std::string base = result["case"].get<std::string>() + "_" +
+                             result["rotation"].get<std::string>() + "_" +
+                             result["formulation"].get<std::string>();
+    std::ostringstream pvd;
+    pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+           "  <Collection>\n";
+    for (size_t i = 0; i < snapshots.size(); ++i) {
+        char number[32];
+        std::snprintf(number, sizeof number, "_%04zu.vtu", i);
+        const std::string file = base + number;
+        write_file_atomically((fs::path(directory) / file).string(),
+                              vtk_unstructured_grid(model, result, i, snapshots[i]));
+        char t[32];
+        std::snprintf(t, sizeof t, "%.17g", time_value(result, i));
+        pvd << "    <DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
+    }
+    pvd << "  </Collection>\n</VTKFile>\n";
+    const std::string path = (fs::path(directory) / (base + ".pvd")).string();
+    write_file_atomically(path, pvd.str());
+    return path;
+}
+
+}  // namespace rotbeam

@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""Reads `rotbeam run --vtk` output back with meshio (an independent VTK reader) and checks its
+geometry against the run's JSON.
+
+usage: vtk_check.py PVD RESULT.json CASE.yaml
+
+Checks: the .pvd lists one file per reported step (or mode) with its load factor, time or mode
+number; every file reads; the line cells join the nodes of each member in order; the node at every
+named point (found by its reference_position, which equals the case's point) is at the case's
+position + the JSON displacement of that step (modes: the mode amplitude equals the JSON's); with a
+`centerline` in the JSON (the displacement formulation's statics), every node equals it; the
+directors are orthonormal and right-handed; the ribbon's edges are the node ± h d2 with one h for
+all nodes.
+
+Tolerances: every double is written with 17 significant digits, so it reads back exactly. A node's
+position is x^r + u rounded once by rotbeam; here the case's x^r + the JSON's u (also exact) is
+rounded once more: each rounding is at most ε/2 of the magnitude, so the two agree within
+ε·scale (scale: the largest magnitude among x^r, u, x). A mode amplitude is the same double in
+both files: within 4ε of the normalized amplitude 1 only as a margin for the decimal round trip.
+The directors are columns of a product of rotation matrices, orthonormal to a few ε: 1e-13 leaves
+room for the ~10 operations per entry and catches any wrong column (an error of order one). The
+ribbon edge x ∓ h d2 is rounded once per component: within 2ε·scale.
+"""
+import json
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import meshio
+import numpy as np
+import yaml
+
+EPS = np.finfo(float).eps
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def main():
+    pvd, result_path, case_path = sys.argv[1:4]
+    result = json.load(open(result_path))
+    case = yaml.safe_load(open(case_path))
+    entries = result["modes"] if "modes" in result else result["steps"]
+    datasets = ET.parse(pvd).getroot().find("Collection").findall("DataSet")
+    check(len(datasets) == len(entries) > 0,
+          f"{len(datasets)} files in the .pvd for {len(entries)} steps or modes")
+    for index, (entry, dataset) in enumerate(zip(entries, datasets)):
+        expected = index + 1 if "modes" in result else entry.get("time", entry.get("load_factor"))
+        check(float(dataset.get("timestep")) == expected,
+              f"file {index}: timestep {dataset.get('timestep')} != {expected}")
+        mesh = meshio.read(os.path.join(os.path.dirname(pvd), dataset.get("file")))
+        check_file(index, mesh, entry, result, case)
+    for f in failures[:20]:
+        print("FAIL:", f)
+    print(f"vtk_check: {len(datasets)} files, {len(failures)} failure(s)")
+    return 1 if failures else 0
+
+
+def check_file(index, mesh, entry, result, case):
+    where = f"file {index}"
+    lines = next(c.data for c in mesh.cells if c.type == "line")
+    quads = next(c.data for c in mesh.cells if c.type == "quad")
+    n = len(mesh.points) // 3
+    check(len(mesh.points) == 3 * n and len(quads) == len(lines), f"{where}: point/cell counts")
+    data = mesh.point_data
+    x = mesh.points[:n]
+    member = data["member"][:n].ravel()
+    # Line cells: neighbouring nodes of one member, in order.
+    check(all(b == a + 1 and member[a] == member[b] for a, b in lines), f"{where}: line cells")
+    # The named points: at the case's position + the JSON displacement.
+    ref = data["reference_position"][:n]
+    for name, point in entry["points"].items():
+        x0 = np.array(case["points"][name], dtype=float)
+        at = [i for i in range(n) if np.array_equal(ref[i], x0)]
+        check(len(at) > 0, f"{where}: no node at the point {name}")
+        if "modes" in result:
+            u = data["displacement"][at[0]] if at else x0 * 0  # the state the mode is about
+            for i in at:
+                check(np.abs(data["mode_displacement"][i] - point["displacement"]).max() <= 4 * EPS,
+                      f"{where}: {name}: mode amplitude {data['mode_displacement'][i]} != "
+                      f"{point['displacement']}")
+        else:
+            u = np.array(point["displacement"], dtype=float)
+        expected = x0 + u
+        scale = max(np.abs(x0).max(), np.abs(u).max(), np.abs(expected).max())
+        for i in at:
+            error = np.abs(x[i] - expected).max()
+            check(error <= EPS * scale,
+                  f"{where}: {name}: node {x[i]} != reference + displacement {expected}")
+    if "centerline" in entry:
+        line = np.array([p[1:] for p in entry["centerline"]])
+        check(line.shape == x.shape and np.abs(line - x).max() <= EPS * np.abs(line).max(),
+              f"{where}: nodes differ from the JSON centerline")
+    d = [data[f"director_{k}"][:n] for k in (1, 2, 3)]
+    for i in range(n):
+        R = np.column_stack([d[0][i], d[1][i], d[2][i]])
+        check(np.abs(R.T @ R - np.eye(3)).max() <= 1e-13 and np.linalg.det(R) > 0,
+              f"{where}: node {i}: directors not a rotation")
+    h = np.linalg.norm(mesh.points[2 * n:] - x, axis=1)
+    scale = np.abs(mesh.points).max()
+    check(np.abs(mesh.points[n:2 * n] - (x - h[:, None] * d[1])).max() <= 2 * EPS * scale and
+          np.ptp(h) <= 2 * EPS * scale, f"{where}: ribbon edges are not x -+ h d2")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# `run --vtk`: the ParaView files of a static run in both formulations, a short dynamic run and a
+# modal run, read back by meshio (vtk_check.py) and checked against the runs' JSON.
+# Usage: vtk_output.sh ROTBEAM SOURCE_DIR PYTHON (a Python with Debian's python3-meshio)
+set -u
+rotbeam=$1
+src=$2
+python=$3
+. "$(dirname "$0")/scratch.sh"
+
+# check NAME CASE ARGS...: run with --vtk and --json into $work/NAME, then vtk_check.py.
+check() {
+    local name=$1 case=$2
+    shift 2
+    "$rotbeam" run "$case" --quiet --vtk "$work/$name" --json "$work/$name/r.json" "$@" ||
+        fail "$name: rotbeam run exit $?"
+    "$python" "$(dirname "$0")/vtk_check.py" "$work/$name"/*.pvd "$work/$name/r.json" \
+        "$src/cases/$case.yaml" || fail "$name: vtk_check.py"
+}
+
+check static-displacement cantilever-moment
+check static-mixed cantilever-moment --formulation mixed --rotation rotation-vector
+grep -q 'Name="section_moment"' "$work/static-mixed"/*_0006.vtu ||
+    fail "static-mixed: no section_moment cell data"
+grep -q 'Name="estimate_tip_displacement"' "$work/static-displacement"/*_0006.vtu ||
+    fail "static-displacement: no estimate field data"
+check dynamic free-vibration --estimate off --set analysis.end_time=0.02
+check modal joined-beam --formulation displacement --estimate off
+# What --vtk cannot write is refused before the run, with nothing written.
+"$rotbeam" run joined-beam --vtk "$work/refused" 2>"$work/err" >/dev/null
+[ $? -eq 2 ] || fail "mixed modal --vtk: not refused with exit 2"
+[ ! -e "$work/refused" ] || fail "mixed modal --vtk: files written"
+exit $((failures > 0))
