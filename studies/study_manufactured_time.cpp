@@ -46,6 +46,21 @@ std::vector<TimeSeries> time_series(bool quick) {
             out.push_back({s, dd});
         }
     }
+    // Gauss–Legendre collocation (orders 4 and 6): larger steps, whose time differences stay
+    // above the Newton tolerance's floor (1e-12 of the residual scale) at the smallest.
+    const std::vector<double> dg = quick ? std::vector<double>{0.1, 0.05, 0.025}
+                                         : std::vector<double>{0.2, 0.1, 0.05, 0.025, 0.0125};
+    for (const ParameterizationId r : param::parameterization_ids()) {
+        for (Integrator g : {Integrator::gauss_legendre_2, Integrator::gauss_legendre_3}) {
+            MotionRunSpec s;
+            s.rotation = r;
+            s.integrator = g;
+            s.order = 3;
+            s.elements = 2;
+            s.motion = motion_within_reach(Formulation::displacement, r);
+            out.push_back({s, dg});
+        }
+    }
     for (const comb::Combination& c : comb::all_combinations(false, true)) {
         if (c.formulation != Formulation::mixed) continue;
         MotionRunSpec s;
