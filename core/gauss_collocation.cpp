@@ -355,7 +355,8 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
     double t = settings.start_time;
     StallSummary stalls;
     for (long n = 1; n <= steps; ++n) {
-        const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
+        const double t_next =
+            n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
         check_time_limit("at time", t);
         NewtonOutcome out;
         try {
