@@ -42,7 +42,8 @@ struct FormulationTraits {
     std::string_view no_lumped_mass_reason;
 };
 
-inline constexpr std::array kDisplacementIntegrators = {Integrator::generalized_alpha};
+inline constexpr std::array kDisplacementIntegrators = {
+    Integrator::generalized_alpha, Integrator::gauss_legendre_2, Integrator::gauss_legendre_3};
 inline constexpr std::array kDisplacementInterpolations = {Interpolation::relative,
                                                            Interpolation::direct};
 inline constexpr std::array kMixedIntegrators = {Integrator::trapezoidal, Integrator::ida};

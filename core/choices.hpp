@@ -37,7 +37,15 @@ enum class Update { multiplicative, additive };
 enum class WmMap { plain, continuous };
 
 // The time integrator; `automatic` (no name in the case) is the formulation's first listed.
-enum class Integrator { automatic, generalized_alpha, trapezoidal, ida };
+// gauss_legendre_2/3: Gauss–Legendre collocation with 2/3 stages (core/gauss_collocation.hpp).
+enum class Integrator {
+    automatic,
+    generalized_alpha,
+    trapezoidal,
+    ida,
+    gauss_legendre_2,
+    gauss_legendre_3
+};
 
 // Where a dynamic analysis starts: at rest in the reference configuration, or at rest from the
 // static equilibrium of the loads at t = 0.
@@ -76,8 +84,8 @@ struct ChoiceNames<WmMap> {
 template <>
 struct ChoiceNames<Integrator> {
     // `automatic` has no name in a case file: parse_choice never returns it.
-    static constexpr std::array<std::string_view, 4> kNames = {"", "generalized-alpha",
-                                                               "trapezoidal", "ida"};
+    static constexpr std::array<std::string_view, 6> kNames = {
+        "", "generalized-alpha", "trapezoidal", "ida", "gauss-legendre-2", "gauss-legendre-3"};
 };
 template <>
 struct ChoiceNames<InitialState> {

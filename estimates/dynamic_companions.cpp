@@ -35,7 +35,19 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
         return plan;
     }
     plan.time_method = "dt/2";
-    plan.time_order = 2.0;
+    // Generalized-α and the mixed trapezoidal scheme are second order; Gauss–Legendre
+    // collocation with s stages is of order 2s (core/gauss_collocation.hpp).
+    switch (model.analysis.dynamics.integrator) {
+        case Integrator::gauss_legendre_2:
+            plan.time_order = 4.0;
+            break;
+        case Integrator::gauss_legendre_3:
+            plan.time_order = 6.0;
+            break;
+        default:
+            plan.time_order = 2.0;
+            break;
+    }
     plan.time_ratio = 2.0;
     c.time_step = d.time_step / plan.time_ratio;
     if (d.end_time / c.time_step > cases::kMaxTimeSteps) {

@@ -6,6 +6,7 @@
 #include "combinations/registry.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
+#include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -125,16 +126,28 @@ nlohmann::json reactions_json(const Model& model, form::DisplacementDynamics<P>&
     return out;
 }
 
-// Lie-group generalized-α (core/generalized_alpha.hpp) from rest or from the static state of the
-// loads at t = 0 (`initial_state: static`, a release).
+// The displacement formulation's Gauss–Legendre stage count of `integrator`, 0 for generalized-α.
+int gauss_stages(Integrator integrator) {
+    switch (comb::integrator_for(Formulation::displacement, integrator)) {
+        case Integrator::gauss_legendre_2:
+            return 2;
+        case Integrator::gauss_legendre_3:
+            return 3;
+        default:
+            return 0;
+    }
+}
+
+// Lie-group generalized-α (core/generalized_alpha.hpp) or Gauss–Legendre collocation
+// (core/gauss_collocation.hpp) from rest or from the static state of the loads at t = 0
+// (`initial_state: static`, a release).
 template <class P>
 void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     const DynamicSettings& d = model.analysis.dynamics;
     if (!comb::takes_integrator(Formulation::displacement, d.integrator)) {
-        throw InputError(
-            "analysis.integrator: the displacement formulation integrates with "
-            "'generalized-alpha', not '" +
-            std::string(choice_name(d.integrator)) + "'");
+        throw InputError("analysis.integrator: the displacement formulation integrates with " +
+                         comb::integrator_names(Formulation::displacement) + ", not '" +
+                         std::string(choice_name(d.integrator)) + "'");
     }
     form::DisplacementDynamics<P> problem(model);
     result["dofs"] = problem.size();
@@ -154,27 +167,39 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     ts.end_time = d.end_time;
     ts.output_interval = d.output_interval;
     ts.rho_infinity = d.rho_infinity;
-    const DynamicOutcome out =
-        run_generalized_alpha(problem, ts, settings, [&](const TimeStepRecord& s) {
-            for (size_t i = 0; i < model.points.size(); ++i) {
-                states[i] = problem.point_state(static_cast<int>(i));
-            }
-            const std::vector<Vec3> continued =
-                rotation_vectors_along_beam(model, problem.statics().rotation_stations(), states);
-            nlohmann::json step =
-                step_json(model, std::nullopt, s.time, s.newton_iterations, states, continued);
-            step["reactions"] = reactions_json(model, problem);
-            const form::BeamEnergy e = problem.energy();
-            step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};
-            result["steps"].push_back(std::move(step));
-            record_frames(problem.statics());
-        });
+    const auto on_output = [&](const TimeStepRecord& s) {
+        for (size_t i = 0; i < model.points.size(); ++i) {
+            states[i] = problem.point_state(static_cast<int>(i));
+        }
+        const std::vector<Vec3> continued =
+            rotation_vectors_along_beam(model, problem.statics().rotation_stations(), states);
+        nlohmann::json step =
+            step_json(model, std::nullopt, s.time, s.newton_iterations, states, continued);
+        step["reactions"] = reactions_json(model, problem);
+        const form::BeamEnergy e = problem.energy();
+        step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};
+        result["steps"].push_back(std::move(step));
+        record_frames(problem.statics());
+    };
+    const int stages = gauss_stages(d.integrator);
+    const DynamicOutcome out = stages > 0
+                                   ? run_gauss_collocation(problem, stages, ts, settings, on_output)
+                                   : run_generalized_alpha(problem, ts, settings, on_output);
     set_analysis_status(result, out.status, out.message);
-    result["integrator"] = {{"scheme", "Lie-group generalized-alpha"},
-                            {"rho_infinity", d.rho_infinity},
-                            {"time_step", d.time_step},
-                            {"steps", out.steps},
-                            {"newton_iterations", out.newton_iterations}};
+    if (stages > 0) {
+        result["integrator"] = {{"scheme", "Lie-group Gauss-Legendre collocation (RKMK)"},
+                                {"stages", stages},
+                                {"order", 2 * stages},
+                                {"time_step", d.time_step},
+                                {"steps", out.steps},
+                                {"newton_iterations", out.newton_iterations}};
+    } else {
+        result["integrator"] = {{"scheme", "Lie-group generalized-alpha"},
+                                {"rho_infinity", d.rho_infinity},
+                                {"time_step", d.time_step},
+                                {"steps", out.steps},
+                                {"newton_iterations", out.newton_iterations}};
+    }
     result["counters"] = counters_json(problem.counters());
 }
 

@@ -8,6 +8,7 @@
 #include "combinations/dispatch.hpp"
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/so3.hpp"
 #include "core/static_driver.hpp"
@@ -56,6 +57,13 @@ struct Recorder {
     }
 };
 
+// The stages of a Gauss–Legendre integrator, 0 for the others.
+int gauss_stages(Integrator integrator) {
+    if (integrator == Integrator::gauss_legendre_2) return 2;
+    if (integrator == Integrator::gauss_legendre_3) return 3;
+    return 0;
+}
+
 template <class P>
 void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& result) {
     form::DisplacementDynamics<P> d(model);
@@ -78,9 +86,13 @@ void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunRe
     ts.output_interval = model.analysis.dynamics.output_interval;
     ts.rho_infinity = spec.rho_infinity;
     Recorder record{model, spec.motion, result};
-    const DynamicOutcome out = run_generalized_alpha(
-        d, ts, newton_settings_from(model.solver, model.analysis.statics),
-        [&](const TimeStepRecord& r) { record(r.time, [&](int p) { return d.point_state(p); }); });
+    const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
+    const auto on_output = [&](const TimeStepRecord& r) {
+        record(r.time, [&](int p) { return d.point_state(p); });
+    };
+    const int stages = gauss_stages(spec.integrator);
+    const DynamicOutcome out = stages > 0 ? run_gauss_collocation(d, stages, ts, newton, on_output)
+                                          : run_generalized_alpha(d, ts, newton, on_output);
     result.status = to_string(out.status);
     result.message = out.message;
     result.steps = out.steps;
@@ -201,7 +213,12 @@ std::string MotionRunSpec::label() const {
     s << choice_name(formulation) << "/" << param::name_of(rotation);
     if (wm_map == WmMap::continuous) s << "-continuous";
     if (formulation == Formulation::displacement) {
-        s << "/p" << order << "/ga" << rho_infinity;
+        s << "/p" << order;
+        if (gauss_stages(integrator) > 0) {
+            s << "/gl" << gauss_stages(integrator);
+        } else {
+            s << "/ga" << rho_infinity;
+        }
     } else {
         s << "/" << choice_name(comb::integrator_for(formulation, integrator));
     }

@@ -1,5 +1,6 @@
 // Runs of the manufactured motion (core/oracles/manufactured_motion.hpp) with every time
-// integrator: the displacement formulation with the Lie-group generalized-α, the mixed one with
+// integrator: the displacement formulation with the Lie-group generalized-α or Gauss–Legendre
+// collocation (2 or 3 stages), the mixed one with
 // the fixed-step trapezoidal scheme or IDA. Shared by the time-convergence study
 // (study_manufactured_time.cpp) and its verification test (tests/agreement/
 // test_manufactured_motion.cpp). This file holds the parameterization switch for these runs, as
@@ -32,16 +33,17 @@ struct MotionRunSpec {
     Formulation formulation = Formulation::displacement;
     ParameterizationId rotation{};  // parameterizations/registry.hpp
     WmMap wm_map = WmMap::plain;    // mixed WM
-    // displacement: generalized-alpha; mixed: trapezoidal | ida (automatic: the first)
+    // displacement: generalized-alpha | gauss-legendre-2 | gauss-legendre-3; mixed: trapezoidal
+    // | ida (automatic: the first)
     Integrator integrator = Integrator::automatic;
-    int elements = 2;        // per member (four members)
-    int order = 1;           // displacement: polynomial order p
-    double dt = 0.01;        // fixed step (IDA: the initial step hint)
+    int elements = 2;  // per member (four members)
+    int order = 1;     // displacement: polynomial order p
+    double dt = 0.01;  // fixed step (IDA: the initial step hint)
     double end_time = 1.0;
     double rho_infinity = 0.5;  // generalized-α
     double tolerance = 1e-6;    // IDA: rtol = atol (atol times the state scales)
     oracle::ManufacturedMotion motion;
-    std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5"
+    std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5", ".../p3/gl2"
 };
 
 struct MotionRunResult {

@@ -1,6 +1,7 @@
 // Dynamics of the displacement-based formulation (seed 000 Eq. 9 with the inertial and damping
 // forces) as a SecondOrderProblem for the Lie-group generalized-α integrator
-// (core/generalized_alpha.hpp; Brüls, Cardona & Arnold 2012).
+// (core/generalized_alpha.hpp; Brüls, Cardona & Arnold 2012) and a CollocationProblem for the
+// Gauss–Legendre collocation (core/gauss_collocation.hpp), which sets stage states directly.
 //
 // State per free node: displacement u and rotation R (stored as parameters p of P), spatial
 // velocity v = [u˙; ω] (Ṙ = ω̃ R), true acceleration v˙ and the pseudo-acceleration a. The Newton
@@ -28,6 +29,7 @@
 #include <array>
 #include <vector>
 
+#include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/model.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -44,7 +46,7 @@ struct BeamEnergy {
 };
 
 template <param::RotationParameterization P>
-class DisplacementDynamics : public SecondOrderProblem {
+class DisplacementDynamics : public CollocationProblem {
   public:
     using Params = param::Params<P::kSize>;
 
@@ -64,6 +66,13 @@ class DisplacementDynamics : public SecondOrderProblem {
     void initialize_acceleration(double t) override;
     void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) override;
     void end_step() override;
+
+    // CollocationProblem (vectors in the unknowns' numbering, 6 per free node: [u; rotation])
+    void start_rates(VecX& v, VecX& v_dot) const override;
+    void set_stage(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
+                   const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override;
+    void velocity_of_rate(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& w,
+                          Eigen::Ref<VecX> v) const override;
 
     // The static problem on the same mesh (its state is this problem's configuration): used for
     // `initial_state: static` (run_static on it at the loads of t = 0, then adopt_static_state()).
@@ -99,6 +108,7 @@ class DisplacementDynamics : public SecondOrderProblem {
 
   private:
     void update_iterate();
+    void set_configuration();
     void gather(const MeshElement& e);
     void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot) const;
     // point(k, e, q, rot) at every quadrature point q of every element k of `elements`, with the
@@ -127,6 +137,7 @@ class DisplacementDynamics : public SecondOrderProblem {
     std::vector<Mat3> T_;  // dexp(ψ_i)
     std::vector<Params> p_trial_;
     VecX delta_;
+    VecX stage_backup_;  // set_stage: delta_ before the stage, restored if it is refused
     std::array<VecX, kCheckpointSlots> saved_delta_;
 
     // Per-element workspace (p+1 nodes).

@@ -85,6 +85,25 @@ void DisplacementDynamics<P>::set_velocity(const Vec3& u_dot, const Vec3& omega)
 // parameterization refusing one (SingularityError) leaves the iterate as it was.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::update_iterate() {
+    set_configuration();
+    const Mesh& m = mesh();
+    const GeneralizedAlpha& g = scheme_;
+    const double h = h_;
+    for (size_t i = 0; i < m.nodes.size(); ++i) {
+        const int d = m.nodes[i].dof;
+        if (d < 0) continue;
+        const Vec6 D = delta_.segment<6>(d);
+        a_[i] = (D - h * v_n_[i] - h * h * (0.5 - g.beta) * a_n_[i]) / (g.beta * h * h);
+        v_[i] = v_n_[i] + h * (1.0 - g.gamma) * a_n_[i] + h * g.gamma * a_[i];
+        vd_[i] = ((1.0 - g.alpha_m) * a_[i] + g.alpha_m * a_n_[i] - g.alpha_f * vd_n_[i]) /
+                 (1.0 - g.alpha_f);
+    }
+}
+
+// The configuration exp(Δ) ∘ q_n of the increment delta_. All parameters are computed before any
+// node changes, so a parameterization refusing one (SingularityError) leaves the state as it was.
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::set_configuration() {
     const Mesh& m = mesh();
     for (size_t i = 0; i < m.nodes.size(); ++i) {
         const int d = m.nodes[i].dof;
@@ -93,17 +112,10 @@ void DisplacementDynamics<P>::update_iterate() {
         if constexpr (P::kSize == 4) p_trial_[i].normalize();
         if (statics_.rescales_nodes()) p_trial_[i] = P::rescale(p_trial_[i], P::identity());
     }
-    const GeneralizedAlpha& g = scheme_;
-    const double h = h_;
     for (size_t i = 0; i < m.nodes.size(); ++i) {
         const int d = m.nodes[i].dof;
         if (d < 0) continue;
-        const Vec6 D = delta_.segment<6>(d);
-        statics_.set_node_state(static_cast<int>(i), u_n_[i] + D.head<3>(), p_trial_[i]);
-        a_[i] = (D - h * v_n_[i] - h * h * (0.5 - g.beta) * a_n_[i]) / (g.beta * h * h);
-        v_[i] = v_n_[i] + h * (1.0 - g.gamma) * a_n_[i] + h * g.gamma * a_[i];
-        vd_[i] = ((1.0 - g.alpha_m) * a_[i] + g.alpha_m * a_n_[i] - g.alpha_f * vd_n_[i]) /
-                 (1.0 - g.alpha_f);
+        statics_.set_node_state(static_cast<int>(i), u_n_[i] + delta_.segment<3>(d), p_trial_[i]);
     }
 }
 
@@ -190,6 +202,59 @@ void DisplacementDynamics<P>::end_step() {
         a_n_[i] = a_[i];
     }
     delta_.setZero();
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::start_rates(VecX& v, VecX& v_dot) const {
+    v.setZero(size());
+    v_dot.setZero(size());
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        const int d = mesh().nodes[i].dof;
+        if (d < 0) continue;
+        v.segment<6>(d) = v_n_[i];
+        v_dot.segment<6>(d) = vd_n_[i];
+    }
+}
+
+// A stage of the collocation: the configuration, rates and loads are set directly (the
+// generalized-α history a_n is not used); evaluate() then uses the slopes c_v, c_a.
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::set_stage(const Eigen::Ref<const VecX>& delta,
+                                        const Eigen::Ref<const VecX>& v,
+                                        const Eigen::Ref<const VecX>& v_dot, double t, double c_v,
+                                        double c_a) {
+    stage_backup_ = delta_;
+    delta_ = delta;
+    try {
+        set_configuration();
+    } catch (...) {
+        delta_ = stage_backup_;
+        throw;
+    }
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        const int d = mesh().nodes[i].dof;
+        if (d < 0) continue;
+        v_[i] = v.segment<6>(d);
+        vd_[i] = a_[i] = v_dot.segment<6>(d);
+    }
+    statics_.set_time(t);
+    time_ = t;
+    cv_ = c_v;
+    ca_ = c_a;
+}
+
+// ω = dexp(ψ) ψ˙ with the rotation vector's spatial tangent (the map T of the iteration matrix).
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::velocity_of_rate(const Eigen::Ref<const VecX>& delta,
+                                               const Eigen::Ref<const VecX>& w,
+                                               Eigen::Ref<VecX> v) const {
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        const int d = mesh().nodes[i].dof;
+        if (d < 0) continue;
+        v.segment<3>(d) = w.segment<3>(d);
+        v.segment<3>(d + 3) =
+            param::RotationVector::spatial_tangent(delta.segment<3>(d + 3)) * w.segment<3>(d + 3);
+    }
 }
 
 template <param::RotationParameterization P>

@@ -1,0 +1,404 @@
+#include "core/gauss_collocation.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include "core/convergence.hpp"
+#include "core/errors.hpp"
+#include "core/sparse_lu.hpp"
+#include "core/step_observer.hpp"
+#include "core/time_limit.hpp"
+
+namespace rotbeam {
+
+// Hairer & Wanner, "Solving ODEs II", Table IV.5.1 (s = 2) and IV.5.2 (s = 3).
+GaussLegendre GaussLegendre::of(int stages) {
+    GaussLegendre g;
+    g.stages = stages;
+    if (stages == 2) {
+        const double r = std::sqrt(3.0) / 6.0;
+        g.c = Eigen::Vector2d(0.5 - r, 0.5 + r);
+        g.b = Eigen::Vector2d(0.5, 0.5);
+        g.A.resize(2, 2);
+        g.A << 0.25, 0.25 - r, 0.25 + r, 0.25;
+        return g;
+    }
+    if (stages == 3) {
+        const double r = std::sqrt(15.0);
+        g.c = Eigen::Vector3d(0.5 - r / 10.0, 0.5, 0.5 + r / 10.0);
+        g.b = Eigen::Vector3d(5.0 / 18.0, 4.0 / 9.0, 5.0 / 18.0);
+        g.A.resize(3, 3);
+        g.A << 5.0 / 36.0, 2.0 / 9.0 - r / 15.0, 5.0 / 36.0 - r / 30.0,  //
+            5.0 / 36.0 + r / 24.0, 2.0 / 9.0, 5.0 / 36.0 - r / 24.0,     //
+            5.0 / 36.0 + r / 30.0, 2.0 / 9.0 + r / 15.0, 5.0 / 36.0;
+        return g;
+    }
+    throw InputError("analysis.integrator: Gauss–Legendre collocation has 2 or 3 stages, not " +
+                     std::to_string(stages));
+}
+
+namespace {
+
+using Complex = std::complex<double>;
+using ComplexSparse = Eigen::SparseMatrix<Complex, Eigen::ColMajor, int>;
+
+// W = A⁻¹ = S Λ S⁻¹, with the columns of a conjugate pair conjugate to each other, so that the
+// partner's transformed system is the conjugate of its representative's (imaginary part > 0).
+struct StageTransform {
+    Eigen::MatrixXd W;
+    Eigen::MatrixXcd S, S_inv;
+    Eigen::VectorXcd lambda;
+    int real = -1;  // the index of the real eigenvalue (s = 3), −1 if none
+    int pair = -1;  // the representative of the conjugate pair
+};
+
+StageTransform transform_of(const Eigen::MatrixXd& A) {
+    StageTransform t;
+    t.W = A.inverse();  // the Butcher matrix (s ≤ 3), not a stage system
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(t.W);
+    const int s = static_cast<int>(A.rows());
+    t.lambda = es.eigenvalues();
+    const Eigen::MatrixXcd V = es.eigenvectors();
+    t.S.resize(s, s);
+    for (int k = 0; k < s; ++k) {
+        if (std::abs(t.lambda(k).imag()) <= 1e-12 * std::abs(t.lambda(k))) {
+            t.real = k;
+            t.lambda(k) = t.lambda(k).real();
+            t.S.col(k) = V.col(k).real().cast<Complex>();
+        } else if (t.lambda(k).imag() > 0.0) {
+            t.pair = k;
+        }
+    }
+    ROTBEAM_VERIFY(t.pair >= 0 && (s == 2 || t.real >= 0), "Gauss tableau: unexpected spectrum");
+    for (int k = 0; k < s; ++k) {
+        if (k == t.real) continue;
+        t.S.col(k) = k == t.pair ? V.col(t.pair) : Eigen::VectorXcd(V.col(t.pair).conjugate());
+        if (k != t.pair) t.lambda(k) = std::conj(t.lambda(t.pair));
+    }
+    t.S_inv = t.S.inverse();
+    const double defect =
+        (t.S * t.lambda.asDiagonal() * t.S_inv - t.W.cast<Complex>()).cwiseAbs().maxCoeff();
+    ROTBEAM_VERIFY(defect <= 1e-12 * t.W.cwiseAbs().maxCoeff(), "Gauss tableau: W ≠ S Λ S⁻¹");
+    return t;
+}
+
+std::string step_failure(const char* what, long step, double t, const std::string& why,
+                         const NonlinearSystem& problem) {
+    std::ostringstream s;
+    s.precision(9);
+    s << what << " at time step " << step << " (t = " << t << "): " << why;
+    const std::string state = problem.describe_state();
+    if (!state.empty()) s << "; " << state;
+    return s.str();
+}
+
+// One step's stage equations and their simplified Newton (the header's construction). Buffers
+// are sized once; the complex LU's pattern is analysed once.
+class GaussStepper {
+  public:
+    GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton);
+    // From the problem's step start (q_n, v_n, v˙_n) at time t to t + h; on success the problem's
+    // iterate is the step end (q_{n+1}, v_{n+1}, an extrapolated v˙_{n+1}), not yet accepted.
+    NewtonOutcome step(double t, double h);
+
+  private:
+    void predict(double h);
+    bool factor(double t_mid, double h);
+    void stage_rates(double h);
+    double stage_residuals(double t, double h);
+    double correction();
+    void finish_step(double t, double h);
+
+    CollocationProblem& problem_;
+    GaussLegendre tableau_;
+    StageTransform transform_;
+    NewtonSettings newton_;
+    Eigen::VectorXd extrapolate_;  // ℓ_j(1): the stage polynomial's value at the step end
+    int n_ = 0;
+    VecX v_n_, vd_n_, r_, work_, gr_, xr_;
+    VecX delta1_, v1_, vd1_;  // the step end
+    std::vector<VecX> Z_, K_, V_, L_, R_, dZ_;
+    SparseMatrix J0_, Jv_, Ja_, E_real_, E_floor_;
+    ComplexSparse E_complex_;
+    Eigen::VectorXcd gc_, xc_;
+    SparseLUSolver real_lu_{true};
+    Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> complex_lu_;
+    bool analysed_ = false;
+    double floor_ = 0.0;
+};
+
+GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton)
+    : problem_(problem),
+      tableau_(GaussLegendre::of(stages)),
+      transform_(transform_of(tableau_.A)),
+      newton_(newton),
+      n_(problem.size()) {
+    const int s = tableau_.stages;
+    extrapolate_.resize(s);
+    for (int j = 0; j < s; ++j) {
+        double l = 1.0;
+        for (int m = 0; m < s; ++m) {
+            if (m != j) l *= (1.0 - tableau_.c(m)) / (tableau_.c(j) - tableau_.c(m));
+        }
+        extrapolate_(j) = l;
+    }
+    for (auto* v : {&v_n_, &vd_n_, &r_, &gr_, &xr_, &delta1_, &v1_, &vd1_}) v->setZero(n_);
+    for (auto* v : {&Z_, &K_, &V_, &L_, &R_, &dZ_}) v->assign(s, VecX::Zero(n_));
+    gc_.setZero(n_);
+    xc_.setZero(n_);
+}
+
+// Δ_i = c_i h v_n + ½ (c_i h)² v˙_n: the Taylor polynomial of the motion (dexp ≈ I).
+void GaussStepper::predict(double h) {
+    for (int i = 0; i < tableau_.stages; ++i) {
+        const double ch = tableau_.c(i) * h;
+        Z_[i] = ch * v_n_ + (0.5 * ch * ch) * vd_n_;
+    }
+}
+
+// K₀, C₀, M₀ from three assemblies at the step start, then E(λ) = K₀ + μ C₀ + μ² M₀, μ = λ/h, for
+// the real eigenvalue (KLU) and the pair's representative (complex SparseLU). False when one is
+// singular.
+bool GaussStepper::factor(double t_mid, double h) {
+    Z_[0].setZero();
+    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 0.0, 0.0);
+    problem_.evaluate(r_, &J0_);
+    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 1.0, 0.0);
+    problem_.evaluate(r_, &Jv_);
+    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 0.0, 1.0);
+    problem_.evaluate(r_, &Ja_);
+    const int nnz = static_cast<int>(J0_.nonZeros());
+    ROTBEAM_VERIFY(Jv_.nonZeros() == nnz && Ja_.nonZeros() == nnz,
+                   "Gauss collocation: the iteration matrices' patterns differ");
+    if (!analysed_) {
+        E_real_ = J0_;
+        E_floor_ = J0_;
+        E_complex_ = J0_.cast<Complex>();
+    }
+    const double* k0 = J0_.valuePtr();
+    const double* jv = Jv_.valuePtr();
+    const double* ja = Ja_.valuePtr();
+    const Complex mu = transform_.lambda(transform_.pair) / h;
+    // The round-off floor of the stage residuals: v_i and L_i are sums Σ_j w_ij (·)/h of the
+    // stage increments, so their terms are bounded by ‖W‖∞/h and ‖|W|²‖∞/h² times them.
+    const Eigen::MatrixXd Wabs = transform_.W.cwiseAbs();
+    const double w1 = Wabs.rowwise().sum().maxCoeff() / h;
+    const double w2 = (Wabs * Wabs).rowwise().sum().maxCoeff() / (h * h);
+    for (int k = 0; k < nnz; ++k) {
+        const double c0 = jv[k] - k0[k], m0 = ja[k] - k0[k];
+        E_complex_.valuePtr()[k] = k0[k] + mu * c0 + mu * mu * m0;
+        E_floor_.valuePtr()[k] = std::abs(k0[k]) + w1 * std::abs(c0) + w2 * std::abs(m0);
+        if (transform_.real >= 0) {
+            const double mr = transform_.lambda(transform_.real).real() / h;
+            E_real_.valuePtr()[k] = k0[k] + mr * c0 + mr * mr * m0;
+        }
+    }
+    floor_ =
+        round_off_floor(E_floor_, problem_.residual_scale(), problem_.increment_scale(), work_);
+    if (!analysed_) {
+        complex_lu_.analyzePattern(E_complex_);
+        analysed_ = true;
+    }
+    complex_lu_.factorize(E_complex_);
+    if (complex_lu_.info() != Eigen::Success) return false;
+    return transform_.real < 0 || real_lu_.factorize(E_real_);
+}
+
+// K_i = (1/h) Σ w_ij Δ_j, v_i = dexp(Δ_i) K_i, L_i = (1/h) Σ w_ij (v_j − v_n).
+void GaussStepper::stage_rates(double h) {
+    const int s = tableau_.stages;
+    const Eigen::MatrixXd& W = transform_.W;
+    for (int i = 0; i < s; ++i) {
+        K_[i].setZero();
+        for (int j = 0; j < s; ++j) K_[i] += (W(i, j) / h) * Z_[j];
+        problem_.velocity_of_rate(Z_[i], K_[i], V_[i]);
+    }
+    for (int i = 0; i < s; ++i) {
+        L_[i].setZero();
+        for (int j = 0; j < s; ++j) L_[i] += (W(i, j) / h) * (V_[j] - v_n_);
+    }
+}
+
+// The stage residuals r_i; returns their largest scaled max norm.
+double GaussStepper::stage_residuals(double t, double h) {
+    stage_rates(h);
+    double rho = 0.0;
+    for (int i = 0; i < tableau_.stages; ++i) {
+        problem_.set_stage(Z_[i], V_[i], L_[i], t + tableau_.c(i) * h, 0.0, 0.0);
+        problem_.evaluate(R_[i], nullptr);
+        rho = std::max(rho, scaled_max_norm(R_[i], problem_.residual_scale()));
+    }
+    return rho;
+}
+
+// δZ = −(S ⊗ I) diag(E(λ_k))⁻¹ (S⁻¹ ⊗ I) R; the pair contributes 2 Re(S_ik x_k). Returns the
+// largest scaled max norm of the stage corrections.
+double GaussStepper::correction() {
+    const int s = tableau_.stages;
+    const StageTransform& T = transform_;
+    for (VecX& d : dZ_) d.setZero();
+    if (T.real >= 0) {
+        gr_.setZero();
+        for (int i = 0; i < s; ++i) gr_ += T.S_inv(T.real, i).real() * R_[i];
+        real_lu_.solve(gr_, xr_);
+        for (int i = 0; i < s; ++i) dZ_[i] -= T.S(i, T.real).real() * xr_;
+    }
+    gc_.setZero();
+    for (int i = 0; i < s; ++i) gc_ += T.S_inv(T.pair, i) * R_[i].cast<Complex>();
+    xc_ = complex_lu_.solve(gc_);
+    for (int i = 0; i < s; ++i) dZ_[i] -= 2.0 * (T.S(i, T.pair) * xc_).real();
+    double eta = 0.0;
+    for (const VecX& d : dZ_) eta = std::max(eta, scaled_max_norm(d, problem_.increment_scale()));
+    return eta;
+}
+
+// q_{n+1} = exp(h Σ b_j K_j) ∘ q_n, v_{n+1} = v_n + h Σ b_j L_j, v˙_{n+1} = Σ ℓ_j(1) L_j (the
+// collocation polynomial's, order s; the driver replaces it by the consistent one at outputs).
+void GaussStepper::finish_step(double t, double h) {
+    stage_rates(h);
+    delta1_.setZero();
+    v1_ = v_n_;
+    vd1_.setZero();
+    for (int j = 0; j < tableau_.stages; ++j) {
+        delta1_ += (h * tableau_.b(j)) * K_[j];
+        v1_ += (h * tableau_.b(j)) * L_[j];
+        vd1_ += extrapolate_(j) * L_[j];
+    }
+    problem_.set_stage(delta1_, v1_, vd1_, t + h, 0.0, 0.0);
+}
+
+NewtonOutcome GaussStepper::step(double t, double h) {
+    NewtonOutcome out;
+    problem_.start_rates(v_n_, vd_n_);
+    if (!factor(t + 0.5 * h, h)) {
+        out.singular = true;
+        out.failure = "the stage iteration matrix is singular";
+        return out;
+    }
+    predict(h);
+    IterateMeasures m;
+    const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
+    int growing = 0;
+    for (int k = 1; k <= newton_.max_iterations; ++k) {
+        m.previous_residual = m.residual;
+        const double previous_correction = m.correction;
+        m.residual = stage_residuals(t, h);
+        if (!std::isfinite(m.residual)) {
+            out.failure = "non-finite stage residual at iteration " + std::to_string(k);
+            return out;
+        }
+        m.correction = correction();
+        m.last_step_full = k > 1;
+        m.round_off_floor = floor_;
+        const Convergence c = accepted(m, tol);
+        if (newton_.trace != nullptr) {
+            *newton_.trace << "  stage iteration " << k << ": residual " << m.residual
+                           << ", correction " << m.correction << "\n";
+        }
+        if (c != Convergence::exact) {
+            for (int i = 0; i < tableau_.stages; ++i) Z_[i] += dZ_[i];
+        }
+        if (c != Convergence::none) {
+            out.converged = c != Convergence::stalled_at_round_off;
+            out.criterion = c;
+            out.iterations = k;
+            out.scaled_residual = m.residual;
+            out.error_bound = c == Convergence::exact ? 0.0 : m.correction;
+            out.round_off_floor = floor_;
+            finish_step(t, h);
+            return out;
+        }
+        // The simplified Newton converges linearly; two iterations in a row in which neither the
+        // correction nor the residual shrinks mean the frozen matrix no longer describes the
+        // stage equations (step too large).
+        const bool stuck = m.correction >= previous_correction && m.residual >= m.previous_residual;
+        growing = stuck ? growing + 1 : 0;
+        if (growing >= 2) {
+            std::ostringstream s;
+            s << "the simplified Newton iteration of the stages does not contract (iteration " << k
+              << ", scaled correction " << m.correction << ", residual " << m.residual << ")";
+            out.failure = s.str();
+            return out;
+        }
+    }
+    std::ostringstream s;
+    s << "the stage equations did not converge in " << newton_.max_iterations
+      << " iterations (scaled residual " << m.residual << ", correction " << m.correction << ")";
+    out.failure = s.str();
+    return out;
+}
+
+}  // namespace
+
+DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
+                                     const TimeIntegrationSettings& settings,
+                                     const NewtonSettings& newton,
+                                     const std::function<void(const TimeStepRecord&)>& on_output) {
+    DynamicOutcome outcome;
+    const double h0 = settings.time_step;
+    if (!(h0 > 0.0) || !(settings.end_time > settings.start_time)) {
+        throw InputError("analysis: a dynamic analysis needs time_step > 0 and end_time > 0");
+    }
+    GaussStepper stepper(problem, stages, newton);
+    // The right limit of t_0, as run_generalized_alpha (a load released at t_0).
+    constexpr double kRightLimit = 1e-6;
+    problem.initialize_acceleration(settings.start_time + kRightLimit * h0);
+    const double span = settings.end_time - settings.start_time;
+    const long steps = std::max(1L, std::lround(std::ceil(span / h0 - 1e-9)));
+    const double every = settings.output_interval > 0.0 ? settings.output_interval : h0;
+    double next_output = settings.start_time + every;
+    if (on_output) on_output({settings.start_time, 0});
+    double t = settings.start_time;
+    StallSummary stalls;
+    for (long n = 1; n <= steps; ++n) {
+        const double t_next =
+            n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
+        check_time_limit("at time", t);
+        NewtonOutcome out;
+        try {
+            out = stepper.step(t, t_next - t);
+        } catch (const TimeLimitReached& e) {
+            rethrow_with_context(e, "in the step to time", t_next);
+        } catch (const SingularityError& e) {
+            out.converged = false;
+            out.singular = true;
+            out.failure = e.what();
+        }
+        if (!out.accepted()) {
+            outcome.status = out.singular ? SolveStatus::singular : SolveStatus::diverged;
+            outcome.message = step_failure(out.singular ? "singular" : "diverged", n, t_next,
+                                           out.failure, problem);
+            outcome.last_time = t;
+            return outcome;
+        }
+        stalls.add(out);
+        problem.end_step();
+        t = t_next;
+        ++outcome.steps;
+        outcome.newton_iterations += out.iterations;
+        outcome.last_time = t;
+        if (n == steps || t >= next_output - 1e-9 * h0) {
+            // The output state's acceleration (reactions) is the consistent one of its (q, v),
+            // not the stage polynomial's order-s extrapolation.
+            problem.initialize_acceleration(t);
+            if (on_output) on_output({t, out.iterations});
+            while (next_output <= t + 1e-9 * h0) next_output += every;
+        }
+        notify_step({t, outcome.steps, outcome.newton_iterations, -1});
+    }
+    std::ostringstream s;
+    s << outcome.steps << " time steps, Gauss–Legendre " << stages << " stages ("
+      << outcome.newton_iterations << " stage iterations)";
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        s << "; " << stalls.describe("time steps", newton.residual_tolerance);
+    }
+    outcome.message = s.str();
+    return outcome;
+}
+
+}  // namespace rotbeam

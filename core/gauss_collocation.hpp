@@ -1,0 +1,80 @@
+// Gauss–Legendre collocation on a Lie group: the Runge–Kutta–Munthe-Kaas (RKMK) form of the
+// s-stage Gauss method, s = 2 (order 4) and s = 3 (order 6), for the second-order problems the
+// generalized-α integrator drives (core/generalized_alpha.hpp).
+//
+// The state is (q, v): a configuration on the group (per node R³ × SO(3); spatial composition on
+// the left, q = exp(Δ) ∘ q_n) and a velocity in a vector space (spatial: Ṙ = ω̃ R). Written in the
+// increment Δ of the configuration from q_n (a vector-space chart centred at the step start),
+// the equations of motion are an ODE in (Δ, v):
+//   Δ˙ = dexp(Δ)⁻¹ v,    r(exp(Δ) ∘ q_n, v, v˙, t) = 0  (linear in v˙, M invertible),
+// with dexp(Δ) the rotation vector's spatial tangent on the rotation rows (ω = dexp(Δ) Δ˙; the
+// identity on the translation rows). RKMK (Munthe-Kaas 1998, "Runge–Kutta methods on Lie groups",
+// BIT 38, Theorem 1; Hairer, Lubich & Wanner, "Geometric Numerical Integration", 2nd ed., §IV.8.2)
+// applies the Gauss method (Butcher tableau A, b, c) to that ODE, which keeps the classical order
+// 2s of the method at the step points when dexp⁻¹ is exact, as here. With the stage rates
+// K_i = Δ˙(t_n + c_i h) and the stage accelerations L_i = v˙(t_n + c_i h):
+//   Δ_i = h Σ_j a_ij K_j,    v_i = v_n + h Σ_j a_ij L_j,    v_i = dexp(Δ_i) K_i,
+//   r(exp(Δ_i) ∘ q_n, v_i, L_i, t_n + c_i h) = 0                              (i = 1 … s),
+//   q_{n+1} = exp(h Σ_j b_j K_j) ∘ q_n,    v_{n+1} = v_n + h Σ_j b_j L_j.
+// The unknowns are the stage increments Z = (Δ_1, …, Δ_s); with W = A⁻¹,
+//   K_i = (1/h) Σ_j w_ij Δ_j,  v_i = dexp(Δ_i) K_i,  L_i = (1/h) Σ_j w_ij (v_j − v_n),
+// and the s·n stage residuals are r_i above. Gauss is A-stable with |R(iy)| = 1: the linear
+// undamped modes keep their amplitude at every step size (no numerical dissipation). RKMK is not
+// symmetric on the group (its chart is centred at q_n, not at the step midpoint; GNI §IV.8.2),
+// so energy conservation is not guaranteed by the construction: it is measured
+// (docs/displacement-dynamics.md).
+//
+// Stage equations: simplified Newton (Hairer & Wanner, "Solving ODEs II", §IV.8) with the
+// iteration matrix frozen at the step start (Δ = 0, v_n, v˙_n, t_n + h/2): dexp ≈ I and
+//   J ≈ I ⊗ K₀ + (W/h) ⊗ C₀ + (W/h)² ⊗ M₀,   K₀ = ∂r/∂q, C₀ = ∂r/∂v, M₀ = ∂r/∂v˙.
+// With W = S Λ S⁻¹ (eigenvalues of A⁻¹: one conjugate pair for s = 2; one real value and one pair
+// for s = 3) the system decouples into one sparse matrix per eigenvalue,
+//   E(λ) = K₀ + (λ/h) C₀ + (λ/h)² M₀,
+// each of the problem's pattern: the real one factored by KLU (core/sparse_lu.hpp), the complex
+// one by Eigen's SparseLU in complex arithmetic; the conjugate partner's solution is the complex
+// conjugate. No dense stage matrix is formed. The convergence test is the project's
+// (core/convergence.hpp) on the stacked stage residuals and corrections.
+#pragma once
+
+#include <functional>
+
+#include "core/generalized_alpha.hpp"
+
+namespace rotbeam {
+
+// A SecondOrderProblem that can also be evaluated at any stage state (configuration exp(Δ) ∘ q_n,
+// velocity, acceleration, time), which the collocation needs besides the generalized-α calls.
+class CollocationProblem : public SecondOrderProblem {
+  public:
+    // v_n and v˙_n of the step start, in the numbering of the unknowns (size()).
+    virtual void start_rates(VecX& v, VecX& v_dot) const = 0;
+    // Moves the iterate to q = exp(Δ) ∘ q_n with velocity v and acceleration v˙, loads at t; the
+    // matrix of evaluate() is then ∂r/∂q dexp(Δ) + c_v ∂r/∂v + c_a ∂r/∂v˙. May throw
+    // SingularityError (a parameterization refusing the configuration; the iterate unchanged).
+    virtual void set_stage(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
+                           const Eigen::Ref<const VecX>& v_dot, double t, double c_v,
+                           double c_a) = 0;
+    // v = dexp(Δ) w: the velocity of the motion exp(Δ(t)) ∘ q_n when Δ˙ = w.
+    virtual void velocity_of_rate(const Eigen::Ref<const VecX>& delta,
+                                  const Eigen::Ref<const VecX>& w, Eigen::Ref<VecX> v) const = 0;
+};
+
+// The Gauss–Legendre tableau of `stages` (2 or 3; else InputError): nodes c, weights b, matrix A.
+struct GaussLegendre {
+    int stages = 0;
+    Eigen::MatrixXd A;
+    Eigen::VectorXd b, c;
+    static GaussLegendre of(int stages);
+    int order() const { return 2 * stages; }
+};
+
+// Fixed steps from start_time to end_time (settings.rho_infinity is not used), as
+// run_generalized_alpha: on_output at the initial state and every output_interval; the state at
+// an output has the consistent acceleration of its (q, v). A step whose stage Newton fails ends
+// the run with status diverged or singular, the step and time in the message.
+DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
+                                     const TimeIntegrationSettings& settings,
+                                     const NewtonSettings& newton,
+                                     const std::function<void(const TimeStepRecord&)>& on_output);
+
+}  // namespace rotbeam
