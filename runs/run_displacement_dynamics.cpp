@@ -9,6 +9,7 @@
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "estimates/accuracy_scale.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -16,6 +17,7 @@
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 #include "solve_static.hpp"
+#include "step_control_json.hpp"
 
 namespace rotbeam {
 
@@ -135,6 +137,9 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     ts.end_time = d.end_time;
     ts.output_interval = d.output_interval;
     ts.rho_infinity = d.rho_infinity;
+    ts.tolerance = d.time_tolerance;
+    ts.length_scale = estimate::reference_length(model);
+    ts.max_cuts = d.max_step_cuts;
     const DynamicOutcome out =
         run_generalized_alpha(problem, ts, settings, [&](const TimeStepRecord& s) {
             for (size_t i = 0; i < model.points.size(); ++i) {
@@ -155,6 +160,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                             {"time_step", d.time_step},
                             {"steps", out.steps},
                             {"newton_iterations", out.newton_iterations}};
+    add_step_control_json(ts.tolerance, out.control, result["integrator"]);
     result["counters"] = counters_json(problem.counters());
 }
 

@@ -64,6 +64,7 @@ class DisplacementDynamics : public SecondOrderProblem {
     void initialize_acceleration(double t) override;
     void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) override;
     void end_step() override;
+    double acceleration_change(double length) const override;
 
     // The static problem on the same mesh (its state is this problem's configuration): used for
     // `initial_state: static` (run_static on it at the loads of t = 0, then adopt_static_state()).
