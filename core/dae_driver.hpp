@@ -28,6 +28,7 @@
 
 #include "core/dae_system.hpp"
 #include "core/static_driver.hpp"
+#include "core/step_size_control.hpp"
 
 namespace rotbeam {
 
@@ -54,6 +55,12 @@ struct DaeSettings {
     double absolute_tolerance = 1e-6;  // IDA, times state_scale_i
     int max_order = 2;                 // IDA
     long max_steps = 1000000;          // IDA, per output interval
+    // Adaptive steps of the trapezoidal scheme when > 0 (core/step_size_control.hpp): the
+    // tolerance on the global error of the differential unknowns over their state scales; the
+    // runner gives IDA the same number as its relative and absolute tolerance.
+    double time_tolerance = 0.0;
+    // Fixed step: a step whose Newton fails is retried with h/2, at most this many times in a row.
+    int max_cuts = kDynamicStepCuts;
 };
 
 struct DaeOutcome {
@@ -67,6 +74,7 @@ struct DaeOutcome {
     long error_test_failures = 0;  // IDA
     long nonlinear_failures = 0;   // IDA
     int last_order = 0;            // IDA
+    StepControlRecord control;     // trapezoidal: cuts, adaptive steps
 };
 
 // Called at the start (after the initial conditions) and at every output time.

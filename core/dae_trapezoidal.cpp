@@ -8,6 +8,7 @@
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
+#include "core/step_size_control.hpp"
 #include "core/time_limit.hpp"
 
 namespace rotbeam {
@@ -55,9 +56,10 @@ class AdditiveSystem : public NonlinearSystem {
 // One trapezoidal step: unknown X_{n+1}, Ẋ_{n+1} = 2/Δt (X_{n+1} − X_n) − Ẋ_n.
 class TrapezoidalStep : public AdditiveSystem {
   public:
-    TrapezoidalStep(DaeSystem& dae, double dt) : AdditiveSystem(dae), dt_(dt) {}
-    void begin(double t, const VecX& xn, const VecX& xdn) {
+    explicit TrapezoidalStep(DaeSystem& dae) : AdditiveSystem(dae) {}
+    void begin(double t, double dt, const VecX& xn, const VecX& xdn) {
         t_ = t;
+        dt_ = dt;
         xn_ = xn;
         xdn_ = xdn;
         z_ = xn;  // predictor: the last state (the Newton's first iterate)
@@ -93,7 +95,7 @@ class TrapezoidalStep : public AdditiveSystem {
 
   private:
     VecX scale_;
-    double dt_;
+    double dt_ = 0.0;
     double t_ = 0.0;
     VecX xn_, xdn_;
 };
@@ -180,6 +182,211 @@ NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, V
     return out;
 }
 
+namespace {
+
+// The run of the fixed-step scheme: the state, the step (one Newton workspace for all steps: the
+// LU's symbolic analysis is made once per pattern instead of once per step, where it was 9.6 % of
+// the instructions of a mixed joined-beam run, docs/performance.md) and the bookkeeping.
+class TrapezoidalRun {
+  public:
+    TrapezoidalRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome)
+        : dae_(dae),
+          x_(x),
+          xdot_(xdot),
+          s_(s),
+          outcome_(outcome),
+          step_(dae),
+          workspace_(s.newton.dense_linear_solver ? SparseLUSolver::Kind::dense
+                                                  : SparseLUSolver::Kind::sparse_lu) {}
+
+    double time() const { return t_; }
+    void start(double t) { t_ = t; }
+    const VecX& x() const { return x_; }
+    const VecX& xdot() const { return xdot_; }
+    // The converged step's rate Ẋ_{n+1} (before accept).
+    const VecX& rate() { return step_.rate(); }
+    int iterations() const { return last_.iterations; }
+
+    // Tries the step of size h to t_next from the state at t (unchanged until accept).
+    bool try_step(double t_next, double h) {
+        step_.begin(t_next, h, x_, xdot_);
+        if (!scaled_) {
+            step_.set_scales();  // once, at the first step's iteration matrix
+            scaled_ = true;
+        }
+        try {
+            last_ = solve_newton(step_, s_.newton, workspace_);
+        } catch (const TimeLimitReached& e) {
+            rethrow_with_context(e, "in the step to time", t_next);
+        }
+        outcome_.newton_iterations += last_.iterations;
+        return last_.accepted();
+    }
+    void accept(double t_next, double h) {
+        stalls_.add(last_);
+        x_ = step_.state();
+        xdot_ = step_.rate();
+        t_ = t_next;
+        ++outcome_.steps;
+        outcome_.last_time = t_;
+        outcome_.control.add_step(h, outcome_.steps == 1);
+        if (step_observed()) {
+            notify_step({t_, static_cast<int>(outcome_.steps), outcome_.newton_iterations,
+                         dae_.counters().jacobian_evaluations});
+        }
+    }
+    // A Newton failure at the step h: true to retry with h/2, false (status set) past the cuts.
+    bool cut(double h, int cuts) {
+        if (cuts < s_.max_cuts) {
+            if (outcome_.control.step_cuts == 0) outcome_.control.first_cut_time = t_;
+            ++outcome_.control.step_cuts;
+            return true;
+        }
+        std::ostringstream m;
+        m << "fixed-step Newton failed at t = " << t_ + h << " (step " << outcome_.steps + 1
+          << ", Δt " << h;
+        if (cuts > 0) m << " after " << cuts << " cuts to h/2";
+        m << "): " << last_.failure;
+        fail(last_.singular ? SolveStatus::singular : SolveStatus::diverged, m.str());
+        return false;
+    }
+    void fail(SolveStatus status, const std::string& message) {
+        outcome_.status = status;
+        outcome_.message = message;
+    }
+    void finish(const std::string& what) {
+        const AssemblyCounters c = dae_.counters();
+        outcome_.residual_evaluations = c.residual_evaluations;
+        outcome_.jacobian_evaluations = c.jacobian_evaluations;
+        std::ostringstream m;
+        m << what;
+        if (outcome_.control.step_cuts > 0) {
+            m.precision(9);
+            m << "; " << outcome_.control.step_cuts
+              << " steps cut to h/2 after a Newton failure (first from t = "
+              << outcome_.control.first_cut_time << ")";
+        }
+        outcome_.message = m.str();
+        if (stalls_.count > 0) {
+            outcome_.status = SolveStatus::stalled_at_round_off;
+            outcome_.message += "; " + stalls_.describe("solves", s_.newton.residual_tolerance);
+        }
+    }
+    void add_initial(const NewtonOutcome& ic) { stalls_.add(ic); }
+
+  private:
+    DaeSystem& dae_;
+    VecX& x_;
+    VecX& xdot_;
+    const DaeSettings& s_;
+    DaeOutcome& outcome_;
+    TrapezoidalStep step_;
+    NewtonWorkspace workspace_;
+    StallSummary stalls_;
+    NewtonOutcome last_;
+    double t_ = 0.0;
+    bool scaled_ = false;
+};
+
+// Fixed steps on the grid start + n Δt; a step whose Newton fails is covered by halves of itself.
+bool run_fixed(TrapezoidalRun& run, const DaeSettings& s, const DaeOutput& output) {
+    const long steps = std::lround((s.end_time - s.start_time) / s.time_step);
+    const long every =
+        s.output_interval > 0.0 ? std::max(1L, std::lround(s.output_interval / s.time_step)) : 1;
+    for (long n = 1; n <= steps; ++n) {
+        const double t = s.start_time + static_cast<double>(n) * s.time_step;
+        check_time_limit("at time", run.time());
+        for (int cuts = 0;;) {
+            // Uncut: the case's Δt itself; cut: pieces of Δt / 2^cuts, the last landing on t.
+            const double piece = std::ldexp(s.time_step, -cuts);
+            const bool last = cuts == 0 || run.time() + piece >= t - 1e-9 * piece;
+            const double hs = cuts == 0 ? s.time_step : last ? t - run.time() : piece;
+            const double to = last ? t : run.time() + hs;
+            if (!run.try_step(to, hs)) {
+                if (!run.cut(hs, cuts)) return false;
+                ++cuts;
+                continue;
+            }
+            run.accept(to, hs);
+            if (last) break;
+        }
+        if (output && (n % every == 0 || n == steps))
+            output(t, run.x(), run.xdot(), run.iterations());
+    }
+    return true;
+}
+
+}  // namespace
+
+namespace {
+
+// Adaptive steps (core/step_size_control.hpp). The trapezoidal rule's local error is
+// −h³/12 X⃛ (Hairer, Nørsett & Wanner I, §II.7); X⃛ is estimated on the differential unknowns from
+// the rates of three consecutive states, X¨_{n+1/2} = (Ẋ_{n+1} − Ẋ_n)/h_n and
+// X⃛ ≈ 2 (X¨_{n+1/2} − X¨_{n−1/2}) / (h_n + h_{n−1}), each unknown divided by its state scale. The
+// first step has no X¨_{n−1/2}: it is taken at 1e-3 of the case's Δt (its error, ∝ h³, is then
+// 1e-9 of a full step's) and the control grows the step from there (at most 2× per step).
+bool run_adaptive(TrapezoidalRun& run, DaeSystem& dae, const DaeSettings& s,
+                  const DaeOutput& output, DaeOutcome& outcome) {
+    constexpr double kFirstStep = 1e-3;
+    const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time};
+    const double every = s.output_interval > 0.0 ? s.output_interval : s.time_step;
+    const VecX weight = dae.differential().cwiseQuotient(dae.state_scale());
+    double next_output = std::min(s.start_time + every, s.end_time);
+    double h = kFirstStep * s.time_step;
+    VecX accel_before;  // X¨_{n−1/2}, empty before the first step
+    double h_before = 0.0;
+    int cuts = 0;
+    while (run.time() < s.end_time) {
+        check_time_limit("at time", run.time());
+        const double t = run.time();
+        const bool lands = t + h >= next_output - 1e-9 * h;
+        const double hs = lands ? next_output - t : h;
+        const double to = lands ? next_output : t + hs;
+        if (control.underflow(hs)) {
+            std::ostringstream m;
+            m << "step size underflow at t = " << t << ": step " << hs << " below "
+              << StepSizeControl::kMinStep << " of the window (" << outcome.control.rejected_steps
+              << " steps rejected by the error test)";
+            run.fail(SolveStatus::diverged, m.str());
+            return false;
+        }
+        if (!run.try_step(to, hs)) {
+            if (!run.cut(hs, cuts)) return false;
+            ++cuts;
+            h = 0.5 * hs;
+            continue;
+        }
+        cuts = 0;
+        const VecX accel = (run.rate() - run.xdot()) / hs;
+        double grown = StepSizeControl::kMaxGrowth * hs;  // the first step: no estimate yet
+        if (accel_before.size() > 0) {
+            const double third = (2.0 * (accel - accel_before) / (hs + h_before))
+                                     .cwiseProduct(weight)
+                                     .lpNorm<Eigen::Infinity>();
+            const double r = control.ratio(hs * hs * hs / 12.0 * third, hs);
+            if (r > 1.0) {
+                ++outcome.control.rejected_steps;
+                h = control.next(hs, r);
+                continue;
+            }
+            grown = control.next(hs, r);
+        }
+        h = lands && grown >= hs ? std::max(h, grown) : grown;
+        accel_before = accel;
+        h_before = hs;
+        run.accept(to, hs);
+        if (lands) {
+            if (output) output(run.time(), run.x(), run.xdot(), run.iterations());
+            next_output = std::min(next_output + every, s.end_time);
+            if (s.end_time - run.time() <= 1e-9 * every) break;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                                  const DaeOutput& output) {
     ROTBEAM_VERIFY(s.time_step > 0.0 && s.end_time > s.start_time, "bad time interval");
@@ -194,56 +401,23 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
         return outcome;
     }
     outcome.newton_iterations += ic.iterations;
-    StallSummary stalls;
-    stalls.add(ic);
     if (output) output(s.start_time, x, xdot, ic.iterations);
-    const long steps = std::lround((s.end_time - s.start_time) / s.time_step);
-    const long every =
-        s.output_interval > 0.0 ? std::max(1L, std::lround(s.output_interval / s.time_step)) : 1;
-    TrapezoidalStep step(dae, s.time_step);
-    // One Newton workspace for all steps: the LU's symbolic analysis (ordering, elimination tree)
-    // is made once per pattern instead of once per step, where it was 9.6 % of the instructions
-    // of a mixed joined-beam run (docs/performance.md, joined-beam profile).
-    NewtonWorkspace workspace(s.newton.dense_linear_solver ? SparseLUSolver::Kind::dense
-                                                           : SparseLUSolver::Kind::sparse_lu);
-    for (long n = 1; n <= steps; ++n) {
-        const double t = s.start_time + static_cast<double>(n) * s.time_step;
-        check_time_limit("at time", t - s.time_step);
-        step.begin(t, x, xdot);
-        if (n == 1) step.set_scales();
-        NewtonOutcome out;
-        try {
-            out = solve_newton(step, s.newton, workspace);
-        } catch (const TimeLimitReached& e) {
-            rethrow_with_context(e, "in the step to time", t);
-        }
-        outcome.newton_iterations += out.iterations;
-        if (!out.accepted()) {
-            std::ostringstream m;
-            m << "fixed-step Newton failed at t = " << t << " (step " << n << ", Δt " << s.time_step
-              << "): " << out.failure;
-            outcome.status = out.singular ? SolveStatus::singular : SolveStatus::diverged;
-            outcome.message = m.str();
-            return outcome;
-        }
-        stalls.add(out);
-        x = step.state();
-        xdot = step.rate();
-        outcome.steps = n;
-        outcome.last_time = t;
-        if (output && (n % every == 0 || n == steps)) output(t, x, xdot, out.iterations);
-        if (step_observed()) {
-            notify_step({t, n, outcome.newton_iterations, dae.counters().jacobian_evaluations});
-        }
+    TrapezoidalRun run(dae, x, xdot, s, outcome);
+    run.add_initial(ic);
+    run.start(s.start_time);
+    if (s.time_tolerance > 0.0) {
+        if (!run_adaptive(run, dae, s, output, outcome)) return outcome;
+        std::ostringstream m;
+        m.precision(3);
+        m << "adaptive trapezoidal, " << outcome.steps << " steps, tolerance " << s.time_tolerance
+          << ", steps " << outcome.control.smallest_step << " … " << outcome.control.largest_step
+          << ", " << outcome.control.rejected_steps << " rejected";
+        run.finish(m.str());
+        return outcome;
     }
-    const AssemblyCounters c = dae.counters();
-    outcome.residual_evaluations = c.residual_evaluations;
-    outcome.jacobian_evaluations = c.jacobian_evaluations;
-    outcome.message = "fixed-step trapezoidal, " + std::to_string(steps) + " steps";
-    if (stalls.count > 0) {
-        outcome.status = SolveStatus::stalled_at_round_off;
-        outcome.message += "; " + stalls.describe("solves", s.newton.residual_tolerance);
-    }
+    if (!run_fixed(run, s, output)) return outcome;
+    run.finish("fixed-step trapezoidal, " +
+               std::to_string(std::lround((s.end_time - s.start_time) / s.time_step)) + " steps");
     return outcome;
 }
 

@@ -30,6 +30,7 @@
 
 #include "core/nonlinear_system.hpp"
 #include "core/static_driver.hpp"
+#include "core/step_size_control.hpp"
 
 namespace rotbeam {
 
@@ -41,6 +42,14 @@ struct GeneralizedAlpha {
     double acceleration_slope(double h) const {
         return (1.0 - alpha_m) / ((1.0 - alpha_f) * beta * h * h);
     }
+    // The local error of the configuration update, c h² (a_{n+1} − a_n) (Zienkiewicz & Xie 1991,
+    // "A simple error estimator and adaptive time stepping procedure for dynamic analysis",
+    // Earthquake Eng. Struct. Dyn. 20, Eq. 9: (β − 1/6) h² (ü_{n+1} − ü_n) for Newmark). Here a is
+    // the pseudo-acceleration, a_n ≈ v˙(t_n + δh) with δ = α_m − α_f = ½ − γ (second-order
+    // consistency), so Δ = h v_n + h² (½ − β) a_n + h² β a_{n+1} = h v + h²/2 v˙ + h³ (β + δ/2) v⃛
+    // against the exact h v + h²/2 v˙ + h³/6 v⃛: c = β − γ/2 + 1/12, and a_{n+1} − a_n ≈ h v⃛.
+    // ρ∞ = 1 (β = ¼, γ = ½): c = 1/12, the trapezoidal rule's; ρ∞ = 0.5: 1/9.
+    double local_error_coefficient() const { return beta - 0.5 * gamma + 1.0 / 12.0; }
 };
 
 // A second-order system driven by the integrator. Its NonlinearSystem unknowns are the increment
@@ -55,6 +64,10 @@ class SecondOrderProblem : public NonlinearSystem {
     virtual void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) = 0;
     // Accept the converged step: q_n, v_n, v˙_n, a_n ← the values at n+1.
     virtual void end_step() = 0;
+    // For adaptive steps, after a converged step (before end_step): max over the nodes of
+    // |a_{n+1} − a_n| of the pseudo-accelerations, translations divided by `length`, rotations
+    // in rad. A problem without it cannot run with adaptive steps (SolverError).
+    virtual double acceleration_change(double length) const;
 };
 
 struct TimeIntegrationSettings {
@@ -63,6 +76,13 @@ struct TimeIntegrationSettings {
     double end_time = 0.0;
     double output_interval = 0.0;  // 0: every step
     double rho_infinity = 1.0;
+    // Adaptive steps when > 0 (core/step_size_control.hpp): the tolerance on the global error of
+    // the configuration over the window, translations divided by length_scale, rotations in rad.
+    // time_step is then the first step's size. Outputs land exactly on the output times.
+    double tolerance = 0.0;
+    double length_scale = 1.0;
+    // A step whose Newton fails is retried with h/2, at most max_cuts times in a row (0: off).
+    int max_cuts = kDynamicStepCuts;
 };
 
 struct TimeStepRecord {
@@ -76,12 +96,17 @@ struct DynamicOutcome {
     int steps = 0;  // converged steps
     long newton_iterations = 0;
     double last_time = 0.0;  // the state the problem is left in
+    StepControlRecord control;
 };
 
-// Fixed steps from start_time to end_time (the last step lands on end_time). `on_output` is
-// called at the initial state and every output_interval (and at end_time), the problem being at
-// that state. A step whose Newton fails ends the run with status diverged or singular, the time
-// and step in the message (no step cutting: the step size is part of what is studied).
+// Fixed steps from start_time to end_time (the last step lands on end_time), or adaptive steps
+// (settings.tolerance > 0). `on_output` is called at the initial state and every output_interval
+// (and at end_time), the problem being at that state; adaptive steps with output_interval 0 output
+// every time_step. A step whose Newton fails is retried with h/2 from the unchanged state n (the
+// problem's begin_step again), up to max_cuts times in a row; a fixed-step run then continues on
+// its grid (the cut step's remainder in halves), says so in `step_cuts` and its message, and
+// produces exactly the results of the uncut run when nothing is cut. Past max_cuts the run ends
+// with status diverged or singular, the step, time, step size and Newton's failure in the message.
 DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,

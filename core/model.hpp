@@ -1,8 +1,9 @@
 // The beam model shared by every formulation, the continuum reference solver and the case loader.
 //
 // A model is plain data: named points, members between points (with a reference line, twist and
-// sections), constraints, loads, the analysis and the discretization/solver options. The case loader
-// (cases/loader) builds it from YAML and validates it; formulations read it and never change it.
+// sections), constraints, loads, the analysis and the discretization/solver options. The case
+// loader (cases/loader) builds it from YAML and validates it; formulations read it and never change
+// it.
 //
 // Conventions (docs/architecture.md): sections are 6×6, order [F1, F2, F3, M1, M2, M3], against
 // [ε11, 2ε12, 2ε13, κ1, κ2, κ3], in material axes (e1 along the reference line tangent). The
@@ -102,7 +103,7 @@ struct PointLoad {
 
 struct DistributedLoad {
     int member = -1;
-    Vec3 force = Vec3::Zero();   // per unit reference length, constant along the member
+    Vec3 force = Vec3::Zero();  // per unit reference length, constant along the member
     Vec3 moment = Vec3::Zero();
     LoadFrame frame = LoadFrame::dead;
     TimeFunction time;
@@ -153,13 +154,22 @@ struct StaticSettings {
 struct DynamicSettings {
     double time_step = 0.0;
     double end_time = 0.0;
-    double output_interval = 0.0;  // 0 = every step
-    double rho_infinity = 1.0;     // generalized-α spectral radius at infinity
+    double output_interval = 0.0;                   // 0 = every step
+    double rho_infinity = 1.0;                      // generalized-α spectral radius at infinity
     Integrator integrator = Integrator::automatic;  // which a formulation takes: combinations/
     // IDA (integrator "ida"): relative tolerance and absolute tolerance per unit of each unknown's
     // state scale (IDASVtolerances, docs/mixed-dynamics.md).
     double relative_tolerance = 1e-6;
     double absolute_tolerance = 1e-6;
+    // Adaptive time steps when > 0 (analysis.time_tolerance; not yet verified, see
+    // docs/displacement-dynamics.md "Time step control"): the
+    // tolerance on the global time error of the configuration over the window, translations
+    // relative to the model's reference length, rotations in rad (core/step_size_control.hpp);
+    // IDA takes it as its relative and absolute tolerance. time_step is then the first step.
+    double time_tolerance = 0.0;
+    // A time step whose Newton fails is retried with h/2, at most this many times in a row
+    // (analysis.max_step_cuts; 0: off). On by default: a result whose step was cut says so.
+    int max_step_cuts = 10;
     Vec3 initial_velocity = Vec3::Zero();
     // `rest`: start from the reference configuration at rest; `static`: start at rest from the
     // static equilibrium under the loads evaluated at t = 0 (a release, docs/benchmarks.md §8).
@@ -236,8 +246,8 @@ struct SolverSettings {
     bool line_search = true;
     LinearSolver linear_solver = LinearSolver::sparse;  // core/sparse_lu.hpp
     Driver driver = Driver::newton;
-    double force_scale = 0.0;            // 0 = derive from the model (loads and stiffness)
-    double length_scale = 0.0;           // 0 = derive from the model (total length)
+    double force_scale = 0.0;   // 0 = derive from the model (loads and stiffness)
+    double length_scale = 0.0;  // 0 = derive from the model (total length)
     // Assemble every term a formulation has, also those the scene makes zero or needless (inertia
     // and damping in a static analysis, damping of an undamped section, the load stiffness of a
     // dead load), with zero coefficients: the results are those of the default to round-off. It
@@ -246,12 +256,12 @@ struct SolverSettings {
 };
 
 struct ReferenceValue {
-    std::string id;         // unique within the case
-    std::string quantity;   // displacement | rotation_angle | frequency | ...
-    std::string point;      // for point quantities
+    std::string id;        // unique within the case
+    std::string quantity;  // displacement | rotation_angle | frequency | ...
+    std::string point;     // for point quantities
     std::optional<double> load_factor;
     std::optional<double> time;
-    int mode = 0;           // for frequencies (1-based)
+    int mode = 0;  // for frequencies (1-based)
     std::vector<double> value;
     std::vector<int> components;  // which components `value` lists (empty: all)
     double tolerance = 0.0;

@@ -22,15 +22,19 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
     Model companion = model;
     DynamicSettings& c = companion.analysis.dynamics;
     if (c.output_interval <= 0.0) c.output_interval = d.time_step;
-    if (uses_ida(model)) {
+    if (uses_ida(model) || d.time_tolerance > 0.0) {
         // BDF with a local error test per step: the global error is proportional to the tolerance
         // (Hairer, Nørsett & Wanner, tolerance proportionality), so the ratio 4 gives the same
-        // Richardson factor 1/(1 − 1/4) as halving a second-order step.
+        // Richardson factor 1/(1 − 1/4) as halving a second-order step. Adaptive steps of the
+        // second-order schemes (core/step_size_control.hpp): the step that meets a local error
+        // C h³ ≤ τ h / T is h ∝ τ^(1/2), so τ/4 halves every step: this companion is the
+        // adaptive run's Δt/2 companion, and its global error ∝ h² ∝ τ (order 1 in τ).
         plan.time_method = "tolerance/4";
         plan.time_order = 1.0;
         plan.time_ratio = 4.0;
         c.relative_tolerance = d.relative_tolerance / plan.time_ratio;
         c.absolute_tolerance = d.absolute_tolerance / plan.time_ratio;
+        c.time_tolerance = d.time_tolerance / plan.time_ratio;
         plan.time.push_back({"tolerance/4", std::move(companion)});
         return plan;
     }

@@ -10,6 +10,7 @@
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "estimates/accuracy_scale.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -18,6 +19,7 @@
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
 #include "solve_static.hpp"
+#include "step_control_json.hpp"
 
 namespace rotbeam {
 
@@ -167,6 +169,9 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     ts.end_time = d.end_time;
     ts.output_interval = d.output_interval;
     ts.rho_infinity = d.rho_infinity;
+    ts.tolerance = d.time_tolerance;
+    ts.length_scale = estimate::reference_length(model);
+    ts.max_cuts = d.max_step_cuts;
     const auto on_output = [&](const TimeStepRecord& s) {
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = problem.point_state(static_cast<int>(i));
@@ -193,12 +198,14 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                                 {"time_step", d.time_step},
                                 {"steps", out.steps},
                                 {"newton_iterations", out.newton_iterations}};
+        add_step_control_json(ts.tolerance, out.control, result["integrator"]);
     } else {
         result["integrator"] = {{"scheme", "Lie-group generalized-alpha"},
                                 {"rho_infinity", d.rho_infinity},
                                 {"time_step", d.time_step},
                                 {"steps", out.steps},
                                 {"newton_iterations", out.newton_iterations}};
+        add_step_control_json(ts.tolerance, out.control, result["integrator"]);
     }
     result["counters"] = counters_json(problem.counters());
 }

@@ -22,6 +22,7 @@
 #include "parameterizations/registry.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
 #include "solve_static.hpp"
+#include "step_control_json.hpp"
 
 namespace rotbeam {
 
@@ -186,6 +187,13 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     s.output_interval = d.output_interval;
     s.relative_tolerance = d.relative_tolerance;
     s.absolute_tolerance = d.absolute_tolerance;
+    s.time_tolerance = d.time_tolerance;
+    s.max_cuts = d.max_step_cuts;
+    if (ida && d.time_tolerance > 0.0) {
+        // IDA's local error test per step (not per unit step): its global error is proportional to
+        // the tolerance, not bounded by it; the time companion checks it (tolerance/4).
+        s.relative_tolerance = s.absolute_tolerance = d.time_tolerance;
+    }
     s.newton.max_iterations = model.solver.max_iterations;
     if (trace) s.newton.trace = &std::cerr;
     std::vector<PointState> states(model.points.size());
@@ -238,6 +246,8 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     if (ida) {
         result["dynamics"]["relative_tolerance"] = s.relative_tolerance;
         result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
+    } else {
+        add_step_control_json(s.time_tolerance, out.control, result["dynamics"]);
     }
     result["counters"] = counters_json(dyn.counters());
     set_analysis_status(result, out.status, out.message);

@@ -241,23 +241,34 @@ void check_memory(const YamlReader& r, const YAML::Node& root, const Model& mode
                "; use fewer elements or a lower order");
 }
 
+// The integrator a dynamic case names must be one its formulation takes
+// (combinations/registry.hpp).
+void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& model) {
+    const Formulation f = model.discretization.formulation;
+    const Integrator asked = model.analysis.dynamics.integrator;
+    if (model.analysis.kind != AnalysisKind::dynamic) return;
+    if (!comb::takes_integrator(f, asked)) {
+        r.fail(root["analysis"]["integrator"], "analysis.integrator",
+               "the " + std::string(choice_name(f)) + " formulation integrates with " +
+                   comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
+    }
+    // Adaptive steps exist for generalized-alpha, the trapezoidal scheme and IDA
+    // (core/step_size_control.hpp); the Gauss-Legendre schemes take fixed steps only.
+    const bool gauss =
+        asked == Integrator::gauss_legendre_2 || asked == Integrator::gauss_legendre_3;
+    if (gauss && model.analysis.dynamics.time_tolerance > 0.0) {
+        r.fail(root["analysis"]["time_tolerance"], "analysis.time_tolerance",
+               "not available with analysis.integrator: " + std::string(choice_name(asked)) +
+                   " (fixed steps only)");
+    }
+}
+
 // The displacement formulation's `midpoint` mass rule samples the inertia at one point per
 // element: its element mass has rank 6 while an element of order p couples 6(p + 1) unknowns, so
 // for p ≥ 2 the assembled mass is singular (an infinite eigenvalue per missing rank; the dense
 // Cholesky-based solver then turns round-off into frequencies of any size). Refused here rather
 // than replaced: the mass rule changes the frequencies at the level of the discretization error,
 // and the user asked for this one (docs/displacement-modal.md, "Mass rule").
-// The integrator a dynamic case names must be one its formulation takes
-// (combinations/registry.hpp).
-void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& model) {
-    const Formulation f = model.discretization.formulation;
-    const Integrator asked = model.analysis.dynamics.integrator;
-    if (model.analysis.kind != AnalysisKind::dynamic || comb::takes_integrator(f, asked)) return;
-    r.fail(root["analysis"]["integrator"], "analysis.integrator",
-           "the " + std::string(choice_name(f)) + " formulation integrates with " +
-               comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
-}
-
 void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& model) {
     const Discretization& d = model.discretization;
     if (!model.needs_inertia() || d.formulation != Formulation::displacement ||

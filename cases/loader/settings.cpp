@@ -24,7 +24,7 @@ namespace {
 const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKeys = {
     {"load_factors", {"static", "modal"}},
     {"substeps", {"static", "modal"}},
-    {"max_step_cuts", {"static", "modal"}},
+    {"max_step_cuts", {"static", "modal", "dynamic"}},
     {"time_step", {"dynamic"}},
     {"end_time", {"dynamic"}},
     {"output_interval", {"dynamic"}},
@@ -34,6 +34,7 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"initial_state", {"dynamic"}},
     {"relative_tolerance", {"dynamic"}},
     {"absolute_tolerance", {"dynamic"}},
+    {"time_tolerance", {"dynamic"}},
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}},
     {"estimate", {"static", "dynamic", "modal"}},
@@ -114,6 +115,23 @@ void read_dynamic(const YamlReader& r, const YAML::Node& n, DynamicSettings& d) 
     }
     if (n["initial_velocity"])
         d.initial_velocity = r.vec3(n["initial_velocity"], "analysis.initial_velocity");
+    if (n["time_tolerance"]) {
+        // Adaptive time steps (core/step_size_control.hpp): a relative global error, in the
+        // range of analysis.accuracy.
+        d.time_tolerance = r.positive(n["time_tolerance"], "analysis.time_tolerance");
+        if (d.time_tolerance < kMinAccuracy || d.time_tolerance >= kMaxAccuracy) {
+            std::ostringstream m;
+            m << "must lie in [" << kMinAccuracy << ", " << kMaxAccuracy << ")";
+            r.fail(n["time_tolerance"], "analysis.time_tolerance", m.str());
+        }
+    }
+    if (n["max_step_cuts"]) {
+        d.max_step_cuts = r.integer(n["max_step_cuts"], "analysis.max_step_cuts");
+        if (d.max_step_cuts < 0 || d.max_step_cuts > kMaxStepCuts) {
+            r.fail(n["max_step_cuts"], "analysis.max_step_cuts",
+                   "must lie in [0, " + std::to_string(kMaxStepCuts) + "]");
+        }
+    }
     // IDA's tolerances (the mixed formulation's `ida` integrator): refused for any other
     // integrator, which would ignore them, and outside [1e-14, 1): a weighted error below ~50 ε
     // cannot be met in double precision (IDA fails with IDA_TOO_MUCH_ACC), and 1 asks for nothing.

@@ -66,6 +66,7 @@ class DisplacementDynamics : public CollocationProblem {
     void initialize_acceleration(double t) override;
     void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) override;
     void end_step() override;
+    double acceleration_change(double length) const override;
 
     // CollocationProblem (vectors in the unknowns' numbering, 6 per free node: [u; rotation])
     void start_rates(VecX& v, VecX& v_dot) const override;

@@ -204,6 +204,18 @@ void DisplacementDynamics<P>::end_step() {
     delta_.setZero();
 }
 
+// The local error estimate's |a_{n+1} − a_n| (core/generalized_alpha.hpp), every free node.
+template <param::RotationParameterization P>
+double DisplacementDynamics<P>::acceleration_change(double length) const {
+    double worst = 0.0;
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        if (mesh().nodes[i].dof < 0) continue;
+        const Vec6 d = a_[i] - a_n_[i];
+        worst = std::max({worst, d.head<3>().norm() / length, d.tail<3>().norm()});
+    }
+    return worst;
+}
+
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::start_rates(VecX& v, VecX& v_dot) const {
     v.setZero(size());

@@ -1,0 +1,60 @@
+// Step-size control shared by the adaptive time integrators (generalized-α,
+// core/generalized_alpha.hpp; the trapezoidal DAE scheme, core/dae_driver.hpp), and the step cut
+// on a Newton failure that every fixed-step run has too.
+//
+// Error per unit step (Hairer, Nørsett & Wanner, "Solving ODEs I", §II.4, and Shampine's
+// "error per unit step"): a step of size h is accepted when its local error estimate e (scaled:
+// translations by a length, rotations in rad, other unknowns by their state scale) is at most
+//     τ h / T,
+// τ the tolerance on the GLOBAL error over the window of length T. For a stable undamped system
+// local errors propagate without growth (each mode is a rotation in its phase plane), so the
+// global error is at most their sum, Σ e ≤ τ Σ h / T = τ; the Δt/2 companion of the run checks
+// the global error afterwards (docs/error-estimates.md, Dynamics).
+// Both schemes have local error C h³ (second order). The ratio r = e / (τ h / T) then scales as h²,
+// so the step that makes r = 1 is h r^(−1/2); it is taken with a safety factor and bounded growth
+// and shrink per step.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace rotbeam {
+
+// A Newton failure at a step retries it with h/2, at most this many times in a row (h/1024):
+// below that the step is not what stops Newton (a chart at its singular angle, a load the beam
+// cannot carry), and the run stops with the cause.
+inline constexpr int kDynamicStepCuts = 10;
+
+// What a run's step control did (reported only when it did something: adaptive steps or a cut).
+struct StepControlRecord {
+    int step_cuts = 0;  // Newton failures recovered by halving the step
+    double first_cut_time = 0.0;
+    int rejected_steps = 0;  // adaptive: steps whose local error exceeded the allowance
+    double smallest_step = 0.0, largest_step = 0.0;  // of the converged steps
+    void add_step(double h, bool first) {
+        smallest_step = first ? h : std::min(smallest_step, h);
+        largest_step = std::max(largest_step, h);
+    }
+};
+
+struct StepSizeControl {
+    double tolerance = 0.0;  // τ: the global error allowed over the window (scaled)
+    double span = 1.0;       // T
+
+    static constexpr double kSafety = 0.9;     // aim at 0.9² of the allowed error
+    static constexpr double kMaxGrowth = 2.0;  // per accepted step
+    static constexpr double kMaxShrink = 0.2;  // per rejected step
+    // A step below this fraction of the window is a step-size underflow: the run stops.
+    static constexpr double kMinStep = 1e-12;
+
+    // e / (τ h / T): ≤ 1 accepts the step.
+    double ratio(double error, double h) const { return error / (tolerance * h / span); }
+    // The next step after a step h with ratio r (local error ∝ h³ against an allowance ∝ h).
+    double next(double h, double r) const {
+        const double f = r > 0.0 ? kSafety / std::sqrt(r) : kMaxGrowth;
+        return h * std::clamp(f, kMaxShrink, r > 1.0 ? kSafety : kMaxGrowth);
+    }
+    bool underflow(double h) const { return h < kMinStep * span; }
+};
+
+}  // namespace rotbeam
