@@ -448,8 +448,12 @@ int command_study(const Args& args) {
          {"reduced-follower", "",
           "joined-beam-dynamics: the follower load with the --quick sweep on the full window"},
          {"shard", "I/N",
-          "make only the I-th of N shards of the study's runs, for `rotbeam merge`"},
-         {"timings", "DIR", "with --shard: balance by the run times in DIR (repeatable)", true},
+          "make only the I-th of N shards of the study's runs, for `rotbeam merge` (default: "
+          "every run, no shard)"},
+         {"timings", "DIR",
+          "with --shard: balance by the run times in DIR (default: the cost model, "
+          "docs/distributed-runs.md)",
+          true},
          {"jobs", "N", "with --shard: worker threads, 1 to 256 (default: all cores)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {

@@ -64,10 +64,10 @@ int command_suite(const Args& args) {
          {"no-studies", "", "skip the static studies (docs/studies.md)"},
          {"shard", "I/N",
           "make only the I-th of N shards of the runs into --out, for `rotbeam merge` "
-          "(docs/distributed-runs.md)"},
+          "(default: every run, no shard; docs/distributed-runs.md)"},
          {"timings", "DIR",
-          "with --shard: balance by the run times in DIR (an earlier output or shard folder; "
-          "repeatable; the same for every shard)",
+          "with --shard: balance by the run times in DIR, an earlier output or shard folder, "
+          "the same for every shard (default: the cost model)",
           true}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
