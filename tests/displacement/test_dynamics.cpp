@@ -15,46 +15,15 @@
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
+#include "tests/displacement/free_vibration_runs.hpp"
 #include "tests/displacement/models.hpp"
 
 using namespace rotbeam;
+using rotbeam::test::first_mode_at_rest;
+using rotbeam::test::simulate;
+using rotbeam::test::TipHistory;
 
 namespace {
-
-struct TipHistory {
-    Vec3 u = Vec3::Zero();
-    Mat3 R = Mat3::Identity();
-    std::vector<double> energy;  // total energy at every step (when recorded)
-    long newton_iterations = 0;
-};
-
-// The runner's sequence (runs/run_displacement_dynamics.cpp): optional static start at
-// the loads of t = 0, then generalized-α to end_time; the tip state at the end.
-template <class P>
-TipHistory simulate(const Model& model, double dt, double end, double rho, bool record_energy) {
-    form::DisplacementDynamics<P> d(model);
-    const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
-    if (model.analysis.dynamics.initial_state == InitialState::static_equilibrium) {
-        d.statics().set_time(0.0);
-        const StaticOutcome s = run_static(d.statics(), {1.0}, newton, {});
-        BOOST_TEST_REQUIRE(has_solution(s.status));
-        d.adopt_static_state();
-    }
-    TimeIntegrationSettings ts;
-    ts.time_step = dt;
-    ts.end_time = end;
-    ts.rho_infinity = rho;
-    TipHistory h;
-    const DynamicOutcome out = run_generalized_alpha(d, ts, newton, [&](const TimeStepRecord&) {
-        if (record_energy) h.energy.push_back(d.energy().total());
-    });
-    BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
-    const int tip = model.point_index("tip");
-    h.u = d.point_state(tip).displacement;
-    h.R = d.point_state(tip).rotation;
-    h.newton_iterations = out.newton_iterations;
-    return h;
-}
 
 Model free_vibration() {
     return load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/free-vibration.yaml");
@@ -75,12 +44,12 @@ void check_order(double rho) {
     m.discretization.order = 1;
     constexpr double kEnd = 0.05;
     const std::vector<double> steps = {2e-4, 1e-4, 5e-5, 2.5e-5};
-    const TipHistory ref = simulate<P>(m, steps.back() / 16.0, kEnd, rho, false);
+    const TipHistory ref = simulate<P>(m, {0, rho}, steps.back() / 16.0, kEnd, 0.0, false);
     std::vector<double> eu, er;
     std::printf("%s, rho_inf = %.2f: dt [s], tip |du|/L, order, tip rotation error [rad], order\n",
                 std::string(P::kName).c_str(), rho);
     for (size_t k = 0; k < steps.size(); ++k) {
-        const TipHistory h = simulate<P>(m, steps[k], kEnd, rho, false);
+        const TipHistory h = simulate<P>(m, {0, rho}, steps[k], kEnd, 0.0, false);
         eu.push_back((h.u - ref.u).norm() / 1.0);  // L = 1 m
         er.push_back(so3::log_map(h.R * ref.R.transpose()).norm());
         if (k == 0) {
@@ -96,17 +65,6 @@ void check_order(double rho) {
         BOOST_TEST(pu >= 1.9);
         BOOST_TEST(pr >= 1.9);
     }
-}
-
-// The first mode of the unloaded model in its reference configuration (rotations the identity).
-form::ModalSolution first_mode_at_rest(const Model& m,
-                                       form::DisplacementDynamics<param::RotationVector>& d) {
-    VecX r;
-    SparseMatrix K;
-    d.statics().evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(m, form::build_mass_mesh(m),
-                                                      [](int) { return Mat3::Identity(); });
-    return form::solve_modal(K, M, 1);
 }
 
 }  // namespace
@@ -133,7 +91,7 @@ BOOST_AUTO_TEST_CASE(energy_is_conserved_at_small_amplitude_over_1000_steps) {
     m.point_loads[0].force *= 0.01;
     m.solver.residual_tolerance = 1e-14;
     m.solver.increment_tolerance = 1e-14;
-    const TipHistory h = simulate<param::Quaternion>(m, 1e-3, 1.0, 1.0, true);
+    const TipHistory h = simulate<param::Quaternion>(m, {0, 1.0}, 1e-3, 1.0, 0.0, true);
     BOOST_TEST_REQUIRE(h.energy.size() == 1001u);
     double worst = 0.0;
     for (double e : h.energy) worst = std::max(worst, std::abs(e - h.energy[0]) / h.energy[0]);
@@ -169,7 +127,7 @@ BOOST_AUTO_TEST_CASE(energy_is_bounded_without_drift_at_large_amplitude_over_100
     m.analysis.kind = AnalysisKind::dynamic;
     m.analysis.dynamics.initial_state = InitialState::static_equilibrium;
     constexpr double kPeriod = 0.12, kEnd = 12.0, kDt = 5e-4;
-    const TipHistory r = simulate<param::Quaternion>(m, kDt, kEnd, 1.0, true);
+    const TipHistory r = simulate<param::Quaternion>(m, {0, 1.0}, kDt, kEnd, 0.0, true);
     const double E0 = r.energy[0];
     const size_t window = static_cast<size_t>(10 * kPeriod / kDt);  // 10 periods
     double first = 0.0, last = 0.0, band = 0.0;

@@ -14,47 +14,13 @@
 #include "core/so3.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
+#include "tests/displacement/free_vibration_runs.hpp"
 
 using namespace rotbeam;
+using rotbeam::test::simulate;
+using rotbeam::test::TipHistory;
 
 namespace {
-
-struct TipHistory {
-    Vec3 u = Vec3::Zero();
-    Mat3 R = Mat3::Identity();
-    std::vector<double> energy;  // total energy at every output (when recorded)
-    long iterations = 0;
-};
-
-// The runner's sequence (runs/run_displacement_dynamics.cpp): static start at the loads of t = 0,
-// then `stages`-stage Gauss (0: generalized-α with ρ∞ = 1) to `end`; the tip state at the end.
-template <class P>
-TipHistory simulate(const Model& model, int stages, double dt, double end, double output,
-                    bool record_energy) {
-    form::DisplacementDynamics<P> d(model);
-    const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
-    d.statics().set_time(0.0);
-    const StaticOutcome s = run_static(d.statics(), {1.0}, newton, {});
-    BOOST_TEST_REQUIRE(has_solution(s.status));
-    d.adopt_static_state();
-    TimeIntegrationSettings ts;
-    ts.time_step = dt;
-    ts.end_time = end;
-    ts.output_interval = output;
-    ts.rho_infinity = 1.0;
-    TipHistory h;
-    const auto on_output = [&](const TimeStepRecord&) {
-        if (record_energy) h.energy.push_back(d.energy().total());
-    };
-    const DynamicOutcome out = stages > 0 ? run_gauss_collocation(d, stages, ts, newton, on_output)
-                                          : run_generalized_alpha(d, ts, newton, on_output);
-    BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
-    const int tip = model.point_index("tip");
-    h.u = d.point_state(tip).displacement;
-    h.R = d.point_state(tip).rotation;
-    h.iterations = out.newton_iterations;
-    return h;
-}
 
 // The free-vibration case with 2 linear elements (as the generalized-α order test in
 // test_dynamics.cpp: the release puts an amplitude ∝ k⁻⁴ into bending mode k, and the coarse mesh
@@ -88,12 +54,12 @@ template <class P>
 void check_order(int stages, const std::vector<double>& steps) {
     const Model m = free_vibration();
     constexpr double kEnd = 0.5;
-    const TipHistory ref = simulate<P>(m, 3, 1.5625e-4, kEnd, 0.0, false);
+    const TipHistory ref = simulate<P>(m, {3, 1.0}, 1.5625e-4, kEnd, 0.0, false);
     std::vector<double> eu, er;
     std::printf("%s, Gauss-Legendre %d: dt [s], tip |du_z|/L, order, tip rotation error, order\n",
                 std::string(P::kName).c_str(), stages);
     for (size_t k = 0; k < steps.size(); ++k) {
-        const TipHistory h = simulate<P>(m, stages, steps[k], kEnd, 0.0, false);
+        const TipHistory h = simulate<P>(m, {stages, 1.0}, steps[k], kEnd, 0.0, false);
         eu.push_back(std::abs(h.u.z() - ref.u.z()) / 1.0);  // L = 1 m
         er.push_back(so3::log_map(h.R * ref.R.transpose()).norm());
         if (k == 0) {

@@ -11,24 +11,11 @@
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
+#include "tests/displacement/free_vibration_runs.hpp"
 #include "tests/displacement/models.hpp"
 
 using namespace rotbeam;
-
-namespace {
-
-// The first mode of the unloaded free-vibration model at rest (as test_dynamics.cpp).
-form::ModalSolution first_mode_at_rest(const Model& m,
-                                       form::DisplacementDynamics<param::RotationVector>& d) {
-    VecX r;
-    SparseMatrix K;
-    d.statics().evaluate(r, &K);
-    const SparseMatrix M = form::assemble_mass_matrix(m, form::build_mass_mesh(m),
-                                                      [](int) { return Mat3::Identity(); });
-    return form::solve_modal(K, M, 1);
-}
-
-}  // namespace
+using rotbeam::test::first_mode_at_rest;
 
 BOOST_AUTO_TEST_SUITE(step_control)
 
