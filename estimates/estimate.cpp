@@ -178,6 +178,18 @@ TimedRun run_companion_timed(const CompanionRun& run, const Model& model) {
     return t;
 }
 
+bool refuse_estimate(nlohmann::json& result, nlohmann::json header, std::string refusal) {
+    const std::string status = result.value("status", std::string("error"));
+    if (!has_solution(status)) {
+        refusal = "the run's status is " + status + ": an untrustworthy solve gets no estimate";
+    }
+    if (refusal.empty()) return false;
+    header["status"] = "not-estimated";
+    header["reason"] = refusal;
+    result["estimate"] = std::move(header);
+    return true;
+}
+
 nlohmann::json estimate_off() { return {{"status", "off"}}; }
 
 void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun& run,
@@ -187,17 +199,7 @@ void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun
               {"theoretical_order", plan.theoretical_order},
               {"companions", json::array()},
               {"wall_seconds", 0.0}};
-    const std::string status = result.value("status", std::string("error"));
-    std::string refusal = plan.refusal;
-    if (!has_solution(status)) {
-        refusal = "the run's status is " + status + ": an untrustworthy solve gets no estimate";
-    }
-    if (!refusal.empty()) {
-        e["status"] = "not-estimated";
-        e["reason"] = refusal;
-        result["estimate"] = e;
-        return;
-    }
+    if (refuse_estimate(result, e, plan.refusal)) return;
     Comparison cmp;
     cmp.method = plan.method;
     if (plan.method == "h/2,h/4") {

@@ -50,6 +50,11 @@ int total_elements(const Model& model);
 void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun& run,
                   const ModePairing& pair_modes);
 
+// When the companions' plan refuses (`refusal` not empty) or the run has no solution (an
+// untrustworthy solve gets no estimate): sets result["estimate"] to `header` with status
+// not-estimated and the reason, and returns true.
+bool refuse_estimate(nlohmann::json& result, nlohmann::json header, std::string refusal);
+
 // The `estimate` of a result whose estimate was switched off: {status: "off"}.
 nlohmann::json estimate_off();
 

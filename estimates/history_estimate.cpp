@@ -327,15 +327,8 @@ double accumulated_phase(double difference, double amplitude, double order, doub
 void add_dynamic_estimate(const Model& model, nlohmann::json& result, const CompanionRun& run) {
     const DynamicPlan plan = plan_dynamic_companions(model);
     json e = header(plan);
-    const std::string status = result.value("status", std::string("error"));
-    std::string refusal = plan.space.refusal.empty() ? plan.time_refusal : plan.space.refusal;
-    if (!has_solution(status)) {
-        refusal = "the run's status is " + status + ": an untrustworthy solve gets no estimate";
-    }
-    if (!refusal.empty()) {
-        e["status"] = "not-estimated";
-        e["reason"] = refusal;
-        result["estimate"] = e;
+    if (refuse_estimate(result, e,
+                        plan.space.refusal.empty() ? plan.time_refusal : plan.space.refusal)) {
         return;
     }
     const std::clock_t cpu = std::clock();
