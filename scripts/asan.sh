@@ -29,7 +29,9 @@ else
   mapfile -t unit < <(ctest --preset asan -N -L unit -E "$heavy" 2>/dev/null |
     sed -n 's/^ *Test *#[0-9]*: //p' |
     while read -r t; do ninja -C build/asan -t query "$t" >/dev/null 2>&1 && echo "$t"; done)
-  cmake --build --preset asan -j "$(nproc)" --target rotbeam "${unit[@]}"
+  # rotbeam_completion: the generated bash completion, which test_cli_conventions checks and
+  # test_install_consumer installs.
+  cmake --build --preset asan -j "$(nproc)" --target rotbeam rotbeam_completion "${unit[@]}"
 fi
 
 step() { echo "asan: $1 ($(( $(date +%s) - t0 )) s so far)"; }
