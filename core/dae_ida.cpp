@@ -11,6 +11,7 @@
 #include <cmath>
 #include <exception>
 #include <sstream>
+#include <utility>
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
@@ -133,19 +134,19 @@ void configure(Resources& r, IdaUser& user, const DaeSettings& s, const VecX& x,
 }
 
 void statistics(void* ida, DaeOutcome& out) {
-    long v = 0;
-    IDAGetNumSteps(ida, &v);
-    out.steps = v;
-    IDAGetNumNonlinSolvIters(ida, &v);
-    out.newton_iterations = v;
-    IDAGetNumResEvals(ida, &v);
-    out.residual_evaluations = v;
-    IDAGetNumJacEvals(ida, &v);
-    out.jacobian_evaluations = v;
-    IDAGetNumErrTestFails(ida, &v);
-    out.error_test_failures = v;
-    IDAGetNumNonlinSolvConvFails(ida, &v);
-    out.nonlinear_failures = v;
+    using Counter = int (*)(void*, long*);
+    const std::pair<Counter, long DaeOutcome::*> counters[] = {
+        {IDAGetNumSteps, &DaeOutcome::steps},
+        {IDAGetNumNonlinSolvIters, &DaeOutcome::newton_iterations},
+        {IDAGetNumResEvals, &DaeOutcome::residual_evaluations},
+        {IDAGetNumJacEvals, &DaeOutcome::jacobian_evaluations},
+        {IDAGetNumErrTestFails, &DaeOutcome::error_test_failures},
+        {IDAGetNumNonlinSolvConvFails, &DaeOutcome::nonlinear_failures}};
+    for (const auto& [get, field] : counters) {
+        long v = 0;
+        get(ida, &v);
+        out.*field = v;
+    }
     int order = 0;
     IDAGetLastOrder(ida, &order);
     out.last_order = order;

@@ -21,19 +21,7 @@ namespace rotbeam::cli {
 
 namespace {
 
-constexpr int kOutputs = 10;  // output times per run (end_time / 10 apart)
 const char* const kPoints[] = {"root", "q1", "mid", "q3", "tip"};
-
-Model model_of(const MotionRunSpec& spec) {
-    Model m = oracle::manufactured_motion_model(spec.motion, spec.elements, spec.dt, spec.end_time);
-    m.discretization.formulation = spec.formulation;
-    m.discretization.rotation = spec.rotation;
-    m.discretization.order = spec.order;
-    m.discretization.mixed.wm_map = spec.wm_map;
-    m.analysis.dynamics.rho_infinity = spec.rho_infinity;
-    m.analysis.dynamics.output_interval = spec.end_time / kOutputs;
-    return m;
-}
 
 // Records the named points' state at output time t and their errors against the exact motion.
 struct Recorder {
@@ -225,6 +213,20 @@ std::string MotionRunSpec::label() const {
     return s.str();
 }
 
+Model motion_run_model(const MotionRunSpec& spec) {
+    Model m = oracle::manufactured_motion_model(spec.motion, spec.elements, spec.dt, spec.end_time);
+    m.discretization.formulation = spec.formulation;
+    m.discretization.rotation = spec.rotation;
+    m.discretization.order = spec.order;
+    m.discretization.mixed.wm_map = spec.wm_map;
+    m.analysis.dynamics.integrator = spec.integrator;
+    m.analysis.dynamics.rho_infinity = spec.rho_infinity;
+    m.analysis.dynamics.relative_tolerance = m.analysis.dynamics.absolute_tolerance =
+        spec.tolerance;
+    m.analysis.dynamics.output_interval = spec.end_time / kMotionOutputs;
+    return m;
+}
+
 oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
                                                ParameterizationId rotation) {
     oracle::ManufacturedMotion m;
@@ -238,7 +240,7 @@ oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
 }
 
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec) {
-    const Model model = model_of(spec);
+    const Model model = motion_run_model(spec);
     MotionRunResult result;
     const auto start = std::chrono::steady_clock::now();
     try {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/choices.hpp"
+#include "core/model.hpp"
 #include "core/oracles/manufactured_motion.hpp"
 #include "core/static_driver.hpp"
 #include "core/types.hpp"
@@ -61,6 +62,11 @@ struct MotionRunResult {
     std::vector<Mat3> R;
     bool ok() const { return has_solution(status); }
 };
+
+constexpr int kMotionOutputs = 10;  // output times per run: end_time / 10 apart, and t = 0
+
+// The model of a run: the manufactured motion's with the spec's discretization and time scheme.
+Model motion_run_model(const MotionRunSpec& spec);
 
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec);
 

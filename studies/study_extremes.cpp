@@ -180,10 +180,6 @@ void sweep_table(const StudyOptions& o, const std::string& key, const std::vecto
     md << "\n![extremes-" << key << ".png](extremes-" << key << ".png)\n\n";
 }
 
-}  // namespace
-
-namespace {
-
 std::vector<double> slenderness_ratios(bool quick) {
     return quick ? std::vector<double>{10, 1e3, 1e5} : std::vector<double>{10, 100, 1e3, 1e4, 1e5};
 }
@@ -204,53 +200,84 @@ TipRun tiny_load_run(const Variant& v, double scale) {
     return tip_run(v, SquareSection(0.01), scale);
 }
 
+// One sweep of the tip-loaded cantilever: its parameter, how a run is made at a value, and the
+// report's words about it.
+struct TipSweep {
+    const char* key;
+    const char* x_name;
+    bool with_force_scale;
+    std::vector<double> (*values)(bool quick);
+    TipRun (*run_at)(const Variant&, double);
+    const char* text;
+};
+
+const TipSweep kSlenderness{
+    "slenderness",
+    "L/h",
+    false,
+    slenderness_ratios,
+    slenderness_run,
+    "### Slenderness (shear locking)\n\nThe tip-loaded cantilever (L = 1 m, square h × h, 8 "
+    "elements) from L/h = 10 to 1e5, the load scaled so the tip deflects 1e-6 L (linear "
+    "regime). Plotted and tabulated: the relative tip-deflection error |δ_h − δ_T|/δ_T "
+    "against the Timoshenko deflection δ_T = PL³/(3EI) + PL/(κGA). Full integration of "
+    "order-1 displacement elements locks: the locked mesh deflects δ_h ≈ δ_T/(1 + c (L/h)²), "
+    "so its error c (L/h)²/(1 + c (L/h)²) grows like (L/h)² only while it is small and "
+    "saturates at 1 — the locked beam hardly deflects at all (c ≈ 5e-3 for 8 elements: "
+    "0.33 at L/h = 10, 0.98 at 100, 1 − 2e-4 at 1000). Reduced integration and the mixed "
+    "formulation do not lock: their error is the discretization's, independent of L/h. One "
+    "panel per discretization, the parameterizations inside (nested markers where they "
+    "coincide).\n\n"};
+
+const TipSweep kTinyLoads{
+    "tiny-loads",
+    "scale",
+    true,
+    load_scales,
+    tiny_load_run,
+    "### Tiny loads\n\nThe catalog's tip-loaded cantilever (L/h = 100, tip force 1 N → "
+    "δ ≈ 1.9e-3 L) with its load scaled by 1e-10 … 1: the relative error against Timoshenko "
+    "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise every "
+    "small-angle series branch); at scale 1 the geometric nonlinearity (δ/L)² ~ 4e-6 "
+    "appears. The driver always takes a Newton step before accepting a loaded state (a "
+    "load below tolerance × force scale was once accepted unsolved, error 1 with 0 "
+    "iterations). The `+force_scale` row fixes solver.force_scale at the load: it shows "
+    "why the default scale has a floor of 1e-4 EA — with a scale that small the residual's "
+    "round-off (~ε EA from the strain x′ − R e₁) exceeds 1e-12 of it and larger loads "
+    "cannot converge. In the figure a run without a result (diverged) is a red cross on "
+    "its panel's top edge, never joined to the curve.\n\n"};
+
+void plan_tip_sweep(const StudyOptions& o, const TipSweep& sweep, std::vector<StudyRun>& plan) {
+    plan_sweep(sweep.values(o.quick), o.quick, sweep.with_force_scale, sweep.run_at, plan);
+}
+
+nlohmann::json report_tip_sweep(const StudyOptions& o, const TipSweep& sweep,
+                                const StudyResults& results, std::ostringstream& md) {
+    md << sweep.text;
+    nlohmann::json out = nlohmann::json::array();
+    sweep_table(o, sweep.key, sweep.values(o.quick), sweep.x_name, o.quick, sweep.with_force_scale,
+                sweep.run_at, results, md, out);
+    return out;
+}
+
 }  // namespace
 
 void plan_extremes_slenderness(const StudyOptions& o, std::vector<StudyRun>& plan) {
-    plan_sweep(slenderness_ratios(o.quick), o.quick, false, slenderness_run, plan);
+    plan_tip_sweep(o, kSlenderness, plan);
 }
 
 void plan_extremes_tiny_loads(const StudyOptions& o, std::vector<StudyRun>& plan) {
-    plan_sweep(load_scales(o.quick), o.quick, true, tiny_load_run, plan);
+    plan_tip_sweep(o, kTinyLoads, plan);
 }
 
 nlohmann::json extremes_slenderness(const StudyOptions& o, const StudyResults& results,
                                     std::ostringstream& md) {
-    const std::vector<double> ratios = slenderness_ratios(o.quick);
-    md << "### Slenderness (shear locking)\n\nThe tip-loaded cantilever (L = 1 m, square h × h, 8 "
-          "elements) from L/h = 10 to 1e5, the load scaled so the tip deflects 1e-6 L (linear "
-          "regime). Plotted and tabulated: the relative tip-deflection error |δ_h − δ_T|/δ_T "
-          "against the Timoshenko deflection δ_T = PL³/(3EI) + PL/(κGA). Full integration of "
-          "order-1 displacement elements locks: the locked mesh deflects δ_h ≈ δ_T/(1 + c (L/h)²), "
-          "so its error c (L/h)²/(1 + c (L/h)²) grows like (L/h)² only while it is small and "
-          "saturates at 1 — the locked beam hardly deflects at all (c ≈ 5e-3 for 8 elements: "
-          "0.33 at L/h = 10, 0.98 at 100, 1 − 2e-4 at 1000). Reduced integration and the mixed "
-          "formulation do not lock: their error is the discretization's, independent of L/h. One "
-          "panel per discretization, the parameterizations inside (nested markers where they "
-          "coincide).\n\n";
-    nlohmann::json out = nlohmann::json::array();
-    sweep_table(o, "slenderness", ratios, "L/h", o.quick, false, slenderness_run, results, md, out);
-    return out;
+    return report_tip_sweep(o, kSlenderness, results, md);
 }
 
 nlohmann::json extremes_tiny_loads(const StudyOptions& o, const StudyResults& results,
                                    std::ostringstream& md) {
-    const std::vector<double> scales = load_scales(o.quick);
-    md << "### Tiny loads\n\nThe catalog's tip-loaded cantilever (L/h = 100, tip force 1 N → "
-          "δ ≈ 1.9e-3 L) with its load scaled by 1e-10 … 1: the relative error against Timoshenko "
-          "must stay at the discretization error down to 1e-10 (rotations ~1e-13 rad exercise "
-          "every "
-          "small-angle series branch); at scale 1 the geometric nonlinearity (δ/L)² ~ 4e-6 "
-          "appears. The driver always takes a Newton step before accepting a loaded state (a "
-          "load below tolerance × force scale was once accepted unsolved, error 1 with 0 "
-          "iterations). The `+force_scale` row fixes solver.force_scale at the load: it shows "
-          "why the default scale has a floor of 1e-4 EA — with a scale that small the residual's "
-          "round-off (~ε EA from the strain x′ − R e₁) exceeds 1e-12 of it and larger loads "
-          "cannot converge. In the figure a run without a result (diverged) is a red cross on "
-          "its panel's top edge, never joined to the curve.\n\n";
-    nlohmann::json out = nlohmann::json::array();
-    sweep_table(o, "tiny-loads", scales, "scale", o.quick, true, tiny_load_run, results, md, out);
-    return out;
+    return report_tip_sweep(o, kTinyLoads, results, md);
 }
 
 }  // namespace rotbeam::cli

@@ -210,21 +210,23 @@ double MixedStatics<P>::max_rotation_angle() const {
 // member in arc-length order, mixed_layout.cpp).
 template <param::RotationParameterization P>
 std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations() const {
+    const auto node_rotation = [this](int node) {
+        Vec3 u_hat;
+        Params c_hat;
+        node_motion(node, u_hat, c_hat);
+        return P::matrix(c_hat);
+    };
     std::vector<RotationStation> out;
-    Vec3 u_hat;
-    Params c_hat;
     for (int e = 0; e < numbering_.element_count; ++e) {
         const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
         if (out.empty() || out.back().member != el.member) {
-            node_motion(el.start_node, u_hat, c_hat);
-            out.push_back({el.member, true, P::matrix(c_hat)});
+            out.push_back({el.member, true, node_rotation(el.start_node)});
         }
         const MixedElementState<K> st = element_state(e);
         const Vec6 strain = el.S * (Vec6() << st.F, st.M).finished();
         const Vec3 kappa = strain.tail<3>();
         out.push_back({el.member, false, P::matrix(st.c), el.length * (el.Cab * kappa)});
-        node_motion(el.end_node, u_hat, c_hat);
-        out.push_back({el.member, true, P::matrix(c_hat)});
+        out.push_back({el.member, true, node_rotation(el.end_node)});
     }
     return out;
 }

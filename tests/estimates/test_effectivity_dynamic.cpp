@@ -40,21 +40,7 @@ namespace {
 
 using json = nlohmann::json;
 
-constexpr int kOutputs = 10;  // manufactured_motion_runs.cpp: end_time / 10 apart, and t = 0
 const char* const kPoints[] = {"root", "q1", "mid", "q3", "tip"};
-
-Model model_of(const cli::MotionRunSpec& spec) {
-    Model m = oracle::manufactured_motion_model(spec.motion, spec.elements, spec.dt, spec.end_time);
-    m.discretization.formulation = spec.formulation;
-    m.discretization.rotation = spec.rotation;
-    m.discretization.order = spec.order;
-    m.analysis.dynamics.rho_infinity = spec.rho_infinity;
-    m.analysis.dynamics.integrator = spec.integrator;
-    m.analysis.dynamics.relative_tolerance = m.analysis.dynamics.absolute_tolerance =
-        spec.tolerance;
-    m.analysis.dynamics.output_interval = spec.end_time / kOutputs;
-    return m;
-}
 
 // A motion run as the result JSON of a dynamic run (the fields the estimate reads).
 json result_json(const cli::MotionRunResult& r, const cli::MotionRunSpec& spec) {
@@ -72,7 +58,7 @@ json result_json(const cli::MotionRunResult& r, const cli::MotionRunSpec& spec) 
                                   {"rotation_angle", so3::rotation_angle(R)}};
         }
         steps.push_back(
-            {{"time", static_cast<double>(k) * spec.end_time / kOutputs}, {"points", points}});
+            {{"time", static_cast<double>(k) * spec.end_time / cli::kMotionOutputs}, {"points", points}});
     }
     return {{"status", r.status},
             {"message", r.message},
@@ -101,7 +87,7 @@ Level estimated_run(cli::MotionRunSpec spec, double dt) {
     const cli::MotionRunResult r = cli::run_manufactured_motion(spec);
     BOOST_TEST_REQUIRE(r.ok(), spec.label() << " dt " << dt << ": " << r.message);
     json result = result_json(r, spec);
-    estimate::add_dynamic_estimate(model_of(spec), result, [&](const Model& companion) {
+    estimate::add_dynamic_estimate(cli::motion_run_model(spec), result, [&](const Model& companion) {
         cli::MotionRunSpec c = spec;
         c.order = companion.discretization.order;
         c.elements = companion.members[0].elements;

@@ -1,5 +1,10 @@
-# Checks of rotbeam output folders shared by the suite tests (docs/durability.md); sourced after
-# scratch.sh (work, fail), with `compare` (scripts/compare-results.py) set by the caller.
+# Checks of rotbeam output folders shared by the suite tests (docs/durability.md), sourced as
+# `. results_check.sh ROTBEAM COMPARE_RESULTS_PY`: sets `rotbeam` and `compare`
+# (scripts/compare-results.py), brings scratch.sh's set-up (work, fail, failures) and defines
+# `same` and `complete_files`.
+rotbeam=$1
+compare=$2
+. "$(dirname "${BASH_SOURCE[0]}")/scratch.sh"
 
 same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
     "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {

@@ -6,11 +6,8 @@
 # change; this one, the whole suite, takes two whole suites (label `long`, not in CI).
 # Usage: suite_determinism.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-rotbeam=$1
-compare=$2
-# work (a scratch folder), fail and failures; same (compare-results.py) and complete_files.
-. "$(dirname "$0")/scratch.sh"
-. "$(dirname "$0")/results_check.sh"
+# rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
+. "$(dirname "$0")/results_check.sh" "$1" "$2"
 
 for jobs in 1 2; do
     start=$(date +%s)

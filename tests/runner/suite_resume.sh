@@ -11,11 +11,8 @@
 # - a `run` stopped by SIGINT or SIGTERM writes nothing.
 # Usage: suite_resume.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-rotbeam=$1
-compare=$2
-# work (a scratch folder), fail and failures; same (compare-results.py) and complete_files.
-. "$(dirname "$0")/scratch.sh"
-. "$(dirname "$0")/results_check.sh"
+# rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
+. "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
 set -m

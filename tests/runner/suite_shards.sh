@@ -13,10 +13,8 @@
 #   the file, and nothing is written.
 # Usage: suite_shards.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-rotbeam=$1
-compare=$2
-. "$(dirname "$0")/scratch.sh"
-. "$(dirname "$0")/results_check.sh"
+# rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
+. "$(dirname "$0")/results_check.sh" "$1" "$2"
 set -m
 suite=(suite --quick --no-studies --jobs 1)
 
