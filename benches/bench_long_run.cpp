@@ -152,7 +152,8 @@ double max_over_min(const std::array<Part, kParts>& parts) {
 }
 
 struct Variant {
-    std::string label;  // e.g. "displacement/quaternion, generalized-α"
+    std::string label;      // e.g. "joined-beam-dead displacement/quaternion, generalized-α"
+    std::string case_name;  // a catalog case with a dynamic analysis at Δt = kTimeStep
     Combination combination;
     Integrator integrator;  // automatic (the formulation's fixed step), trapezoidal, ida
     double end_time = 0.0;
@@ -161,7 +162,7 @@ struct Variant {
 };
 
 nlohmann::json run_variant(const Variant& v) {
-    RunSpec spec{"joined-beam-dead", v.combination, {}, 0};
+    RunSpec spec{v.case_name, v.combination, {}, 0};
     spec.overrides.push_back("analysis.end_time=" + std::to_string(v.end_time));
     if (v.output_interval > 0.0) {
         std::ostringstream s;
@@ -267,6 +268,7 @@ std::vector<Variant> variants(bool quick) {
     const Combination mixed{Formulation::mixed, param::id_of<param::WienerMilenkovic>()};
     // Each scheme runs twice: output at every step, and output at a coarser interval.
     struct Scheme {
+        std::string case_name;
         std::string label;
         Combination combination;
         Integrator integrator;
@@ -274,31 +276,59 @@ std::vector<Variant> variants(bool quick) {
         int output_every_steps;
         std::vector<std::string> overrides;
     };
-    // ρ∞ = 0.9, not the case's 1: without numerical dissipation the generalized-α step at
-    // t = 5.491 s fails (Newton: "damping found no monotone step"), docs/performance.md.
+    const Integrator ga = Integrator::automatic;
+    const Integrator gl2 = Integrator::gauss_legendre_2;
+    const Integrator gl3 = Integrator::gauss_legendre_3;
+    const std::string joined = "joined-beam-dead";
+    const std::string blade = "blade-mh104";
+    // ρ∞ = 0.9, not the case's 1, on the joined beam: without numerical dissipation the
+    // generalized-α run grows in energy until a step fails (t = 8.3 s), docs/performance.md. The
+    // Gauss–Legendre schemes conserve the energy of the free motion and need no dissipation.
+    const std::vector<std::string> rho09{"analysis.rho_infinity=0.9"};
     const std::vector<Scheme> schemes{
-        {"displacement/quaternion, generalized-α ρ∞ 0.9",
+        {joined, "displacement/quaternion, generalized-α ρ∞ 0.9", displacement, ga, fixed_end, 100,
+         rho09},
+        {joined,
+         "displacement/quaternion, Gauss–Legendre 2",
          displacement,
-         Integrator::automatic,
+         gl2,
          fixed_end,
          100,
-         {"analysis.rho_infinity=0.9"}},
-        {"mixed/wiener-milenkovic, trapezoidal",
+         {}},
+        {joined,
+         "displacement/quaternion, Gauss–Legendre 3",
+         displacement,
+         gl3,
+         fixed_end,
+         100,
+         {}},
+        {joined,
+         "mixed/wiener-milenkovic, trapezoidal",
          mixed,
          Integrator::trapezoidal,
          fixed_end,
          100,
          {}},
-        {"mixed/wiener-milenkovic, IDA 1e-6", mixed, Integrator::ida, ida_end, 5, {}}};
+        {joined, "mixed/wiener-milenkovic, IDA 1e-6", mixed, Integrator::ida, ida_end, 5, {}},
+        {blade, "displacement/quaternion, generalized-α", displacement, ga, fixed_end, 100, {}},
+        {blade, "displacement/quaternion, Gauss–Legendre 2", displacement, gl2, fixed_end, 100, {}},
+        {blade, "displacement/quaternion, Gauss–Legendre 3", displacement, gl3, fixed_end, 100, {}},
+        {blade,
+         "mixed/wiener-milenkovic, trapezoidal",
+         mixed,
+         Integrator::trapezoidal,
+         fixed_end,
+         100,
+         {}}};
     std::vector<Variant> out;
-    for (const Scheme& s : schemes) {
-        out.push_back({s.label, s.combination, s.integrator, s.end_time, 0.0, s.overrides});
-    }
-    for (const Scheme& s : schemes) {
-        const double every = s.output_every_steps * kTimeStep;
-        const std::string tag =
-            ", output every " + std::to_string(std::lround(every * 1e3)) + " ms";
-        out.push_back({s.label + tag, s.combination, s.integrator, s.end_time, every, s.overrides});
+    for (const bool sparse : {false, true}) {
+        for (const Scheme& s : schemes) {
+            const double every = sparse ? s.output_every_steps * kTimeStep : 0.0;
+            const std::string tag =
+                sparse ? ", output every " + std::to_string(std::lround(every * 1e3)) + " ms" : "";
+            out.push_back({s.case_name + " " + s.label + tag, s.case_name, s.combination,
+                           s.integrator, s.end_time, every, s.overrides});
+        }
     }
     return out;
 }
@@ -323,13 +353,13 @@ void print_row(const nlohmann::json& r) {
         s << std::fixed << std::setprecision(digits) << x;
         return s.str();
     };
-    std::cout << "  " << std::left << std::setw(62) << r["combination"].get<std::string>()
+    std::cout << "  " << std::left << std::setw(88) << r["combination"].get<std::string>()
               << std::right << std::setw(8) << r["steps"].get<long>() << std::setw(10)
               << us(d("first_median_step_seconds")) << std::setw(10)
               << us(d("last_median_step_seconds")) << std::setw(7) << fixed(d("last_over_first"), 3)
               << std::setw(7) << fixed(d("low_last_over_first"), 3) << std::setw(7)
               << fixed(d("last_over_first_per_iteration"), 3) << std::setw(7)
-              << fixed(d("max_over_min_median"), 3) << std::setw(11)
+              << fixed(d("max_over_min_median"), 3) << std::setw(12)
               << (fixed(d("first_newton_per_step"), 2) + "/" + fixed(d("last_newton_per_step"), 2))
               << std::setw(11)
               << (std::isfinite(d("first_jacobians_per_step"))
@@ -351,12 +381,12 @@ void print_row(const nlohmann::json& r) {
 
 nlohmann::json bench_long_run(bool quick) {
     std::cout
-        << "long-run (joined-beam-dead, paper mesh, Δt = 1 ms; cost per step over a long run: "
-           "first and last tenth)\n  "
-        << std::left << std::setw(62) << "combination" << std::right << std::setw(8) << "steps"
+        << "long-run (joined-beam-dead and blade-mh104, paper meshes, Δt = 1 ms; cost per step "
+           "over a long run: first and last tenth)\n  "
+        << std::left << std::setw(88) << "combination" << std::right << std::setw(8) << "steps"
         << std::setw(10) << "first µs" << std::setw(10) << "last µs" << std::setw(7) << "ratio"
         << std::setw(7) << "p10" << std::setw(7) << "/iter" << std::setw(7) << "spread"
-        << std::setw(11) << "Newton/st." << std::setw(11) << "Jac./st." << std::setw(9) << "HWM1 MB"
+        << std::setw(12) << "Newton/st." << std::setw(11) << "Jac./st." << std::setw(9) << "HWM1 MB"
         << std::setw(8) << "HWM10" << std::setw(8) << "B/step" << std::setw(8) << "B/out."
         << std::setw(7) << "CPU s"
         << "\n";
@@ -377,8 +407,7 @@ nlohmann::json bench_long_run(bool quick) {
                  "first to the last tenth per step (with output every step: the result's "
                  "history); B/out.: the heap in use (mallinfo2) grown over the same span per "
                  "output (one history entry)\n\n";
-    return {
-        {"name", "long-run"}, {"case", "joined-beam-dead"}, {"quick", quick}, {"results", rows}};
+    return {{"name", "long-run"}, {"quick", quick}, {"results", rows}};
 }
 
 }  // namespace rotbeam::cli
