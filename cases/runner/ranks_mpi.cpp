@@ -1,6 +1,7 @@
 // The ranks of `mpirun -np N rotbeam ...` sharing a job's units (ranks.hpp). Rank 0 holds the
 // queue, the units in decreasing expected time; a worker thread of any other rank asks rank 0 for
-// the next one, sending the unit it has just finished (for rank 0's progress line). Rank 0's own
+// its next one as it starts a unit, sending the unit it has just finished (for rank 0's progress
+// line). Rank 0's own
 // worker threads take from the queue directly, and one extra thread of rank 0 answers the requests,
 // so rank 0 computes like every other rank.
 //
@@ -35,7 +36,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kRequestTag = 1, kReplyTag = 2;
+constexpr int kRequestTag = 1, kDoneTag = 2, kReplyTag = 3;  // reply: kReplyTag + thread
 constexpr long long kNoUnit = -1;  // a request before the first unit; the answer "no more units"
 
 void wait_quietly(MPI_Request& request, MPI_Status* status) {
@@ -79,31 +80,40 @@ struct Ranks {
     int rank = 0, size = 1;
 };
 
-// Rank 0: its worker threads and the thread that answers the other ranks' requests.
+// Rank 0: its worker threads and the thread that answers the other ranks' messages: a request
+// {finished unit or kNoUnit, thread} is answered with the next unit (kNoUnit when none is left)
+// under the tag kReplyTag + thread; a last message {finished unit} under kDoneTag says that a
+// thread has ended.
 void serve_and_work(const Ranks& r, Progress& progress) {
     std::atomic<size_t> next{0};
     const auto take = [&]() -> long long {
         const size_t k = next++;
         return k < r.queue.size() ? static_cast<long long>(r.queue[k]) : kNoUnit;
     };
+    const auto finished = [&](long long unit) {
+        if (unit == kNoUnit) return;
+        const auto i = static_cast<size_t>(unit);
+        progress.finished(r.plan.units[i].label, r.expected[i]);
+    };
     std::thread answering([&] {
         try {
             const long long workers = static_cast<long long>(r.size - 1) * r.settings.jobs;
-            for (long long stopped = 0; stopped < workers;) {
-                long long finished = kNoUnit;
+            for (long long ended = 0; ended < workers;) {
+                long long message[2] = {kNoUnit, 0};
                 MPI_Request request;
                 MPI_Status status;
-                MPI_Irecv(&finished, 1, MPI_LONG_LONG, MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD,
+                MPI_Irecv(message, 2, MPI_LONG_LONG, MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD,
                           &request);
                 wait_quietly(request, &status);
-                if (finished != kNoUnit) {
-                    const auto i = static_cast<size_t>(finished);
-                    progress.finished(r.plan.units[i].label, r.expected[i]);
+                finished(message[0]);
+                if (status.MPI_TAG == kDoneTag) {
+                    ++ended;
+                    continue;
                 }
                 long long unit = take();
                 if (unit != kNoUnit) progress.started(r.plan.units[unit].label);
-                MPI_Send(&unit, 1, MPI_LONG_LONG, status.MPI_SOURCE, kReplyTag, MPI_COMM_WORLD);
-                if (unit == kNoUnit) ++stopped;
+                MPI_Send(&unit, 1, MPI_LONG_LONG, status.MPI_SOURCE,
+                         kReplyTag + static_cast<int>(message[1]), MPI_COMM_WORLD);
             }
         } catch (...) {
             abort_ranks(0, std::current_exception());
@@ -128,26 +138,46 @@ void serve_and_work(const Ranks& r, Progress& progress) {
     answering.join();
 }
 
-// A rank above 0: worker threads asking rank 0 for units until it has none left.
+// A rank above 0: worker threads asking rank 0 for units until it has none left. Each asks for
+// its next unit when it starts one, so the answer travels while it computes (under a loaded
+// machine a round trip of two 1 ms polls takes tens of ms, as long as a small unit).
 void ask_and_work(const Ranks& r) {
     std::mutex mpi;
     std::vector<std::thread> pool;
     for (int t = 0; t < r.settings.jobs; ++t) {
-        pool.emplace_back([&] {
+        pool.emplace_back([&, t] {
             try {
-                for (long long finished = kNoUnit;;) {
-                    long long unit = kNoUnit;
-                    {
-                        const std::lock_guard<std::mutex> lock(mpi);
-                        MPI_Send(&finished, 1, MPI_LONG_LONG, 0, kRequestTag, MPI_COMM_WORLD);
-                        MPI_Request request;
-                        MPI_Irecv(&unit, 1, MPI_LONG_LONG, 0, kReplyTag, MPI_COMM_WORLD, &request);
-                        wait_quietly(request, MPI_STATUS_IGNORE);
+                const auto ask = [&](long long finished, long long& unit, MPI_Request& reply) {
+                    const std::lock_guard<std::mutex> lock(mpi);
+                    long long message[2] = {finished, t};
+                    MPI_Send(message, 2, MPI_LONG_LONG, 0, kRequestTag, MPI_COMM_WORLD);
+                    MPI_Irecv(&unit, 1, MPI_LONG_LONG, 0, kReplyTag + t, MPI_COMM_WORLD, &reply);
+                };
+                const auto wait = [&](MPI_Request& reply) {
+                    for (int done = 0;;) {
+                        {
+                            const std::lock_guard<std::mutex> lock(mpi);
+                            MPI_Test(&reply, &done, MPI_STATUS_IGNORE);
+                        }
+                        if (done) return;
+                        std::this_thread::sleep_for(std::chrono::milliseconds(1));
                     }
-                    if (unit == kNoUnit) return;
+                };
+                long long unit = kNoUnit, previous = kNoUnit;
+                MPI_Request reply;
+                ask(kNoUnit, unit, reply);
+                wait(reply);
+                while (unit != kNoUnit) {
+                    long long next = kNoUnit;
+                    ask(previous, next, reply);  // `previous` has finished, `unit` starts
                     make_unit(r.plan, r.plan.units[unit], r.settings);
-                    finished = unit;
+                    previous = unit;
+                    wait(reply);
+                    unit = next;
                 }
+                const std::lock_guard<std::mutex> lock(mpi);
+                long long message[2] = {previous, t};
+                MPI_Send(message, 2, MPI_LONG_LONG, 0, kDoneTag, MPI_COMM_WORLD);
             } catch (...) {
                 abort_ranks(r.rank, std::current_exception());
             }
