@@ -3,7 +3,9 @@
 # clang-14, libclang-rt-14-dev (libFuzzer and the sanitizer runtimes) and llvm-14 (llvm-cov) are for
 # the fuzz preset (docs/fuzzing.md). libcmark-gfm-dev and libcmark-gfm-extensions-dev convert the
 # report's Markdown to HTML; chromium and python3-websockets run the report's browser test
-# (tests/reports/browser_check.py); python3-meshio reads the ParaView files back in a test. Idempotent: `apt-get update` runs only when something must be installed.
+# (tests/reports/browser_check.py); python3-meshio reads the ParaView files back in a test;
+# openmpi-bin and libopenmpi-dev are for the release-mpi preset (mpirun -np N rotbeam suite,
+# docs/distributed-runs.md). Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(
@@ -14,6 +16,7 @@ packages=(
   libcmark-gfm-dev libcmark-gfm-extensions-dev
   chromium python3-websockets
   clang-14 libclang-rt-14-dev llvm-14
+  openmpi-bin libopenmpi-dev
 )
 
 missing=()

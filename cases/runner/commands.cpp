@@ -451,16 +451,18 @@ int command_study(const Args& args) {
           "make only the I-th of N shards of the study's runs, for `rotbeam merge` (default: "
           "every run, no shard)"},
          {"timings", "DIR",
-          "with --shard: balance by the run times in DIR (default: the cost model, "
-          "docs/distributed-runs.md)",
+          "with --shard or under mpirun: balance by the run times in DIR (default: the cost "
+          "model, docs/distributed-runs.md; under mpirun: --out)",
           true},
-         {"jobs", "N", "with --shard: worker threads, 1 to 256 (default: all cores)"}}};
+         {"jobs", "N",
+          "with --shard: worker threads, 1 to 256 (default: all cores); under mpirun: per rank "
+          "(default 1)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
         return 0;
     }
-    if (const auto shard = a.value("shard")) {
+    {
         Job job;
         job.command = "study";
         job.study = a.positional[0];
@@ -468,12 +470,16 @@ int command_study(const Args& args) {
         job.reduced_follower = a.has("reduced-follower");
         const int jobs = a.positive_int("study", "jobs", kMaxJobs)
                              .value_or(std::max(1u, std::thread::hardware_concurrency()));
-        run_shard(job, ShardSettings{parse_shard("study", *shard), a.value("out").value_or("out"),
-                                     jobs, false, a.values("timings")});
-        return 0;
+        if (const auto code = run_distributed(
+                job, a.value("shard"),
+                ShardSettings{{}, a.value("out").value_or("out"), jobs, false, a.values("timings")},
+                a.has("jobs"))) {
+            return *code;
+        }
     }
     if (a.has("timings") || a.has("jobs"))
-        throw InputError("rotbeam study: --timings and --jobs: only with --shard I/N");
+        throw InputError(
+            "rotbeam study: --timings and --jobs: only with --shard I/N or under mpirun");
     if (a.positional[0] != "rotations") {
         run_named_study(a.positional[0], StudyOptions{a.value("out").value_or("out"),
                                                       a.has("quick"), a.has("reduced-follower")});

@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "ranks.hpp"
 #include "runs/catalog.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
@@ -202,16 +203,38 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
             p.units.push_back(u);
         }
     }
+    // Whole studies sharing a cache of references are one unit: made one after the other into one
+    // folder, they compute the references once, as one process does.
+    std::vector<std::vector<std::string>> groups;
     for (const std::string& name : p.whole) {
+        const auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& members) {
+            return !reference_group(name).empty() &&
+                   reference_group(members.front()) == reference_group(name);
+        });
+        if (g == groups.end()) {
+            groups.push_back({name});
+        } else {
+            g->push_back(name);
+        }
+    }
+    for (const std::vector<std::string>& members : groups) {
+        const std::string name =
+            members.size() == 1 ? members.front() : reference_group(members.front());
+        std::string names, labels;
         Unit u;
         u.kind = Unit::Kind::whole_study;
+        for (const std::string& m : members) {
+            names += m + "\n";
+            labels += (labels.empty() ? "" : " + ") + m;
+            u.modelled_seconds += whole_study_seconds(m, job.quick);
+            u.timed = u.timed || timed_study(m);
+        }
         u.file = "studies/" + name + ".done.json";
-        u.label = "study " + name;
-        u.key = stable_hash("study\n" + name + "\n" + (job.quick ? "quick" : "full") + "\n" +
+        u.label = "study " + labels;
+        u.key = stable_hash("study\n" + names + (job.quick ? "quick" : "full") + "\n" +
                             (job.reduced_follower ? "reduced-follower" : "") + "\n" + kGitDescribe);
-        u.modelled_seconds = whole_study_seconds(name, job.quick);
         u.study = name;
-        u.timed = timed_study(name);
+        u.studies = members;
         p.units.push_back(u);
     }
     return p;
@@ -249,8 +272,6 @@ UnitCheck check_unit(const std::string& dir, const Unit& u) {
     return {UnitState::made, ""};
 }
 
-namespace {
-
 void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
     if (!s.force && u.kind != Unit::Kind::case_run &&
         check_unit(s.dir, u).state == UnitState::made) {
@@ -281,8 +302,10 @@ void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
             const fs::path folder = fs::path(s.dir) / "studies" / u.study;
             fs::remove_all(folder);
             fs::remove(file);
-            run_study_whole(
-                u.study, StudyOptions{folder.string(), plan.job.quick, plan.job.reduced_follower});
+            for (const std::string& study : u.studies) {
+                run_study_whole(study, StudyOptions{folder.string(), plan.job.quick,
+                                                    plan.job.reduced_follower});
+            }
             const nlohmann::json record = {{"study", u.study},
                                            {"input_key", u.key},
                                            {"seconds", since(start)},
@@ -293,19 +316,32 @@ void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
     }
 }
 
-}  // namespace
+std::vector<double> expected_unit_seconds(const JobPlan& plan,
+                                          const std::vector<std::string>& timings) {
+    std::vector<double> modelled;
+    std::vector<std::optional<double>> measured;
+    for (const Unit& u : plan.units) {
+        modelled.push_back(u.modelled_seconds);
+        measured.push_back(measured_seconds(timings, u));
+    }
+    return expected_seconds(modelled, measured);
+}
+
+void write_shard_manifest(const JobPlan& plan, const ShardSettings& s,
+                          const std::vector<size_t>& units) {
+    nlohmann::json manifest = {
+        {"format", "rotbeam-shard"},       {"version", kGitDescribe}, {"job", plan.job.to_json()},
+        {"shard", s.shard.index},          {"of", s.shard.count},     {"timed_by", s.timings},
+        {"units", nlohmann::json::array()}};
+    for (const size_t i : units) manifest["units"].push_back(plan.units[i].file);
+    write_file_atomically((fs::path(s.dir) / "shard.json").string(), manifest.dump(1) + "\n");
+}
 
 void run_shard(const Job& job, const ShardSettings& s) {
     fs::create_directories(s.dir);
     remove_stale_temporaries(s.dir);
     const JobPlan plan = plan_job(job, s.dir);
-    std::vector<double> modelled;
-    std::vector<std::optional<double>> measured;
-    for (const Unit& u : plan.units) {
-        modelled.push_back(u.modelled_seconds);
-        measured.push_back(measured_seconds(s.timings, u));
-    }
-    const std::vector<double> expected = expected_seconds(modelled, measured);
+    const std::vector<double> expected = expected_unit_seconds(plan, s.timings);
     const std::vector<int> shard_of = assign_longest_first(expected, s.shard.count);
     std::vector<size_t> mine;
     for (size_t i = 0; i < plan.units.size(); ++i) {
@@ -314,16 +350,9 @@ void run_shard(const Job& job, const ShardSettings& s) {
     // Longest first within the shard too: the worker threads end together.
     std::stable_sort(mine.begin(), mine.end(),
                      [&](size_t a, size_t b) { return expected[a] > expected[b]; });
-    nlohmann::json manifest = {
-        {"format", "rotbeam-shard"},       {"version", kGitDescribe}, {"job", job.to_json()},
-        {"shard", s.shard.index},          {"of", s.shard.count},     {"timed_by", s.timings},
-        {"units", nlohmann::json::array()}};
     double my_seconds = 0.0;
-    for (const size_t i : mine) {
-        manifest["units"].push_back(plan.units[i].file);
-        my_seconds += expected[i];
-    }
-    write_file_atomically((fs::path(s.dir) / "shard.json").string(), manifest.dump(1) + "\n");
+    for (const size_t i : mine) my_seconds += expected[i];
+    write_shard_manifest(plan, s, mine);
     const std::string what = "rotbeam " + job.command + " shard " + std::to_string(s.shard.index) +
                              "/" + std::to_string(s.shard.count);
     std::cout << what << ": " << mine.size() << " of " << plan.units.size() << " units, expected "
@@ -342,6 +371,24 @@ void run_shard(const Job& job, const ShardSettings& s) {
     for_each_parallel(pooled.size(), s.jobs, [&](size_t k) { make(pooled[k]); });
     for (const size_t i : alone) make(i);
     std::cout << what << ": done → " << s.dir << " (merge with 'rotbeam merge DIR... --out DIR')\n";
+}
+
+std::optional<int> run_distributed(const Job& job, const std::optional<std::string>& shard,
+                                   ShardSettings settings, bool jobs_given) {
+    const std::string command = "rotbeam " + job.command;
+    const int ranks = launched_ranks(command);
+    if (ranks > 1) {
+        if (shard) {
+            throw InputError(command + ": --shard: not under mpirun (" + std::to_string(ranks) +
+                             " ranks): the ranks already share the runs");
+        }
+        if (!jobs_given) settings.jobs = 1;  // one rank per core is what mpirun -np N means
+        return run_over_ranks(job, settings);
+    }
+    if (!shard) return std::nullopt;
+    settings.shard = parse_shard(job.command, *shard);
+    run_shard(job, settings);
+    return 0;
 }
 
 }  // namespace rotbeam::cli

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,10 +46,11 @@ struct Unit {
     std::string label;  // what it is, for progress lines and messages
     std::string key;    // input key: the file is valid for this unit when it carries it
     double modelled_seconds = 0.0;
-    size_t plan = 0;   // case run: index into case_runs; study run: index into split
-    size_t index = 0;  // study run: index into split[plan].second
-    std::string study;
-    bool timed = false;  // its timings are its result: run alone, after the others
+    size_t plan = 0;    // case run: index into case_runs; study run: index into split
+    size_t index = 0;   // study run: index into split[plan].second
+    std::string study;  // a study run's study; a whole study's folder name
+    std::vector<std::string> studies;  // whole study: the studies it makes, in this order
+    bool timed = false;                // its timings are its result: run alone, after the others
 };
 
 struct JobPlan {
@@ -84,8 +86,31 @@ struct ShardSettings {
 // are kept). Each shard computes the same split from the same plan and timings.
 void run_shard(const Job& job, const ShardSettings& settings);
 
+// The executors' common parts (run_shard here, run_over_ranks in ranks.hpp):
+// every unit's expected seconds (its time in the first of `timings` that has its file, else the
+// cost model scaled to seconds);
+std::vector<double> expected_unit_seconds(const JobPlan& plan,
+                                          const std::vector<std::string>& timings);
+// makes one unit into settings.dir (kept when its file is valid and settings.force is off);
+void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& settings);
+// writes settings.dir/shard.json: the job, shard settings.shard and the files of `units`.
+void write_shard_manifest(const JobPlan& plan, const ShardSettings& settings,
+                          const std::vector<size_t>& units);
+
+// How a job is run when it is distributed; the one place suite, study (and any command whose runs
+// are a Job) choose it. `shard` given (--shard I/N): this process makes that shard (run_shard).
+// Started by mpirun with more than one rank: the ranks make the units together and rank 0 writes
+// the output into settings.dir (run_over_ranks, ranks.hpp). Otherwise returns nullopt: the command
+// runs the job in one process its own way. Returns the exit code otherwise. `jobs_given`: whether
+// --jobs was given (under mpirun its default is 1 thread per rank, not every core).
+std::optional<int> run_distributed(const Job& job, const std::optional<std::string>& shard,
+                                   ShardSettings settings, bool jobs_given);
+
 // `rotbeam merge DIR... --out DIR` (merge_command.cpp).
 int command_merge(const std::vector<std::string>& args);
+// Merges shard folders of one job into `out`: 0, kExitIncomplete (missing units listed on
+// stderr, nothing written), InputError naming a damaged file.
+int merge_shard_folders(const std::vector<std::string>& dirs, const std::string& out);
 
 // Exit code of `rotbeam merge` when runs are missing from the shard folders (nothing is written).
 constexpr int kExitIncomplete = 5;

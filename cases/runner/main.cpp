@@ -14,9 +14,10 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "core/version.hpp"
-#include "distributed.hpp"
 #include "dependency_versions.hpp"
+#include "distributed.hpp"
 #include "interrupt.hpp"
+#include "ranks.hpp"
 #include "runs/timing.hpp"
 
 namespace {
@@ -81,7 +82,8 @@ int main(int argc, char** argv) {
     if (all[0] == "--version") {
         std::cout << "rotbeam " << rotbeam::kGitDescribe << " (JSON schema_version "
                   << rotbeam::kSchemaVersion << ")\nbuilt with:\n"
-                  << rotbeam::cli::dependency_versions();
+                  << rotbeam::cli::dependency_versions() << "  " << rotbeam::cli::mpi_description()
+                  << "\n";
         return 0;
     }
     const auto it = commands().find(all[0]);

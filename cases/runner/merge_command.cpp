@@ -184,9 +184,13 @@ int command_merge(const std::vector<std::string>& args) {
     }
     const auto out = a.value("out");
     if (!out) throw InputError("rotbeam merge: --out DIR: required (where the merged output goes)");
+    return merge_shard_folders(a.positional, *out);
+}
+
+int merge_shard_folders(const std::vector<std::string>& dirs, const std::string& out) {
     std::vector<ShardFolder> shards;
-    const Job job = read_shards(a.positional, shards);
-    const JobPlan plan = plan_job(job, *out);
+    const Job job = read_shards(dirs, shards);
+    const JobPlan plan = plan_job(job, out);
     std::map<const Unit*, std::string> found;
     std::vector<const Unit*> missing;
     for (const Unit& u : plan.units) {
@@ -206,9 +210,9 @@ int command_merge(const std::vector<std::string>& args) {
         report_missing(plan, missing, shards);
         return kExitIncomplete;
     }
-    write_merged(plan, found, *out);
+    write_merged(plan, found, out);
     std::cout << "rotbeam merge: " << plan.units.size() << " runs from " << shards.size()
-              << " shard folders → " << *out << "\n";
+              << " shard folders → " << out << "\n";
     return 0;
 }
 

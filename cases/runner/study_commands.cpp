@@ -87,6 +87,10 @@ bool standalone_study(const std::string& name) {
     return name == "joined-beam-dynamics" || name == "joined-beam-agreement";
 }
 
+std::string reference_group(const std::string& name) {
+    return name == "joined-beam-dynamics" || name == "joined-beam-agreement" ? "joined-beam" : "";
+}
+
 const std::vector<std::pair<std::string, SplitStudy>>& split_studies() {
     static const std::vector<std::pair<std::string, SplitStudy>> table = {
         {"convergence", convergence_study()},

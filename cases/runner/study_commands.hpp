@@ -40,6 +40,12 @@ bool timed_study(const std::string& name);
 // name or `all`.
 bool standalone_study(const std::string& name);
 
+// The cache of references a study reads and writes under its output folder, shared with the other
+// studies of the same group ("joined-beam" for joined-beam-dynamics and -agreement: their
+// same-mesh references, joined-beam-references/); "" when it has none. Studies of one group run
+// in one folder, one after the other, so that the references are computed once.
+std::string reference_group(const std::string& name);
+
 // The names of the studies, in report order (the report reads DIR/study-NAME.md of each).
 std::vector<std::string> study_names();
 

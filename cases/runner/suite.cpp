@@ -3,7 +3,7 @@
 // writes one result file per run (skipped on a rerun when its inputs and the rotbeam version are
 // unchanged), the rotation study, and a report (index.md + index.html) with the runs table and the
 // plots made by gnuplot scripts in reports/. With --shard I/N it makes only one shard of the
-// runs and studies, for `rotbeam merge` (distributed.hpp).
+// runs and studies, for `rotbeam merge`; under mpirun the ranks share them (distributed.hpp).
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -66,8 +66,8 @@ int command_suite(const Args& args) {
           "make only the I-th of N shards of the runs into --out, for `rotbeam merge` "
           "(default: every run, no shard; docs/distributed-runs.md)"},
          {"timings", "DIR",
-          "with --shard: balance by the run times in DIR, an earlier output or shard folder, "
-          "the same for every shard (default: the cost model)",
+          "with --shard or under mpirun: balance by the run times in DIR, an earlier output or "
+          "shard folder, the same for every shard (default: the cost model; under mpirun: --out)",
           true}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
@@ -88,17 +88,17 @@ int command_suite(const Args& args) {
     // The static studies belong to the main job: on by default for the whole catalog, off
     // for a --cases selection unless --studies asks for them.
     const bool studies = !a.has("no-studies") && (a.has("studies") || !a.has("cases"));
-    if (a.has("timings") && !a.has("shard"))
-        throw InputError("rotbeam suite: --timings: only with --shard I/N");
-    if (const auto shard = a.value("shard")) {
-        Job job;
-        job.cases = glob;
-        job.quick = a.has("quick");
-        job.studies = studies;
-        run_shard(job, ShardSettings{parse_shard("suite", *shard), out, jobs, a.has("force"),
-                                     a.values("timings")});
-        return 0;
+    Job job;
+    job.cases = glob;
+    job.quick = a.has("quick");
+    job.studies = studies;
+    if (const auto code = run_distributed(
+            job, a.value("shard"),
+            ShardSettings{{}, out, jobs, a.has("force"), a.values("timings")}, a.has("jobs"))) {
+        return *code;
     }
+    if (a.has("timings"))
+        throw InputError("rotbeam suite: --timings: only with --shard I/N or under mpirun");
     const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"));
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Shards and merge (docs/distributed-runs.md), over `rotbeam suite --quick --no-studies` (its 20
 # runs, ~5 s), the quick convergence study (242 independent runs and a combine step) and the quick
-# joined-beam modal study (one whole study, so one of its two shards is empty):
+# joined-beam modal study (one whole study, so one of its two shards is empty), and the units of
+# `study all` (the joined-beam studies, which share their references, are one):
 # - three shards run one after another and merged give the same results as one run
 #   (scripts/compare-results.py: equal JSON apart from the timing fields);
 # - merge without one shard's folder exits 5, lists the missing runs with the command that makes
@@ -110,6 +111,17 @@ for study in convergence joined-beam-modal; do
         fail "merge of study $study failed"
     same "$work/study-one-$study" "$work/study-merged-$study" "study $study over two shards"
 done
+
+# The two joined-beam studies share their references (joined-beam-references/): one unit, made in
+# one folder one after the other, so that a shard computes them once. A shard of `study all` that
+# gets no unit (1000 shards) and a merge of it list the job's units without running any.
+"$rotbeam" study all --quick --shard 1000/1000 --out "$work/none" >/dev/null 2>&1 ||
+    fail "study all shard 1000/1000 failed"
+"$rotbeam" merge "$work/none" --out "$work/none-merged" >/dev/null 2>"$work/err.txt"
+grep -q "studies/joined-beam.done.json (study joined-beam-dynamics + joined-beam-agreement)" \
+    "$work/err.txt" || fail "the joined-beam studies are not one unit"
+grep -q "studies/joined-beam-dynamics.done.json" "$work/err.txt" &&
+    fail "joined-beam-dynamics is a unit of its own beside the pair"
 
 [ $failures -eq 0 ] && echo "shards: $total runs over three shards, merged = one run"
 exit $((failures > 0))
