@@ -51,7 +51,9 @@ Convergence accepted(const IterateMeasures& m, const ConvergenceTolerances& t) {
     if (m.residual <= t.residual && m.correction <= t.increment) {
         return Convergence::residual_and_correction;
     }
-    if (at_round_off(m) && m.last_step_full && m.residual >= 0.5 * m.previous_residual) {
+    const bool correction_stopped = !m.linear || m.correction >= 0.5 * m.previous_correction;
+    if (at_round_off(m) && m.last_step_full && m.residual >= 0.5 * m.previous_residual &&
+        correction_stopped) {
         return Convergence::stalled_at_round_off;
     }
     return Convergence::none;

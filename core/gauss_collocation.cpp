@@ -281,11 +281,12 @@ NewtonOutcome GaussStepper::step(double t, double h) {
     }
     predict(h);
     IterateMeasures m;
+    m.linear = true;
     const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
     int growing = 0;
     for (int k = 1; k <= newton_.max_iterations; ++k) {
         m.previous_residual = m.residual;
-        const double previous_correction = m.correction;
+        m.previous_correction = m.correction;
         m.residual = stage_residuals(t, h);
         if (!std::isfinite(m.residual)) {
             out.failure = "non-finite stage residual at iteration " + std::to_string(k);
@@ -315,7 +316,8 @@ NewtonOutcome GaussStepper::step(double t, double h) {
         // The simplified Newton converges linearly; two iterations in a row in which neither the
         // correction nor the residual shrinks mean the frozen matrix no longer describes the
         // stage equations (step too large).
-        const bool stuck = m.correction >= previous_correction && m.residual >= m.previous_residual;
+        const bool stuck =
+            m.correction >= m.previous_correction && m.residual >= m.previous_residual;
         growing = stuck ? growing + 1 : 0;
         if (growing >= 2) {
             std::ostringstream s;

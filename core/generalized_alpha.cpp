@@ -29,6 +29,8 @@ double SecondOrderProblem::acceleration_change(double /*length*/) const {
     throw SolverError("this problem has no local error estimate: adaptive steps are not available");
 }
 
+bool SecondOrderProblem::energy_terms(EnergyTerms& /*terms*/) { return false; }
+
 namespace {
 
 // One attempt of the step t → t_next = t + h from the unchanged state n.
@@ -65,15 +67,19 @@ class Stepper {
 
     const GeneralizedAlpha& scheme() const { return scheme_; }
     double time() const { return t_; }
-    void start(double t) { t_ = t; }
+    void start(double t) {
+        t_ = t;
+        balanced_ = problem_.energy_terms(terms_);
+        if (balanced_) balance_.start(terms_);
+    }
 
     // Tries the step of size h to t_next; on success it is converged but not yet accepted.
     bool try_step(double t_next, double h) {
         last_ = attempt_step(problem_, t_next, h, scheme_, newton_, workspace_);
         return last_.accepted();
     }
-    // Accepts the converged step.
-    void accept(double t_next, double h) {
+    // Accepts the converged step; false when the energy balance then stops the run.
+    bool accept(double t_next, double h) {
         stalls_.add(last_);
         problem_.end_step();
         t_ = t_next;
@@ -82,6 +88,11 @@ class Stepper {
         outcome_.last_time = t_;
         outcome_.control.add_step(h, outcome_.steps == 1);
         notify_step({t_, outcome_.steps, outcome_.newton_iterations, -1});
+        if (!balanced_) return true;
+        problem_.energy_terms(terms_);
+        if (!balance_.add(terms_, outcome_.steps, t_, h)) return true;
+        fail(SolveStatus::diverged, balance_.describe(outcome_.steps, t_));
+        return false;
     }
     int iterations() const { return last_.iterations; }
     // A Newton failure at the step of size h: counts a cut (returns true: retry with h/2) or, at
@@ -141,6 +152,9 @@ class Stepper {
     StallSummary stalls_;
     NewtonOutcome last_;
     double t_ = 0.0;
+    bool balanced_ = false;
+    EnergyTerms terms_;
+    EnergyBalance balance_;
 };
 
 // Fixed steps on the grid start + n h0; a step whose Newton fails is covered by halves (then
@@ -168,7 +182,7 @@ bool run_fixed(Stepper& stepper, const TimeIntegrationSettings& settings,
                 ++cuts;
                 continue;
             }
-            stepper.accept(to, hs);
+            if (!stepper.accept(to, hs)) return false;
             if (last) break;
         }
         const double t = stepper.time();
@@ -225,7 +239,7 @@ bool run_adaptive(Stepper& stepper, SecondOrderProblem& problem,
         const double grown = control.next(hs, r);
         // A step shortened to land on an output says nothing against the step before it.
         h = lands && grown >= hs ? std::max(h, grown) : grown;
-        stepper.accept(to, hs);
+        if (!stepper.accept(to, hs)) return false;
         if (lands) {
             if (on_output) on_output({stepper.time(), stepper.iterations()});
             next_output = std::min(next_output + every, settings.end_time);

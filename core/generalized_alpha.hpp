@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "core/energy_balance.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/static_driver.hpp"
 #include "core/step_size_control.hpp"
@@ -68,6 +69,10 @@ class SecondOrderProblem : public NonlinearSystem {
     // |a_{n+1} − a_n| of the pseudo-accelerations, translations divided by `length`, rotations
     // in rad. A problem without it cannot run with adaptive steps (SolverError).
     virtual double acceleration_change(double length) const;
+    // For the energy balance (core/energy_balance.hpp), at the current state: kinetic + strain
+    // energy, external loads and velocity, damping power. False (the default) when the problem
+    // cannot give them: its runs have no energy check.
+    virtual bool energy_terms(EnergyTerms& terms);
 };
 
 struct TimeIntegrationSettings {
@@ -107,6 +112,9 @@ struct DynamicOutcome {
 // its grid (the cut step's remainder in halves), says so in `step_cuts` and its message, and
 // produces exactly the results of the uncut run when nothing is cut. Past max_cuts the run ends
 // with status diverged or singular, the step, time, step size and Newton's failure in the message.
+// When the problem gives energy_terms, the energy balance is checked after every accepted step;
+// energy growth (core/energy_balance.hpp) ends the run with status diverged and a message naming
+// it, the step and time where it was detected and where it started.
 DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,

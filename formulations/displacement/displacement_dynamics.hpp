@@ -67,6 +67,7 @@ class DisplacementDynamics : public CollocationProblem {
     void begin_step(double t_next, double h, const GeneralizedAlpha& scheme) override;
     void end_step() override;
     double acceleration_change(double length) const override;
+    bool energy_terms(EnergyTerms& terms) override;
 
     // CollocationProblem (vectors in the unknowns' numbering, 6 per free node: [u; rotation])
     void start_rates(VecX& v, VecX& v_dot) const override;
@@ -106,6 +107,10 @@ class DisplacementDynamics : public CollocationProblem {
     // ∫ [ε˙; κ˙]ᵀ D [ε˙; κ˙] ds with seed 000 Eq. 10's spatial rates: the power the damping law
     // dissipates at the current state (its lack of objectivity: docs/benchmarks.md, Errata).
     double damping_dissipation();
+    // The external loads at the current state and load time, in the unknowns' numbering: point
+    // loads (follower ones turned by the node's rotation), distributed loads, load fields and
+    // gravity on the stiffness points — the load terms of the residual with the opposite sign.
+    void external_load(VecX& f);
 
   private:
     void update_iterate();

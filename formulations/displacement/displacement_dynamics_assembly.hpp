@@ -210,6 +210,61 @@ double DisplacementDynamics<P>::damping_dissipation() {
     return power;
 }
 
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::external_load(VecX& f) {
+    f.setZero(size());
+    for (const PointLoad& l : model_.point_loads) {
+        const int node = mesh().point_node[static_cast<size_t>(l.point)];
+        const int d = mesh().nodes[node].dof;
+        if (d < 0) continue;
+        const double factor = l.time(time_);
+        const Mat3 R = l.frame == LoadFrame::follower ? P::matrix(statics_.node_rotation(node))
+                                                      : Mat3::Identity();
+        f.segment<3>(d) += factor * (R * l.force);
+        f.segment<3>(d + 3) += factor * (R * l.moment);
+    }
+    for_each_point(mesh().elements,
+                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
+                       const QuadraturePoint& qp = e.qp[q];
+                       Vec6 load = Vec6::Zero();
+                       for (const DistributedLoad& l : model_.distributed_loads) {
+                           if (l.member != e.member) continue;
+                           const Mat3 R = l.frame == LoadFrame::follower ? rot.R : Mat3::Identity();
+                           load.head<3>() += l.time(time_) * (R * l.force);
+                           load.tail<3>() += l.time(time_) * (R * l.moment);
+                       }
+                       for (const LoadField& l : model_.load_fields) {
+                           if (l.member != e.member) continue;
+                           Vec3 force, moment;
+                           l.evaluate(qp.s, 1.0, time_, force, moment);
+                           load.head<3>() += force;
+                           load.tail<3>() += moment;
+                       }
+                       if (model_.gravity.squaredNorm() > 0.0) {
+                           const Vec3 eta = rot.R * (qp.Rr * qp.eta_star);
+                           load.head<3>() += qp.mass * model_.gravity;
+                           load.tail<3>() += qp.mass * eta.cross(model_.gravity);
+                       }
+                       for (int a = 0; a < static_cast<int>(e.nodes.size()); ++a) {
+                           const int d = mesh().nodes[e.nodes[a]].dof;
+                           if (d >= 0) f.segment<6>(d) += qp.weight * e.N(a, q) * load;
+                       }
+                   });
+}
+
+template <param::RotationParameterization P>
+bool DisplacementDynamics<P>::energy_terms(EnergyTerms& terms) {
+    terms.energy = energy().total();
+    external_load(terms.load);
+    terms.velocity.setZero(size());
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        const int d = mesh().nodes[i].dof;
+        if (d >= 0) terms.velocity.segment<6>(d) = v_[i];
+    }
+    terms.dissipation = damped_ ? damping_dissipation() : 0.0;
+    return true;
+}
+
 // Kinetic energy on the mass points (the quadratic form of the assembled mass matrix), strain
 // energy on the stiffness points: ½ eᵀ C e with C = Q C* Qᵀ equals ½ e*ᵀ C* e*, e* = Qᵀ e.
 template <param::RotationParameterization P>
