@@ -356,6 +356,7 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
     if (on_output) on_output({settings.start_time, 0});
     double t = settings.start_time;
     StallSummary stalls;
+    VecX kept_v(problem.size()), kept_v_dot(problem.size());
     for (long n = 1; n <= steps; ++n) {
         const double t_next =
             n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
@@ -385,9 +386,12 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
         outcome.last_time = t;
         if (n == steps || t >= next_output - 1e-9 * h0) {
             // The output state's acceleration (reactions) is the consistent one of its (q, v),
-            // not the stage polynomial's order-s extrapolation.
+            // not the stage polynomial's order-s extrapolation; the next step starts from the
+            // latter again, as it would without this output.
+            problem.start_rates(kept_v, kept_v_dot);
             problem.initialize_acceleration(t);
             if (on_output) on_output({t, out.iterations});
+            problem.set_start_acceleration(kept_v_dot);
             while (next_output <= t + 1e-9 * h0) next_output += every;
         }
         notify_step({t, outcome.steps, outcome.newton_iterations, -1});

@@ -48,6 +48,8 @@ class CollocationProblem : public SecondOrderProblem {
   public:
     // v_n and v˙_n of the step start, in the numbering of the unknowns (size()).
     virtual void start_rates(VecX& v, VecX& v_dot) const = 0;
+    // Sets v˙_n of the step start (in the numbering of the unknowns).
+    virtual void set_start_acceleration(const Eigen::Ref<const VecX>& v_dot) = 0;
     // Moves the iterate to q = exp(Δ) ∘ q_n with velocity v and acceleration v˙, loads at t; the
     // matrix of evaluate() is then ∂r/∂q dexp(Δ) + c_v ∂r/∂v + c_a ∂r/∂v˙. May throw
     // SingularityError (a parameterization refusing the configuration; the iterate unchanged).
@@ -70,8 +72,10 @@ struct GaussLegendre {
 
 // Fixed steps from start_time to end_time (settings.rho_infinity is not used), as
 // run_generalized_alpha: on_output at the initial state and every output_interval; the state at
-// an output has the consistent acceleration of its (q, v). A step whose stage Newton fails ends
-// the run with status diverged or singular, the step and time in the message.
+// an output has the consistent acceleration of its (q, v), for the report only: the next step
+// starts from the collocation polynomial's, so the output times do not change the motion. A step
+// whose stage Newton fails ends the run with status diverged or singular, the step and time in the
+// message.
 DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,

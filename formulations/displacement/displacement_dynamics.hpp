@@ -71,6 +71,7 @@ class DisplacementDynamics : public CollocationProblem {
 
     // CollocationProblem (vectors in the unknowns' numbering, 6 per free node: [u; rotation])
     void start_rates(VecX& v, VecX& v_dot) const override;
+    void set_start_acceleration(const Eigen::Ref<const VecX>& v_dot) override;
     void set_stage(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
                    const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override;
     void velocity_of_rate(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& w,

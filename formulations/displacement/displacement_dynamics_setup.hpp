@@ -228,6 +228,14 @@ void DisplacementDynamics<P>::start_rates(VecX& v, VecX& v_dot) const {
     }
 }
 
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::set_start_acceleration(const Eigen::Ref<const VecX>& v_dot) {
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        const int d = mesh().nodes[i].dof;
+        if (d >= 0) vd_n_[i] = v_dot.segment<6>(d);
+    }
+}
+
 // A stage of the collocation: the configuration, rates and loads are set directly (the
 // generalized-α history a_n is not used); evaluate() then uses the slopes c_v, c_a.
 template <param::RotationParameterization P>
