@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# rotbeam under AddressSanitizer + UndefinedBehaviorSanitizer (the asan preset: clang-14, -O1 -g1,
+# rotbeam under AddressSanitizer + UndefinedBehaviorSanitizer (the asan preset: clang-14, -O2 -g1,
 # assertions on, -fno-sanitize-recover). Every finding stops the process with a report on stderr;
 # this script fails on a non-zero ctest, on a sanitizer report in any program's stderr, and on an
 # exit code the command does not document.
 # Usage: scripts/asan.sh [--full]
 #   default (CI): the unit tests (ctest -L unit, the scripted ones included) but the six whose
 #                 build costs most (`heavy` below), the runs of `rotbeam suite --quick`, every
-#                 command's --help and every bad-case fixture through `check` and `run`;
+#                 command's --help, every bad-case fixture through `check` and `run` and every
+#                 damaged shard manifest through `merge`;
 #   --full:       also those six, every other ctest test (but the label `long`, which the asan test
 #                 preset leaves out), the quick suite's studies and every study path (slow: docs/quality-checks.md).
 set -euo pipefail
@@ -69,7 +70,7 @@ fi
 step "ctest"
 
 expect 0 -- "$rotbeam" --help
-for c in bench check import list reference run study suite verify; do
+for c in bench check completion import list merge reference run study suite verify; do
   expect 0 -- "$rotbeam" "$c" --help
 done
 step "every --help"
@@ -79,6 +80,15 @@ for f in cases/bad/*.yaml; do
   expect 2 -- "$rotbeam" run "$f" --quiet
 done
 step "cases/bad through check and run"
+
+# The damaged shard manifests (the seeds of fuzz_shard_manifest) through `merge`, each as the
+# shard.json of a folder of its own.
+for f in tests/fuzz/corpus/fuzz_shard_manifest/damaged-*.json; do
+  mkdir -p "$log/shard"
+  cp "$f" "$log/shard/shard.json"
+  expect 2 -- "$rotbeam" merge "$log/shard" --out "$log/merged"
+done
+step "damaged shard manifests through merge"
 
 # The quick suite's runs; its studies only with --full: sanitized they take more than 8 minutes
 # on 2 cores (the joined-beam modal and manufactured-time studies alone), the runs 50 s.

@@ -102,28 +102,6 @@ std::optional<double> measured_seconds(const std::vector<std::string>& folders, 
 
 }  // namespace
 
-nlohmann::json Job::to_json() const {
-    return {{"command", command}, {"study", study},     {"cases", cases},
-            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower}};
-}
-
-Job job_from_json(const nlohmann::json& j, const std::string& file) {
-    try {
-        Job job;
-        job.command = j.at("command").get<std::string>();
-        job.study = j.at("study").get<std::string>();
-        job.cases = j.at("cases").get<std::string>();
-        job.quick = j.at("quick").get<bool>();
-        job.studies = j.at("studies").get<bool>();
-        job.reduced_follower = j.at("reduced_follower").get<bool>();
-        if (job.command != "suite" && job.command != "study")
-            throw InputError("unknown command '" + job.command + "'");
-        return job;
-    } catch (const std::exception& e) {
-        throw InputError(file + ": job: not a rotbeam shard job (" + std::string(e.what()) + ")");
-    }
-}
-
 std::string shard_command(const Job& job, const Shard& shard, const std::string& dir) {
     std::string c = "rotbeam " + job.command;
     if (job.command == "study") c += " " + job.study;
@@ -240,6 +218,19 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
     return p;
 }
 
+namespace {
+
+// A relative path that stays inside the folder it is taken from: a non-empty JSON string, no root,
+// no `..` component.
+bool inside_folder(const nlohmann::json& name) {
+    if (!name.is_string() || name.get<std::string>().empty()) return false;
+    const fs::path p = name.get<std::string>();
+    if (p.has_root_path()) return false;
+    return std::none_of(p.begin(), p.end(), [](const fs::path& part) { return part == ".."; });
+}
+
+}  // namespace
+
 UnitCheck check_unit(const std::string& dir, const Unit& u) {
     const fs::path file = fs::path(dir) / u.file;
     if (!fs::exists(file)) return {UnitState::absent, ""};
@@ -249,7 +240,7 @@ UnitCheck check_unit(const std::string& dir, const Unit& u) {
     } catch (const nlohmann::json::exception& e) {
         return {UnitState::damaged, "not complete JSON (" + std::string(e.what()) + ")"};
     }
-    if (!j.is_object() || j.value("input_key", "") != u.key) {
+    if (!j.is_object() || !j.contains("input_key") || j["input_key"] != u.key) {
         return {UnitState::damaged,
                 "made from other inputs or another rotbeam version (input_key is not the "
                 "plan's)"};
@@ -261,6 +252,10 @@ UnitCheck check_unit(const std::string& dir, const Unit& u) {
             return {UnitState::damaged, "no list of the study's files"};
         const fs::path folder = fs::path(dir) / "studies" / u.study;
         for (const auto& name : j["files"]) {
+            // Merge copies these files into its output folder: names inside the study's folder
+            // only (relative, no `..`), never a path that would read or write elsewhere.
+            if (!inside_folder(name))
+                return {UnitState::damaged, "files: " + name.dump() + " is not a file name"};
             const fs::path f = folder / name.get<std::string>();
             if (!fs::exists(f)) return {UnitState::damaged, f.string() + " is missing"};
             if (f.extension() == ".json") {

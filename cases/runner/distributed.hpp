@@ -17,24 +17,12 @@
 #include <vector>
 
 #include "runs/shards.hpp"
+#include "shard_manifest.hpp"
 #include "studies/study_runs.hpp"
 #include "suite_plan.hpp"
 
 namespace rotbeam::cli {
 
-// What is run: the suite or a study, with the arguments that decide its results.
-struct Job {
-    std::string command = "suite";  // "suite" or "study"
-    std::string study;              // study: its name, or "all"
-    std::string cases = "*";        // suite: --cases
-    bool quick = false;
-    bool studies = true;  // suite: the static studies are part of the job
-    bool reduced_follower = false;
-    nlohmann::json to_json() const;
-    bool operator==(const Job&) const = default;
-};
-// The job of a shard.json; InputError naming `file` when it is not one.
-Job job_from_json(const nlohmann::json& j, const std::string& file);
 // The command that runs the job's shard I/N into `dir` (for messages).
 std::string shard_command(const Job& job, const Shard& shard, const std::string& dir);
 

@@ -29,49 +29,37 @@ struct ShardFolder {
     std::set<std::string> units;  // the unit files its shard.json lists
 };
 
-nlohmann::json parse_or_refuse(const std::string& file) {
-    if (!fs::exists(file)) {
-        throw InputError("rotbeam merge: " + file +
-                         ": missing: not a shard folder (written by `rotbeam suite|study ... "
-                         "--shard I/N --out DIR`)");
-    }
-    try {
-        return nlohmann::json::parse(read_text_file(file));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError("rotbeam merge: " + file + ": not complete JSON (" + e.what() + ")");
-    }
-}
-
 // The shard folders' manifests, checked: one job, made by this rotbeam version.
 Job read_shards(const std::vector<std::string>& dirs, std::vector<ShardFolder>& shards) {
     Job job;
     std::string first;
     for (const std::string& dir : dirs) {
         const std::string file = (fs::path(dir) / "shard.json").string();
-        const nlohmann::json j = parse_or_refuse(file);
-        if (!j.is_object() || j.value("format", "") != "rotbeam-shard")
-            throw InputError("rotbeam merge: " + file + ": format: not a rotbeam shard file");
-        if (j.value("version", "") != kGitDescribe) {
-            throw InputError("rotbeam merge: " + file + ": version: made by rotbeam " +
-                             j.value("version", "?") + ", this is rotbeam " + kGitDescribe +
-                             " (results of one version only)");
+        if (!fs::exists(file)) {
+            throw InputError("rotbeam merge: " + file +
+                             ": missing: not a shard folder (written by `rotbeam suite|study ... "
+                             "--shard I/N --out DIR`)");
         }
-        const Job shard_job = job_from_json(j.value("job", nlohmann::json()), file);
+        const ShardManifest m = [&] {
+            try {
+                return parse_shard_manifest(read_text_file(file), file);
+            } catch (const InputError& e) {
+                throw InputError("rotbeam merge: " + std::string(e.what()));
+            }
+        }();
+        if (m.version != kGitDescribe) {
+            throw InputError("rotbeam merge: " + file + ": version: made by rotbeam " +
+                             nlohmann::json(m.version).dump() + ", this is rotbeam " +
+                             kGitDescribe + " (results of one version only)");
+        }
         if (first.empty()) {
-            job = shard_job;
+            job = m.job;
             first = file;
-        } else if (!(shard_job == job)) {
-            throw InputError("rotbeam merge: " + file + ": job: " + shard_job.to_json().dump() +
+        } else if (!(m.job == job)) {
+            throw InputError("rotbeam merge: " + file + ": job: " + m.job.to_json().dump() +
                              " is another job than " + first + "'s " + job.to_json().dump());
         }
-        ShardFolder folder{dir, {}, {}};
-        try {
-            folder.shard = {j.at("shard").get<int>(), j.at("of").get<int>()};
-            for (const auto& u : j.at("units")) folder.units.insert(u.get<std::string>());
-        } catch (const nlohmann::json::exception& e) {
-            throw InputError("rotbeam merge: " + file + ": shard, of, units: " + e.what());
-        }
-        shards.push_back(std::move(folder));
+        shards.push_back({dir, m.shard, {m.units.begin(), m.units.end()}});
     }
     return job;
 }

@@ -21,6 +21,7 @@
 #include "cases/loader/case_loader.hpp"
 #include "cases/runner/arguments.hpp"
 #include "core/errors.hpp"
+#include "runs/shards.hpp"
 
 using rotbeam::cli::CommandSpec;
 using rotbeam::cli::OptionSpec;
@@ -50,7 +51,10 @@ const std::map<std::string, CommandSpec>& specs() {
            {"json", "FILE", ""},
            {"quiet", "", ""},
            {"trace-newton", "", ""},
-           {"time-limit", "SECONDS", ""}}}},
+           {"time-limit", "SECONDS", ""},
+           {"vtk", "DIR", ""},
+           {"estimate", "on|off", ""},
+           {"accuracy", "TOL", ""}}}},
         {"reference",
          {"reference",
           "CASE.yaml",
@@ -68,7 +72,9 @@ const std::map<std::string, CommandSpec>& specs() {
            {"samples", "N", ""},
            {"out", "DIR", ""},
            {"quick", "", ""},
-           {"reduced-follower", "", ""}}}},
+           {"reduced-follower", "", ""},
+           {"shard", "I/N", ""},
+           {"timings", "DIR", ""}}}},
         {"suite",
          {"suite",
           "",
@@ -81,7 +87,11 @@ const std::map<std::string, CommandSpec>& specs() {
            {"force", "", ""},
            {"quick", "", ""},
            {"studies", "", ""},
-           {"no-studies", "", ""}}}},
+           {"no-studies", "", ""},
+           {"shard", "I/N", ""},
+           {"timings", "DIR", ""}}}},
+        {"merge", {"merge", "SHARD_DIR...", 1, -1, "", {{"out", "DIR", ""}}}},
+        {"completion", {"completion", "bash", 1, 1, "", {{"out", "FILE", ""}}}},
         {"verify", {"verify", "[CASE ...]", 0, -1, "", {{"json", "FILE", ""}}}},
         {"import", {"import", "beamdyn DRIVER.inp", 2, 2, "", {{"out", "CASE.yaml", ""}}}},
         {"bench",
@@ -134,6 +144,7 @@ void parse(const std::vector<std::string>& argv) {
     (void)a.positive_int("bench", "repeats", rotbeam::cli::kMaxRepeats);
     (void)a.positive_int("study", "samples", rotbeam::cli::kMaxSamples, 2);
     (void)a.positive_number("run", "time-limit", rotbeam::cli::kMaxTimeLimit);
+    if (const auto shard = a.value("shard")) (void)rotbeam::cli::parse_shard(spec.name, *shard);
     if (spec.name == "check" || spec.name == "run" || spec.name == "reference") {
         const rotbeam::Model model = rotbeam::load_case_text(
             catalog_text(a.positional[0]), "case.yaml", rotbeam::cli::case_overrides(a));

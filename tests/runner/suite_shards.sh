@@ -10,8 +10,8 @@
 # - a shard killed with SIGKILL keeps its finished runs; merge lists the others; the same shard
 #   started again makes only those (the finished files are not touched) and the merge is then the
 #   same as one run;
-# - a truncated result file and a damaged shard.json are refused with exit 2 and one line naming
-#   the file, and nothing is written.
+# - a truncated result file, a damaged shard.json and a study record naming a file outside its
+#   folder are refused with exit 2 and one line naming the file, and nothing is written.
 # Usage: suite_shards.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
 # rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
@@ -122,6 +122,32 @@ grep -q "studies/joined-beam.done.json (study joined-beam-dynamics + joined-beam
     "$work/err.txt" || fail "the joined-beam studies are not one unit"
 grep -q "studies/joined-beam-dynamics.done.json" "$work/err.txt" &&
     fail "joined-beam-dynamics is a unit of its own beside the pair"
+
+# A whole study's record naming a file outside its folder (an absolute path, or `..`): merge copies
+# the files a record lists into its output, so such a name would read and write elsewhere. It is
+# refused by name, with exit 2 and nothing written.
+echo "not a result" >"$work/outside.txt"
+dirs=()
+for i in 1 2; do
+    d="$work/study-joined-beam-modal-$i"
+    if [ -e "$d/studies/joined-beam-modal.done.json" ]; then
+        cp -r "$d" "$work/escape"
+        d="$work/escape"
+        python3 - "$d/studies/joined-beam-modal.done.json" "$work/outside.txt" <<'PY'
+import json, sys
+record = json.load(open(sys.argv[1]))
+record["files"].append(sys.argv[2])
+json.dump(record, open(sys.argv[1], "w"))
+PY
+    fi
+    dirs+=("$d")
+done
+"$rotbeam" merge "${dirs[@]}" --out "$work/escaped" >/dev/null 2>"$work/err.txt"
+code=$?
+[ $code -eq 2 ] || fail "merge of a study record naming $work/outside.txt: exit $code, expected 2"
+grep -q "joined-beam-modal.done.json: files: \"$work/outside.txt\" is not a file name" \
+    "$work/err.txt" || fail "study record naming a path outside: $(cat "$work/err.txt")"
+[ -e "$work/escaped" ] && fail "merge of a study record naming a path outside wrote $work/escaped"
 
 [ $failures -eq 0 ] && echo "shards: $total runs over three shards, merged = one run"
 exit $((failures > 0))
