@@ -102,8 +102,9 @@ std::optional<double> measured_seconds(const std::vector<std::string>& folders, 
 }  // namespace
 
 nlohmann::json Job::to_json() const {
-    return {{"command", command}, {"study", study},     {"cases", cases},
-            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower}};
+    return {{"command", command},  {"study", study},     {"cases", cases},
+            {"quick", quick},      {"studies", studies}, {"reduced_follower", reduced_follower},
+            {"estimate", estimate}};
 }
 
 Job job_from_json(const nlohmann::json& j, const std::string& file) {
@@ -115,6 +116,7 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
         job.quick = j.at("quick").get<bool>();
         job.studies = j.at("studies").get<bool>();
         job.reduced_follower = j.at("reduced_follower").get<bool>();
+        job.estimate = j.at("estimate").get<bool>();
         if (job.command != "suite" && job.command != "study")
             throw InputError("unknown command '" + job.command + "'");
         return job;
@@ -131,6 +133,7 @@ std::string shard_command(const Job& job, const Shard& shard, const std::string&
     if (job.command == "suite" && job.cases != "*" && job.studies) c += " --studies";
     if (job.command == "suite" && job.cases == "*" && !job.studies) c += " --no-studies";
     if (job.reduced_follower) c += " --reduced-follower";
+    if (job.command == "suite" && !job.estimate) c += " --estimate off";
     return c + " --shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
            " --out " + dir;
 }
@@ -147,7 +150,7 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
             throw InputError("rotbeam suite: --cases: '" + job.cases +
                              "' matches no catalog case (see 'rotbeam list')");
         }
-        p.case_runs = plan_runs(job.cases, dir, job.quick);
+        p.case_runs = plan_runs(job.cases, dir, job.quick, job.estimate);
         if (job.studies) {
             for (const auto& entry : static_studies()) {
                 if (!standalone_study(entry.first)) studies.push_back(entry.first);
