@@ -55,7 +55,48 @@ double reference_length(const Model& model) {
     return l > 0.0 ? l : 1.0;
 }
 
+namespace {
+
+// A dynamic run (its estimate has `history`): each responding history's largest estimated error
+// (space + time) over its amplitude, reliable when its estimate is reliable at every output time;
+// a history at the round-off floor (a clamped point) has no relative error and is not counted; an
+// output time without an estimate counts as missing.
+AccuracyMeasure measure_histories(const json& result, double target) {
+    AccuracyMeasure m;
+    const json& steps = result.value("steps", json::array());
+    for (const json& step : steps) {
+        if (step.contains("estimate") && step["estimate"].contains("status")) {
+            missing(m, step["estimate"], step_name(step));
+        }
+    }
+    for (const auto& [point, quantities] : result["estimate"]["history"].items()) {
+        for (const auto& [quantity, h] : quantities.items()) {
+            if (!h.contains("relative")) continue;
+            bool reliable = true;
+            std::string reason;
+            for (const json& step : steps) {
+                if (!step.contains("estimate") || !step["estimate"].contains(point)) continue;
+                const json& q = step["estimate"][point][quantity];
+                if (!q.value("reliable", false)) {
+                    reliable = false;
+                    reason = q.value("reason", std::string());
+                    break;
+                }
+            }
+            json entry = {{"error", h["relative"]}, {"reliable", reliable}};
+            if (!reliable) entry["reason"] = reason;
+            add(m, entry, 1.0, target, point + " " + quantity + " history (of its amplitude)");
+        }
+    }
+    return m;
+}
+
+}  // namespace
+
 AccuracyMeasure measure_accuracy(const Model& model, const nlohmann::json& result, double target) {
+    if (result.contains("estimate") && result["estimate"].contains("history")) {
+        return measure_histories(result, target);
+    }
     AccuracyMeasure m;
     const double length = reference_length(model);
     for (const json& step : result.value("steps", json::array())) {

@@ -5,7 +5,10 @@
 //   displacement: the model's reference length, the largest distance between two named points
 //                 (the scale of the estimate's round-off floor, estimates/estimate.hpp);
 //   rotation:     1 rad (an angle is already relative: TOL rad);
-//   frequency:    the frequency itself.
+//   frequency:    the frequency itself;
+//   a history:    (dynamics) its amplitude, the largest |u(t)| or |angle(t)| over the run
+//                 (estimates/history_estimate.hpp): the largest estimated error over the run
+//                 relative to it.
 #pragma once
 
 #include <nlohmann/json.hpp>

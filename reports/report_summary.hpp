@@ -5,8 +5,9 @@
 // "Met" means: solved, and either every published check of the combination at the case's own
 // discretization passed (`verify`'s rows, docs/case-format.md "references"), or, for a run that
 // carries its error estimate, every estimate within half the case's stated accuracy
-// (discretization.accuracy, docs/accuracy-control.md). A solved run with neither (the suite does
-// not estimate, docs/error-estimates.md) is "unchecked": the report does not claim an accuracy.
+// (discretization.accuracy, docs/accuracy-control.md; a dynamic run's histories each relative to
+// its amplitude). A solved run with neither (`suite --estimate off`, or a case that states no
+// accuracy for the formulation) is "unchecked": the report does not claim an accuracy.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -26,9 +27,11 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
 // there is none.
 std::string estimate_cell(const nlohmann::json& run);
 
-// The run's true error where a reference exists: ‖u − u_exact‖/L at the last converged step of the
-// roll-up (exact), else the largest difference to the published values checked at the case's own
-// discretization; "—" without a reference.
+// The run's true error where a reference exists: the largest ‖u − u_ref‖/L over the load steps
+// (L the estimates' reference length), against the exact roll-up, or for another static case
+// against its continuum reference (core/continuum) where the solver covers it; else the largest
+// difference to the published values checked at the case's own discretization; "—" without a
+// reference.
 std::string true_error_cell(const nlohmann::json& run, const nlohmann::json& published_checks);
 
 }  // namespace rotbeam::cli

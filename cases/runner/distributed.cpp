@@ -110,6 +110,7 @@ std::string shard_command(const Job& job, const Shard& shard, const std::string&
     if (job.command == "suite" && job.cases != "*" && job.studies) c += " --studies";
     if (job.command == "suite" && job.cases == "*" && !job.studies) c += " --no-studies";
     if (job.reduced_follower) c += " --reduced-follower";
+    if (job.command == "suite" && !job.estimate) c += " --estimate off";
     return c + " --shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
            " --out " + dir;
 }
@@ -126,7 +127,7 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
             throw InputError("rotbeam suite: --cases: '" + job.cases +
                              "' matches no catalog case (see 'rotbeam list')");
         }
-        p.case_runs = plan_runs(job.cases, dir, job.quick);
+        p.case_runs = plan_runs(job.cases, dir, job.quick, job.estimate);
         if (job.studies) {
             for (const auto& entry : static_studies()) {
                 if (!standalone_study(entry.first)) studies.push_back(entry.first);

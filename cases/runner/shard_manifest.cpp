@@ -47,7 +47,8 @@ int bounded_int(const nlohmann::json& j, const char* key, int low, int high,
 
 nlohmann::json Job::to_json() const {
     return {{"command", command}, {"study", study},     {"cases", cases},
-            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower}};
+            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower},
+            {"estimate", estimate}};
 }
 
 Job job_from_json(const nlohmann::json& j, const std::string& file) {
@@ -62,6 +63,7 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
     job.studies = member(j, "studies", T::boolean, "true or false", where).get<bool>();
     job.reduced_follower =
         member(j, "reduced_follower", T::boolean, "true or false", where).get<bool>();
+    job.estimate = member(j, "estimate", T::boolean, "true or false", where).get<bool>();
     if (job.command != "suite" && job.command != "study")
         throw InputError(where + ": command: " + nlohmann::json(job.command).dump() +
                          " is not suite or study");

@@ -20,6 +20,7 @@ struct Job {
     bool quick = false;
     bool studies = true;  // suite: the static studies are part of the job
     bool reduced_follower = false;
+    bool estimate = true;  // suite: the case runs carry their error estimates
     nlohmann::json to_json() const;
     bool operator==(const Job&) const = default;
 };

@@ -1,9 +1,10 @@
 // `rotbeam suite`: the main job. Runs every catalog case (static, modal and dynamic; matching
 // --cases) with every parameterization × formulation, in parallel over --jobs worker threads,
-// writes one result file per run (skipped on a rerun when its inputs and the rotbeam version are
-// unchanged), the rotation study, and a report (index.md + index.html) with the runs table and the
-// plots made by gnuplot scripts in reports/. With --shard I/N it makes only one shard of the
-// runs and studies, for `rotbeam merge`; under mpirun the ranks share them (distributed.hpp).
+// writes one result file per run with its error estimate unless --estimate off (skipped on a rerun
+// when its inputs and the rotbeam version are unchanged), the rotation study, and a report
+// (index.md + index.html) with the runs table and the plots made by gnuplot scripts in reports/.
+// With --shard I/N it makes only one shard of the runs and studies, for `rotbeam merge`; under
+// mpirun the ranks share them (distributed.hpp).
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -62,6 +63,9 @@ int command_suite(const Args& args) {
          {"quick", "", "the roll-up and the 45-degree bend only (CI smoke test)"},
          {"studies", "", "run the static studies even with --cases (default: only without)"},
          {"no-studies", "", "skip the static studies (docs/studies.md)"},
+         {"estimate", "on|off",
+          "every case run with its error estimate, companion runs that cost 2-8x the run; off "
+          "for timing (default: on, or the case's analysis.estimate; docs/error-estimates.md)"},
          {"shard", "I/N",
           "make only the I-th of N shards of the runs into --out, for `rotbeam merge` "
           "(default: every run, no shard; docs/distributed-runs.md)"},
@@ -88,10 +92,15 @@ int command_suite(const Args& args) {
     // The static studies belong to the main job: on by default for the whole catalog, off
     // for a --cases selection unless --studies asks for them.
     const bool studies = !a.has("no-studies") && (a.has("studies") || !a.has("cases"));
+    const std::string estimate = a.value("estimate").value_or("on");
+    if (estimate != "on" && estimate != "off") {
+        throw InputError("rotbeam suite: --estimate: expected on or off, got '" + estimate + "'");
+    }
     Job job;
     job.cases = glob;
     job.quick = a.has("quick");
     job.studies = studies;
+    job.estimate = estimate == "on";
     if (const auto code = run_distributed(
             job, a.value("shard"),
             ShardSettings{{}, out, jobs, a.has("force"), a.values("timings")}, a.has("jobs"))) {
@@ -99,7 +108,7 @@ int command_suite(const Args& args) {
     }
     if (a.has("timings"))
         throw InputError("rotbeam suite: --timings: only with --shard I/N or under mpirun");
-    const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"));
+    const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"), estimate == "on");
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
     // A suite killed with SIGKILL in the middle of a write left a temporary (never a partial

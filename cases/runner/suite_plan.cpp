@@ -46,6 +46,7 @@ std::string input_key(const std::string& case_text, const PlannedRun& run) {
     for (const std::string& o : run.overrides) settings += "\n" + o;
     if (run.elements_per_member > 0)
         settings += "\nelements " + std::to_string(run.elements_per_member);
+    if (!run.estimate) settings += "\nestimate off";
     const size_t h = std::hash<std::string>{}(case_text + "\n" + settings + "\n" + kGitDescribe);
     std::ostringstream s;
     s << std::hex << h;
@@ -119,7 +120,8 @@ bool up_to_date(const PlannedRun& run) {
     }
 }
 
-std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick) {
+std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick,
+                                  bool estimate) {
     std::vector<PlannedRun> runs;
     for (const std::string& name : catalog_cases()) {
         if (fnmatch(glob.c_str(), name.c_str(), 0) != 0) continue;
@@ -134,6 +136,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
             run.output = (fs::path(out_dir) / "runs" /
                           (name + "_" + run.rotation + "_" + run.formulation + ".json"))
                              .string();
+            run.estimate = estimate;
             run.key = input_key(text, run);
             run.modelled_seconds = run_cost(run);
             runs.push_back(run);
@@ -141,6 +144,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
         if (!quick && model.analysis.kind == AnalysisKind::modal) {
             for (PlannedRun& run : modal_variants(name, path, model)) {
                 run.output = (fs::path(out_dir) / "runs" / (run.output + ".json")).string();
+                run.estimate = estimate;
                 run.key = input_key(text, run);
                 run.modelled_seconds = run_cost(run);
                 runs.push_back(std::move(run));
@@ -169,7 +173,14 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
             {"wall_seconds", 0.0}};
     }
     try {
-        return run_case(RunRequest{run.case_path, model});
+        const RunRequest request{run.case_path, model};
+        nlohmann::json result = run_case(request);
+        if (run.estimate && model.analysis.estimate) {
+            add_run_estimate(request, result);
+        } else {
+            result["estimate"] = estimate_off();
+        }
+        return result;
     } catch (const InputError& e) {
         // The combination does not exist for this case (e.g. a formulation not built yet).
         return {

@@ -17,20 +17,26 @@ struct PlannedRun {
     std::vector<std::string> overrides{};  // further --set overrides (a variant's settings)
     int elements_per_member = 0;           // 0: the case's own mesh
     double modelled_seconds = 0.0;         // expected run time by the cost model (run_cost.hpp)
+    // With the error estimate (docs/error-estimates.md; off: `suite --estimate off`, or the case's
+    // analysis.estimate: false).
+    bool estimate = true;
 };
 
 // The whole file as text ("" when it cannot be read).
 std::string read_text_file(const std::string& path);
 
-// The runs of the suite over the catalog cases matching `glob`, results under out_dir/runs/.
-std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick);
+// The runs of the suite over the catalog cases matching `glob`, results under out_dir/runs/, each
+// estimated when `estimate` is set.
+std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick,
+                                  bool estimate);
 
 // The run's result file exists, parses, and carries the run's input key (same case text, settings
 // and rotbeam version): resuming skips it.
 bool up_to_date(const PlannedRun& run);
 
-// Makes the run (the code path of `rotbeam run`); a combination that does not exist for the case
-// comes back as status "error" with the loader's or runner's message. The result carries the key.
+// Makes the run (the code path of `rotbeam run`, its estimate included); a combination that does
+// not exist for the case comes back as status "error" with the loader's or runner's message. The
+// result carries the key.
 nlohmann::json execute_planned_run(const PlannedRun& run);
 
 // published.md (the published numbers of the cases run) and rotation-study.json; returns the
