@@ -143,6 +143,20 @@ struct Constraint {
     TimeFunction time;
 };
 
+// A steady rotation of the whole beam at constant angular velocity Ω (inertial components, rad per
+// time unit) about the axis through `center` (case key `rotating_frame`, docs/rotating-frame.md).
+// Statics and modal analysis are then solved in the frame turning with the beam: every section
+// carries the d'Alembert force of its rigid rotation, −F^I with u¨ = Ω × (Ω × r), ω = Ω, ω˙ = 0
+// (centrifugal force, its mass-offset moment and the gyroscopic moment Ω × ρΩ), a load that
+// depends on the configuration and is multiplied by the load factor λ like gravity (λ scales
+// Ω²). The Coriolis terms 2Ω × u˙ vanish at a steady state; the modal analysis leaves them out
+// (modes of K(Ω) − ω²M, stated in its result).
+struct RotatingFrame {
+    Vec3 angular_velocity = Vec3::Zero();
+    Vec3 center = Vec3::Zero();
+    bool active() const { return angular_velocity.squaredNorm() > 0.0; }
+};
+
 enum class AnalysisKind { static_, dynamic, modal };
 
 struct StaticSettings {
@@ -309,6 +323,7 @@ struct Model {
     std::vector<DistributedLoad> distributed_loads;
     std::vector<LoadField> load_fields;  // manufactured solutions only (see LoadField)
     Vec3 gravity = Vec3::Zero();
+    RotatingFrame rotating_frame;
     Analysis analysis;
     Discretization discretization;
     SolverSettings solver;

@@ -26,7 +26,8 @@ namespace rotbeam {
 namespace {
 
 bool has_static_load(const Model& m) {
-    return !m.point_loads.empty() || !m.distributed_loads.empty() || m.gravity.squaredNorm() > 0.0;
+    return !m.point_loads.empty() || !m.distributed_loads.empty() ||
+           m.gravity.squaredNorm() > 0.0 || m.rotating_frame.active();
 }
 
 nlohmann::json vec3(const Eigen::Ref<const VecX>& v) {
@@ -105,6 +106,12 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
                        {"stiffness_asymmetry", s.asymmetry},
                        {"mass_rule", choice_name(model.discretization.displacement.mass_rule)}};
+    if (model.rotating_frame.active()) {
+        result["modal"]["rotating_frame"] =
+            "modes of K(Ω) − ω²M about the steady rotating state: centrifugal stiffening and spin "
+            "softening in K, Coriolis (gyroscopic) coupling 2Ω × u˙ not included "
+            "(docs/rotating-frame.md)";
+    }
     result["counters"] = counters_json(problem.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.

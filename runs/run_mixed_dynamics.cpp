@@ -29,7 +29,8 @@ namespace rotbeam {
 namespace {
 
 bool has_static_load(const Model& m) {
-    return !m.point_loads.empty() || !m.distributed_loads.empty() || m.gravity.squaredNorm() > 0.0;
+    return !m.point_loads.empty() || !m.distributed_loads.empty() ||
+           m.gravity.squaredNorm() > 0.0 || m.rotating_frame.active();
 }
 
 nlohmann::json vec3(const Vec3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }

@@ -70,7 +70,8 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
         refuse_at(dynamic_line, "DynamicSolve",
                   std::string("a dynamic solve is not imported (static decks only)") +
                       (rotating ? "; this deck also drives its root at a constant angular "
-                                  "velocity (RootVel), which rotbeam does not model"
+                                  "velocity (RootVel), which rotbeam models only as a steady "
+                                  "rotating frame in statics and modes (docs/rotating-frame.md)"
                                 : ""));
     }
     if (!root_frame) {

@@ -282,11 +282,36 @@ void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& m
                "(e.g. --set discretization.mass_rule=consistent)");
 }
 
+// rotating_frame: {angular_velocity: [Ωx, Ωy, Ωz], center: [x, y, z]} (core/model.hpp,
+// docs/rotating-frame.md). The steady rotation is modelled in statics (both formulations) and in
+// the displacement formulation's modal analysis; the other analyses refuse it here.
+void read_rotating_frame(const YamlReader& r, const YAML::Node& root, Model& model) {
+    const YAML::Node n = root["rotating_frame"];
+    if (!n) return;
+    r.expect_map(n, "rotating_frame", {"angular_velocity", "center"});
+    if (!n["angular_velocity"])
+        r.fail(n, "rotating_frame.angular_velocity", "missing required key");
+    RotatingFrame& f = model.rotating_frame;
+    f.angular_velocity = r.vec3(n["angular_velocity"], "rotating_frame.angular_velocity");
+    if (n["center"]) f.center = r.vec3(n["center"], "rotating_frame.center");
+    if (!f.active()) return;
+    const AnalysisKind kind = model.analysis.kind;
+    if (kind == AnalysisKind::dynamic) {
+        r.fail(n, "rotating_frame",
+               "not modelled in a dynamic analysis (static and modal analyses only)");
+    }
+    if (kind == AnalysisKind::modal && model.discretization.formulation == Formulation::mixed) {
+        r.fail(n, "rotating_frame",
+               "not modelled in the mixed formulation's modal analysis (it linearizes the mixed "
+               "dynamics, which have no rotating frame); use --formulation displacement");
+    }
+}
+
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
-    r.expect_map(
-        root, "",
-        {"name", "description", "units", "points", "sections", "members", "constraints", "loads",
-         "gravity", "analysis", "discretization", "solver", "references", "expected_stops"});
+    r.expect_map(root, "",
+                 {"name", "description", "units", "points", "sections", "members", "constraints",
+                  "loads", "gravity", "rotating_frame", "analysis", "discretization", "solver",
+                  "references", "expected_stops"});
     Model model;
     model.name =
         root["name"] ? r.string(root["name"], "name") : std::filesystem::path(file).stem().string();
@@ -300,20 +325,22 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     if (root["gravity"]) model.gravity = r.vec3(root["gravity"], "gravity");
     cases::read_analysis(r, root, model);
     cases::read_discretization(r, root, model);
+    read_rotating_frame(r, root, model);
     cases::read_solver(r, root, model);
     cases::read_references(r, root, model);
     check_topology(r, root, model);
     check_mass_rule(r, root, model);
     check_integrator(r, root, model);
     // Inertia is needed by dynamics, modal analysis and gravity: every section must have mass.
-    if (model.needs_inertia() || model.gravity.norm() > 0.0) {
+    if (model.needs_inertia() || model.gravity.norm() > 0.0 || model.rotating_frame.active()) {
         for (const Member& m : model.members) {
             for (const SectionStation& st : m.sections) {
                 if (st.section.mass) continue;
                 for (const auto& item : root["sections"]) {  // report the line of the name
                     if (item.first.Scalar() != st.section.name) continue;
                     r.fail(item.first, "sections." + st.section.name,
-                           "needs mass or density (the analysis or gravity uses inertia)");
+                           "needs mass or density (the analysis, gravity or the rotating frame "
+                           "uses inertia)");
                 }
             }
         }

@@ -15,6 +15,11 @@ namespace rotbeam::form {
 template <param::RotationParameterization P>
 DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
     : model_(model), statics_(model), mass_mesh_(build_mass_mesh(model)) {
+    if (model.rotating_frame.active()) {
+        throw InputError(
+            "rotating_frame: not modelled by the dynamics (statics and the displacement modal "
+            "analysis only)");
+    }
     if (model.discretization.displacement.update != Update::multiplicative) {
         throw InputError(
             "discretization.update: dynamics composes rotation increments "

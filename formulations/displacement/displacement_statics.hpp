@@ -23,6 +23,7 @@
 
 #include "core/model.hpp"
 #include "core/static_state.hpp"
+#include "formulations/displacement/calculate_rotating_frame_forces.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/mesh.hpp"
 #include "formulations/displacement/mip_stresses.hpp"
@@ -164,6 +165,9 @@ class DisplacementStatics : public StaticProblem {
     void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
                           bool jacobian, Vec6& f, Eigen::Matrix<double, 6, 3>& df_dpsi);
     void assemble_point_loads(VecX& r, SparseMatrix* J);
+    // The steady rotating frame's inertial force at one quadrature point (zero without one).
+    RotatingFrameForces rotating_frame_forces(const MeshElement& e, const QuadraturePoint& qp,
+                                              const double* N, const Mat3& R);
     // solver.assemble_all_terms: the inertial and damping terms at rest at quadrature point q of
     // element k (J: after assemble_element computed the nodal maps A_, K_ of that point).
     void assemble_rest_terms(int k, int q, const InterpolatedRotation<P>& rot, const Vec3& xp,

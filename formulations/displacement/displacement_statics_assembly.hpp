@@ -8,6 +8,7 @@
 
 #include "core/so3.hpp"
 #include "formulations/displacement/calculate_elastic_forces.hpp"
+#include "formulations/displacement/calculate_rotating_frame_forces.hpp"
 #include "formulations/displacement/calculate_stiffness_blocks.hpp"
 #include "formulations/displacement/calculate_strain.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
@@ -102,6 +103,21 @@ void DisplacementStatics<P>::distributed_load(const MeshElement& e, const Quadra
     }
 }
 
+// The inertial force of the steady rotating frame at quadrature point qp (zero without one): the
+// point's position and section frame from the element's nodes (its δx = Σ N_b δu_b, its
+// δθ = Σ A_b δψ_b as for every other term of the point).
+template <param::RotationParameterization P>
+RotatingFrameForces DisplacementStatics<P>::rotating_frame_forces(const MeshElement& e,
+                                                                  const QuadraturePoint& qp,
+                                                                  const double* N, const Mat3& R) {
+    if (!model_.rotating_frame.active()) return {};
+    Vec3 x = Vec3::Zero();
+    for (size_t j = 0; j < e.nodes.size(); ++j) x += N[j] * (mesh_.nodes[e.nodes[j]].x0 + ue_[j]);
+    const RotatingFrame& f = model_.rotating_frame;
+    return calculate_rotating_frame_forces(qp.M_star, R * qp.Rr, x - f.center, f.angular_velocity,
+                                           lambda_);
+}
+
 template <param::RotationParameterization P>
 void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
     const MeshElement& e = mesh_.elements[k];
@@ -109,6 +125,7 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
     const bool jac = J != nullptr;
     const bool loads = !model_.distributed_loads.empty() || !model_.load_fields.empty() ||
                        model_.gravity.squaredNorm() > 0.0;
+    const bool spinning = model_.rotating_frame.active();
     gather_element(e, jac);
     InterpolatedRotation<P> rot;
     Vec6 f_ext = Vec6::Zero();
@@ -130,11 +147,13 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
         const ElasticForces F = calculate_elastic_forces(C, strain, xp);
         ++counters_.elastic_terms;
         if (loads) distributed_load(e, qp, rot.R, jac, f_ext, df_ext);
+        const RotatingFrameForces spin = rotating_frame_forces(e, qp, N, rot.R);
         for (int a = 0; a < nn; ++a) {
             const int d = mesh_.nodes[e.nodes[a]].dof;
             if (d < 0) continue;
             r.segment<6>(d) += qp.weight * (dN[a] * F.FE1 - N[a] * f_ext);
             r.segment<3>(d + 3) += qp.weight * N[a] * F.FE2;
+            if (spinning) r.segment<6>(d) += qp.weight * N[a] * spin.F;
         }
         if (!jac) {
             if (absent_motion_) assemble_rest_terms(k, q, rot, xp, r, nullptr);
@@ -162,6 +181,10 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
                 Mat6 blk = qp.weight * dN[a] * D_[b];
                 blk.bottomRows<3>() += qp.weight * N[a] * E_[b];
                 if (loads) blk.rightCols<3>() -= qp.weight * N[a] * df_ext * A_[b];
+                if (spinning) {
+                    blk.leftCols<3>() += qp.weight * N[a] * N[b] * spin.dF_dx;
+                    blk.rightCols<3>() += qp.weight * N[a] * spin.dF_dtheta * A_[b];
+                }
                 add_block(*J, k, a, b, blk);
             }
         }

@@ -150,6 +150,17 @@ void DisplacementStatics<P>::compute_scales(const Model& model) {
                 std::max(axial_stiffness_, q.C_star.block<3, 3>(0, 0).diagonal().maxCoeff());
         }
     }
+    if (model.rotating_frame.active()) {
+        // The centrifugal load m Ω² r over the length, at the node farthest from the axis.
+        const RotatingFrame& f = model.rotating_frame;
+        double r = 0.0;
+        for (const MeshNode& n : mesh_.nodes) r = std::max(r, (n.x0 - f.center).norm());
+        for (const MeshElement& e : mesh_.elements) {
+            for (const QuadraturePoint& q : e.qp) {
+                F = std::max(F, q.M_star(0, 0) * f.angular_velocity.squaredNorm() * r * L);
+            }
+        }
+    }
     if (!(F > 0.0)) {
         double motion = 0.0;
         for (const PrescribedMotion& m : mesh_.prescribed) {

@@ -28,6 +28,11 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
       layout_(build_mixed_layout(without_distributed_loads(model))),
       numbering_(number_mixed_unknowns(layout_, K, kConstraintRows, true, true)),
       load_time_floor_(load_time_floor) {
+    if (model.rotating_frame.active()) {
+        throw InputError(
+            "rotating_frame: not modelled by the mixed dynamics (and so by the mixed modal "
+            "analysis, which linearizes them)");
+    }
     refuse_mixed_damping(model);
     // The statics' force scale ignores distributed loads when they were removed: recompute it
     // from the full model so both analyses scale alike.

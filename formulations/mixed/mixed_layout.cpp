@@ -103,6 +103,20 @@ double derived_force_scale(const Model& model, const MixedLayout& layout) {
         scale = std::max({scale, d.force.norm() * Ls, d.moment.norm()});
     }
     scale = std::max(scale, model.gravity.norm() * Ls);
+    if (model.rotating_frame.active()) {
+        // The centrifugal load m Ω² r over the length, at the node farthest from the axis.
+        double r = 0.0;
+        for (const MixedNode& n : layout.nodes) {
+            r = std::max(r, (n.reference - model.rotating_frame.center).norm());
+        }
+        const double w2 = model.rotating_frame.angular_velocity.squaredNorm();
+        for (const Member& member : model.members) {
+            for (const SectionStation& st : member.sections) {
+                if (st.section.mass)
+                    scale = std::max(scale, (*st.section.mass)(0, 0) * w2 * r * Ls);
+            }
+        }
+    }
     if (scale > 0.0) return scale;
     // No loads (prescribed motion only): the bending stiffness over length squared.
     const double s_bend = layout.elements.front().S(4, 4);
@@ -144,6 +158,7 @@ MixedLayout build_mixed_layout(const Model& model) {
         layout.has_follower = layout.has_follower || p.frame == LoadFrame::follower;
     }
     layout.length_scale = model.solver.length_scale > 0.0 ? model.solver.length_scale : total;
+    layout.rotating = model.rotating_frame.active();
     layout.force_scale = model.solver.force_scale > 0.0 ? model.solver.force_scale
                                                         : derived_force_scale(model, layout);
     return layout;
@@ -234,9 +249,11 @@ SparseMatrix mixed_pattern(const MixedLayout& layout, const MixedNumbering& nb) 
         const MixedElement& el = layout.elements[static_cast<std::size_t>(e)];
         const int r = nb.element_row(e);
         const int c = nb.element_column(e);
-        // f_u^∓, f_ψ^∓ against c, F, M (and P, H and the rates in dynamics).
-        block(nb.node_row(el.start_node), c + 3, 6, nb.element_unknowns() - 3);
-        block(nb.node_row(el.end_node), c + 3, 6, nb.element_unknowns() - 3);
+        // f_u^∓, f_ψ^∓ against c, F, M (and P, H and the rates in dynamics); against u too in a
+        // rotating frame (the centrifugal force depends on the position).
+        const int skip = layout.rotating ? 0 : 3;
+        block(nb.node_row(el.start_node), c + skip, 6, nb.element_unknowns() - skip);
+        block(nb.node_row(el.end_node), c + skip, 6, nb.element_unknowns() - skip);
         block(r, c, nb.element_rows(), nb.element_unknowns());  // the element's own rows
         const int ends[2] = {el.start_node, el.end_node};
         for (int side = 0; side < 2; ++side) {

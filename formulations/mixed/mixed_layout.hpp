@@ -73,6 +73,7 @@ struct MixedLayout {
     double length_scale = 1.0;
     double force_scale = 1.0;
     bool has_follower = false;
+    bool rotating = false;  // a steady rotating frame (core/model.hpp): widens the pattern
 
     int element_count() const { return static_cast<int>(elements.size()); }
     bool supported(int node) const { return nodes[static_cast<std::size_t>(node)].constraint >= 0; }

@@ -114,6 +114,10 @@ class MixedStatics : public StaticProblem {
     AssemblyCounters counters_;
     MixedElementResult<K> element_result_;
     std::vector<Mat6> rest_mass_inverse_;  // per element; empty: no rest terms
+    // The steady rotating frame (core/model.hpp): each element's section mass (material axes, by
+    // the mass rule, as the mixed dynamics take it); empty without a rotating frame.
+    std::vector<Mat6> spin_mass_;
+    void add_rotating_frame(int e, int a, int b, VecX& residual, SparseMatrix* jacobian);
 };
 
 }  // namespace rotbeam::form

@@ -8,6 +8,8 @@
 
 #include "core/beam_rotation.hpp"
 #include "core/errors.hpp"
+#include "formulations/displacement/calculate_rotating_frame_forces.hpp"
+#include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 
 namespace rotbeam::form {
@@ -31,6 +33,39 @@ MixedStatics<P>::MixedStatics(const Model& model)
     mixed_scales(layout_, numbering_, residual_scale_, increment_scale_);
     pattern_ = mixed_pattern(layout_, numbering_);
     if (model.solver.assemble_all_terms) prepare_rest_terms();
+    if (model.rotating_frame.active()) {
+        for (const MixedElement& el : layout_.elements) {
+            spin_mass_.push_back(mixed_element_mass(model_, el));
+        }
+    }
+}
+
+// The inertial force of the steady rotating frame on element e, taken at its mid-point like the
+// element's other distributed loads (Eqs. 51–54: h f to each end node, with f = −F^I here):
+// F^I of the mid-point's position x^r + u_i and frame R(c_i) C^ab
+// (calculate_rotating_frame_forces.hpp), spatial spin δθ = R H_m(c_i) δc_i.
+template <param::RotationParameterization P>
+void MixedStatics<P>::add_rotating_frame(int e, int a, int b, VecX& residual,
+                                         SparseMatrix* jacobian) {
+    const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+    const MixedElementState<K> st = element_state(e);
+    const Mat3 R = P::matrix(st.c);
+    const Vec3 x =
+        layout_.nodes[static_cast<std::size_t>(el.start_node)].reference + 0.5 * el.chord + st.u;
+    const RotatingFrame& f = model_.rotating_frame;
+    const RotatingFrameForces spin =
+        calculate_rotating_frame_forces(spin_mass_[static_cast<std::size_t>(e)], R * el.Cab,
+                                        x - f.center, f.angular_velocity, lambda_);
+    const double h = 0.5 * el.length;
+    residual.segment<6>(a) += h * spin.F;
+    residual.segment<6>(b) += h * spin.F;
+    if (jacobian == nullptr) return;
+    Eigen::Matrix<double, 6, 3 + K> block;
+    block.template leftCols<3>() = h * spin.dF_dx;
+    block.template rightCols<K>() = h * spin.dF_dtheta * R * P::material_tangent(st.c);
+    const int c = numbering_.element_column(e);
+    add_mixed_block(*jacobian, a, c, block);
+    add_mixed_block(*jacobian, b, c, block);
 }
 
 // A support's rotation: the identity when clamped, the prescribed rotation (scaled with the load
@@ -157,6 +192,7 @@ void MixedStatics<P>::assemble_element(int e, VecX& residual, SparseMatrix* jaco
     }
     add_node_terms(e, residual, jacobian);
     if (!rest_mass_inverse_.empty()) assemble_rest_terms(e, a, b, residual, jacobian);
+    if (!spin_mass_.empty()) add_rotating_frame(e, a, b, residual, jacobian);
 }
 
 // f_F^− − û_a, f_M^− − ĉ_a, f_F^+ + û_b, f_M^+ + ĉ_b (Eqs. 33–34, 37–38, 41–42 before
