@@ -16,6 +16,7 @@
 #include "runs/progress.hpp"
 #include "runs/run_cost.hpp"
 #include "study_commands.hpp"
+#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 
@@ -103,7 +104,8 @@ std::optional<double> measured_seconds(const std::vector<std::string>& folders, 
 
 nlohmann::json Job::to_json() const {
     return {{"command", command}, {"study", study},     {"cases", cases},
-            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower}};
+            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower},
+            {"sweep", sweep}};
 }
 
 Job job_from_json(const nlohmann::json& j, const std::string& file) {
@@ -115,7 +117,8 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
         job.quick = j.at("quick").get<bool>();
         job.studies = j.at("studies").get<bool>();
         job.reduced_follower = j.at("reduced_follower").get<bool>();
-        if (job.command != "suite" && job.command != "study")
+        job.sweep = j.value("sweep", "");
+        if (job.command != "suite" && job.command != "study" && job.command != "sweep")
             throw InputError("unknown command '" + job.command + "'");
         return job;
     } catch (const std::exception& e) {
@@ -126,6 +129,7 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
 std::string shard_command(const Job& job, const Shard& shard, const std::string& dir) {
     std::string c = "rotbeam " + job.command;
     if (job.command == "study") c += " " + job.study;
+    if (job.command == "sweep") c += " " + job.sweep;
     if (job.command == "suite" && job.cases != "*") c += " --cases '" + job.cases + "'";
     if (job.quick) c += " --quick";
     if (job.command == "suite" && job.cases != "*" && job.studies) c += " --studies";
@@ -153,6 +157,8 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
                 if (!standalone_study(entry.first)) studies.push_back(entry.first);
             }
         }
+    } else if (job.command == "sweep") {
+        p.case_runs = plan_sweep_runs(read_sweep(job.sweep), dir);
     } else {
         if (job.study == "rotations") {
             throw InputError(

@@ -1,8 +1,8 @@
-// `rotbeam merge DIR... --out DIR`: the shard folders of one job (`suite` or `study` with
-// --shard I/N) into the output of one uninterrupted run: the same result files, the split studies
-// combined from their runs' results, the whole studies' files, and (suite) the summaries and the
-// report. Every shard file is checked before anything is written: a damaged one is refused by
-// name (exit 2), missing runs are listed with the commands that make them (exit 5), and in both
+// `rotbeam merge DIR... --out DIR`: the shard folders of one job (`suite`, `study` or `sweep`
+// with --shard I/N) into the output of one uninterrupted run: the same result files, the split
+// studies combined from their runs' results, the whole studies' files, and (suite) the summaries
+// and the report. Every shard file is checked before anything is written: a damaged one is refused
+// by name (exit 2), missing runs are listed with the commands that make them (exit 5), and in both
 // cases nothing is written.
 #include <algorithm>
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "core/version.hpp"
 #include "distributed.hpp"
 #include "study_commands.hpp"
+#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 
@@ -162,6 +163,8 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
                   << (fs::path(out) / ("study-" + name + ".md")).string() << "\n";
     }
     if (plan.job.command == "suite") write_suite_report(out, plan.case_runs, published_checks);
+    if (plan.job.command == "sweep")
+        write_sweep_report(out, read_sweep(plan.job.sweep), plan.case_runs);
 }
 
 }  // namespace
