@@ -2,7 +2,8 @@
 # `rotbeam sweep FILE` (docs/sweeps.md) on the example cases/sweeps/rollup-load-elements.yaml (the
 # roll-up at 4 load factors × 3 meshes × 2 parameterizations, 24 runs, ~5 s):
 # - it expands to the 24 runs the file describes, in the documented order (the list below is
-#   written from the file by hand, not produced by rotbeam);
+#   written from the file by hand, not produced by rotbeam); so do a zipped sweep with ranges and
+#   an interpolation list, and a sweep without combinations (every one the case takes);
 # - each run's result equals `rotbeam run CASE --formulation F --rotation R --set KEY=VALUE ...`
 #   (scripts/compare-results.py: equal JSON apart from the timings; the sweep's own input_key
 #   removed);
@@ -36,6 +37,50 @@ echo "rotbeam sweep: $file: 24 runs" >>"$work/expected-list.txt"
 diff "$work/expected-list.txt" "$work/list.txt" >"$work/list-diff.txt" ||
     fail "the expansion differs from the file's 24 runs: $(head -4 "$work/list-diff.txt")"
 [ -e "$work/one" ] && fail "--list wrote $work/one"
+
+# Zipped keys, integer ranges, logspace and an interpolation list (which the mixed formulation
+# does not take: its runs keep the case's own); a catalog case without combinations gets every
+# formulation × parameterization it takes (2 × 5).
+cat >"$work/zipped.yaml" <<'YAML'
+name: zipped
+cases: [bend-45]
+combinations:
+  formulation: [displacement, mixed]
+  rotation: rodrigues
+  interpolation: [relative, direct]
+combine: zip
+parameters:
+  discretization.order: {range: [2, 6, 2]}
+  solver.residual_tolerance: {logspace: [-10, -8, 3]}
+YAML
+{
+    n=0
+    for run in "displacement discretization.interpolation=relative " "displacement discretization.interpolation=direct " "mixed "; do
+        set -- $run
+        for pair in "2 1e-10" "4 1e-09" "6 1e-08"; do
+            set -- $run $pair
+            n=$((n + 1))
+            if [ $# -eq 4 ]; then
+                printf 'zipped-%04d_bend-45_rodrigues_%s.json: bend-45 %s/rodrigues %s discretization.order=%s solver.residual_tolerance=%s\n' $n "$1" "$1" "$2" "$3" "$4"
+            else
+                printf 'zipped-%04d_bend-45_rodrigues_%s.json: bend-45 %s/rodrigues discretization.order=%s solver.residual_tolerance=%s\n' $n "$1" "$1" "$2" "$3"
+            fi
+        done
+    done
+    echo "rotbeam sweep: $work/zipped.yaml: 9 runs"
+} >"$work/expected-zipped.txt"
+"$rotbeam" sweep "$work/zipped.yaml" --list >"$work/zipped.txt" 2>&1 || fail "--list of the zipped sweep failed"
+diff "$work/expected-zipped.txt" "$work/zipped.txt" >"$work/list-diff.txt" ||
+    fail "the zipped sweep's expansion differs: $(head -4 "$work/list-diff.txt")"
+printf 'name: every-combination\ncases: cantilever-moment\n' >"$work/default.yaml"
+"$rotbeam" sweep "$work/default.yaml" --list >"$work/default.txt" 2>&1 || fail "--list of the default sweep failed"
+for f in displacement mixed; do
+    for r in quaternion wiener-milenkovic rodrigues rotation-vector euler-angles; do
+        grep -q "^every-combination-[0-9]*_cantilever-moment_${r}_$f.json: cantilever-moment $f/$r\$" "$work/default.txt" ||
+            fail "the default sweep lacks $f/$r"
+    done
+done
+grep -q ": 10 runs\$" "$work/default.txt" || fail "the default sweep: $(tail -1 "$work/default.txt")"
 
 # One run of the sweep.
 "$rotbeam" sweep "$file" --jobs 2 --out "$work/one" >/dev/null 2>"$work/err.txt" ||
