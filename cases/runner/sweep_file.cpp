@@ -264,6 +264,10 @@ std::vector<CaseEntry> read_cases(const Where& w, const YAML::Node& root,
         w.fail(node, "cases", "expected a case or a list of cases");
     }
     if (items.empty()) w.fail(node, "cases", "empty list");
+    if (items.size() > static_cast<size_t>(kMaxSweepRuns)) {
+        w.fail(node, "cases",
+               "more than " + std::to_string(kMaxSweepRuns) + " cases (the limit of a sweep)");
+    }
     std::vector<CaseEntry> cases;
     for (const YAML::Node& n : items) {
         if (!n.IsScalar() || n.Scalar().empty()) w.fail(n, "cases", "expected a case name or path");
