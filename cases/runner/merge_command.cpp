@@ -33,7 +33,7 @@ struct ShardFolder {
 nlohmann::json parse_or_refuse(const std::string& file) {
     if (!fs::exists(file)) {
         throw InputError("rotbeam merge: " + file +
-                         ": missing: not a shard folder (written by `rotbeam suite|study ... "
+                         ": missing: not a shard folder (written by `rotbeam suite|study|sweep ... "
                          "--shard I/N --out DIR`)");
     }
     try {
@@ -175,7 +175,7 @@ int command_merge(const std::vector<std::string>& args) {
         "SHARD_DIR...",
         1,
         -1,
-        "Combine the shard folders of one `rotbeam suite|study ... --shard I/N` job into the "
+        "Combine the shard folders of one `rotbeam suite|study|sweep ... --shard I/N` job into the "
         "output of one run (results, studies, report; docs/distributed-runs.md). A damaged "
         "shard file is refused by name (exit 2); missing runs are listed with the commands that "
         "make them (exit 5); in both cases nothing is written.",
