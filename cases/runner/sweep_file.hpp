@@ -9,9 +9,8 @@
 
 namespace rotbeam::cli {
 
-// The most runs a sweep file may expand to (docs/sweeps.md): the suite has ~130 case runs; 10 000
-// static runs of the roll-up take about an hour on two cores, and each run costs a case load
-// already at planning.
+// The most runs a sweep file may expand to (docs/sweeps.md): every run's case is loaded at
+// planning (1 000 roll-up runs: 3.2 s of CPU), in every shard and in merge; the suite has ~130.
 inline constexpr long kMaxSweepRuns = 10000;
 
 // One run of a sweep: a case, a combination, and one value of every swept key.
