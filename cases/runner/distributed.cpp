@@ -17,6 +17,7 @@
 #include "runs/progress.hpp"
 #include "runs/run_cost.hpp"
 #include "study_commands.hpp"
+#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 
@@ -105,6 +106,7 @@ std::optional<double> measured_seconds(const std::vector<std::string>& folders, 
 std::string shard_command(const Job& job, const Shard& shard, const std::string& dir) {
     std::string c = "rotbeam " + job.command;
     if (job.command == "study") c += " " + job.study;
+    if (job.command == "sweep") c += " " + job.sweep;
     if (job.command == "suite" && job.cases != "*") c += " --cases '" + job.cases + "'";
     if (job.quick) c += " --quick";
     if (job.command == "suite" && job.cases != "*" && job.studies) c += " --studies";
@@ -133,6 +135,8 @@ JobPlan plan_job(const Job& job, const std::string& dir) {
                 if (!standalone_study(entry.first)) studies.push_back(entry.first);
             }
         }
+    } else if (job.command == "sweep") {
+        p.case_runs = plan_sweep_runs(read_sweep(job.sweep), dir);
     } else {
         if (job.study == "rotations") {
             throw InputError(

@@ -19,6 +19,7 @@
 #include "interrupt.hpp"
 #include "ranks.hpp"
 #include "runs/timing.hpp"
+#include "sweep_command.hpp"
 
 namespace {
 
@@ -35,7 +36,9 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
         {"import", {command_import, "translate a BeamDyn input deck into a case file"}},
         {"run", {command_run, "run a case with one parameterization and formulation"}},
         {"suite", {command_suite, "run the benchmark suite and write the report"}},
-        {"merge", {command_merge, "combine the shard folders of a suite or study into one output"}},
+        {"merge",
+         {command_merge, "combine the shard folders of a suite, study or sweep into one output"}},
+        {"sweep", {command_sweep, "run a sweep file: cases × combinations × ranges of case keys"}},
         {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},
         {"reference", {command_reference, "continuum reference solution of a static case"}},
         {"study",

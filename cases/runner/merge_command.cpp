@@ -1,8 +1,8 @@
-// `rotbeam merge DIR... --out DIR`: the shard folders of one job (`suite` or `study` with
-// --shard I/N) into the output of one uninterrupted run: the same result files, the split studies
-// combined from their runs' results, the whole studies' files, and (suite) the summaries and the
-// report. Every shard file is checked before anything is written: a damaged one is refused by
-// name (exit 2), missing runs are listed with the commands that make them (exit 5), and in both
+// `rotbeam merge DIR... --out DIR`: the shard folders of one job (`suite`, `study` or `sweep`
+// with --shard I/N) into the output of one uninterrupted run: the same result files, the split
+// studies combined from their runs' results, the whole studies' files, and (suite) the summaries
+// and the report. Every shard file is checked before anything is written: a damaged one is refused
+// by name (exit 2), missing runs are listed with the commands that make them (exit 5), and in both
 // cases nothing is written.
 #include <algorithm>
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "core/version.hpp"
 #include "distributed.hpp"
 #include "study_commands.hpp"
+#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 
@@ -36,9 +37,10 @@ Job read_shards(const std::vector<std::string>& dirs, std::vector<ShardFolder>& 
     for (const std::string& dir : dirs) {
         const std::string file = (fs::path(dir) / "shard.json").string();
         if (!fs::exists(file)) {
-            throw InputError("rotbeam merge: " + file +
-                             ": missing: not a shard folder (written by `rotbeam suite|study ... "
-                             "--shard I/N --out DIR`)");
+            throw InputError(
+                "rotbeam merge: " + file +
+                ": missing: not a shard folder (written by `rotbeam suite|study|sweep ... "
+                "--shard I/N --out DIR`)");
         }
         const ShardManifest m = [&] {
             try {
@@ -150,6 +152,8 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
                   << (fs::path(out) / ("study-" + name + ".md")).string() << "\n";
     }
     if (plan.job.command == "suite") write_suite_report(out, plan.case_runs, published_checks);
+    if (plan.job.command == "sweep")
+        write_sweep_report(out, read_sweep(plan.job.sweep), plan.case_runs);
 }
 
 }  // namespace
@@ -160,7 +164,7 @@ int command_merge(const std::vector<std::string>& args) {
         "SHARD_DIR...",
         1,
         -1,
-        "Combine the shard folders of one `rotbeam suite|study ... --shard I/N` job into the "
+        "Combine the shard folders of one `rotbeam suite|study|sweep ... --shard I/N` job into the "
         "output of one run (results, studies, report; docs/distributed-runs.md). A damaged "
         "shard file is refused by name (exit 2); missing runs are listed with the commands that "
         "make them (exit 5); in both cases nothing is written.",

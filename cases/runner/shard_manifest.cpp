@@ -46,9 +46,9 @@ int bounded_int(const nlohmann::json& j, const char* key, int low, int high,
 }  // namespace
 
 nlohmann::json Job::to_json() const {
-    return {{"command", command}, {"study", study},     {"cases", cases},
-            {"quick", quick},     {"studies", studies}, {"reduced_follower", reduced_follower},
-            {"estimate", estimate}};
+    return {{"command", command},   {"study", study},     {"cases", cases},
+            {"quick", quick},       {"studies", studies}, {"reduced_follower", reduced_follower},
+            {"estimate", estimate}, {"sweep", sweep}};
 }
 
 Job job_from_json(const nlohmann::json& j, const std::string& file) {
@@ -64,9 +64,10 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
     job.reduced_follower =
         member(j, "reduced_follower", T::boolean, "true or false", where).get<bool>();
     job.estimate = member(j, "estimate", T::boolean, "true or false", where).get<bool>();
-    if (job.command != "suite" && job.command != "study")
+    job.sweep = member(j, "sweep", T::string, "a string", where).get<std::string>();
+    if (job.command != "suite" && job.command != "study" && job.command != "sweep")
         throw InputError(where + ": command: " + nlohmann::json(job.command).dump() +
-                         " is not suite or study");
+                         " is not suite, study or sweep");
     return job;
 }
 

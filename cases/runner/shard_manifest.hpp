@@ -14,8 +14,9 @@ namespace rotbeam::cli {
 
 // What is run: the suite or a study, with the arguments that decide its results.
 struct Job {
-    std::string command = "suite";  // "suite" or "study"
+    std::string command = "suite";  // "suite", "study" or "sweep"
     std::string study;              // study: its name, or "all"
+    std::string sweep;              // sweep: the sweep file (absolute path)
     std::string cases = "*";        // suite: --cases
     bool quick = false;
     bool studies = true;  // suite: the static studies are part of the job

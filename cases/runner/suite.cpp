@@ -26,12 +26,11 @@ namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
+void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
+                      const std::string& what) {
     double total_cost = 0.0;
     for (const PlannedRun& run : runs) total_cost += run.modelled_seconds;
-    Progress progress("rotbeam suite", runs.size(), std::cerr, progress_options_for_stderr());
+    Progress progress(what, runs.size(), std::cerr, progress_options_for_stderr());
     progress.set_total_cost(total_cost);
     for_each_parallel(runs.size(), jobs, [&](size_t i) {
         const PlannedRun& run = runs[i];
@@ -43,8 +42,6 @@ void run_all(const std::vector<PlannedRun>& runs, int jobs, bool force) {
         progress.finished(label, run.modelled_seconds);
     });
 }
-
-}  // namespace
 
 int command_suite(const Args& args) {
     const CommandSpec spec{
@@ -114,7 +111,7 @@ int command_suite(const Args& args) {
     // A suite killed with SIGKILL in the middle of a write left a temporary (never a partial
     // result file): clear it so the resumed folder is the one an uninterrupted suite writes.
     if (fs::exists(out)) remove_stale_temporaries(out);
-    run_all(runs, jobs, a.has("force"));
+    run_planned_runs(runs, jobs, a.has("force"), "rotbeam suite");
     const nlohmann::json published_checks = write_suite_summaries(out, runs);
     if (studies) run_suite_studies(StudyOptions{out, a.has("quick"), false}, jobs);
     write_suite_report(out, runs, published_checks);

@@ -19,6 +19,7 @@
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "reports/report.hpp"
+#include "runs/accuracy_run.hpp"
 #include "runs/run_case.hpp"
 #include "runs/run_cost.hpp"
 #include "study_commands.hpp"
@@ -34,24 +35,25 @@ std::string read_text_file(const std::string& path) {
     return s.str();
 }
 
+std::string planned_run_key(const std::string& case_text, const PlannedRun& run) {
+    std::string settings = run.rotation + "\n" + run.formulation;
+    for (const std::string& o : run.overrides) settings += "\n" + o;
+    if (run.elements_per_member > 0)
+        settings += "\nelements " + std::to_string(run.elements_per_member);
+    if (!run.estimate) settings += "\nestimate off";
+    if (run.as_run) settings += "\nas run";
+    const size_t h = std::hash<std::string>{}(case_text + "\n" + settings + "\n" + kGitDescribe);
+    std::ostringstream s;
+    s << std::hex << h;
+    return s.str();
+}
+
 namespace {
 
 // Table III's converged column: a modal case refined to this many elements per member with its
 // own formulation and parameterization (0.1 s for the joined beam, whose paper mesh of 10 per
 // member sits 0.4–3.9 % above it).
 constexpr int kConvergedElementsPerMember = 160;
-
-std::string input_key(const std::string& case_text, const PlannedRun& run) {
-    std::string settings = run.rotation + "\n" + run.formulation;
-    for (const std::string& o : run.overrides) settings += "\n" + o;
-    if (run.elements_per_member > 0)
-        settings += "\nelements " + std::to_string(run.elements_per_member);
-    if (!run.estimate) settings += "\nestimate off";
-    const size_t h = std::hash<std::string>{}(case_text + "\n" + settings + "\n" + kGitDescribe);
-    std::ostringstream s;
-    s << std::hex << h;
-    return s.str();
-}
 
 // A modal case's runs beyond formulation × parameterization, for Table III: one with the
 // settings of each published column (its references' `applies_to`, as `verify` runs them) and
@@ -137,7 +139,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
                           (name + "_" + run.rotation + "_" + run.formulation + ".json"))
                              .string();
             run.estimate = estimate;
-            run.key = input_key(text, run);
+            run.key = planned_run_key(text, run);
             run.modelled_seconds = run_cost(run);
             runs.push_back(run);
         }
@@ -145,7 +147,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
             for (PlannedRun& run : modal_variants(name, path, model)) {
                 run.output = (fs::path(out_dir) / "runs" / (run.output + ".json")).string();
                 run.estimate = estimate;
-                run.key = input_key(text, run);
+                run.key = planned_run_key(text, run);
                 run.modelled_seconds = run_cost(run);
                 runs.push_back(std::move(run));
             }
@@ -174,6 +176,7 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
     }
     try {
         const RunRequest request{run.case_path, model};
+        if (run.as_run && model.analysis.accuracy > 0.0) return run_to_accuracy(request);
         nlohmann::json result = run_case(request);
         if (run.estimate && model.analysis.estimate) {
             add_run_estimate(request, result);

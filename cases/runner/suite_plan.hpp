@@ -16,14 +16,20 @@ struct PlannedRun {
     std::string key{};                     // hash of the inputs
     std::vector<std::string> overrides{};  // further --set overrides (a variant's settings)
     int elements_per_member = 0;           // 0: the case's own mesh
-    double modelled_seconds = 0.0;         // expected run time by the cost model (run_cost.hpp)
     // With the error estimate (docs/error-estimates.md; off: `suite --estimate off`, or the case's
     // analysis.estimate: false).
     bool estimate = true;
+    // Made as `rotbeam run` makes it (a sweep's runs): to the case's analysis.accuracy when it
+    // states one.
+    bool as_run = false;
+    double modelled_seconds = 0.0;  // expected run time by the cost model (run_cost.hpp)
 };
 
 // The whole file as text ("" when it cannot be read).
 std::string read_text_file(const std::string& path);
+
+// The run's input key: a hash of the case text, the run's settings and the rotbeam version.
+std::string planned_run_key(const std::string& case_text, const PlannedRun& run);
 
 // The runs of the suite over the catalog cases matching `glob`, results under out_dir/runs/, each
 // estimated when `estimate` is set.
@@ -38,6 +44,12 @@ bool up_to_date(const PlannedRun& run);
 // not exist for the case comes back as status "error" with the loader's or runner's message. The
 // result carries the key.
 nlohmann::json execute_planned_run(const PlannedRun& run);
+
+// Makes every run not up to date (all with `force`) over `jobs` threads, with one progress line
+// titled `what` on stderr (suite.cpp): the list of independent runs that the suite and a sweep
+// hand to the distribution.
+void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
+                      const std::string& what);
 
 // published.md (the published numbers of the cases run) and rotation-study.json; returns the
 // published checks (the rows `verify --json` writes) for the report's summary.

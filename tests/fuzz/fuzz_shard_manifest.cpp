@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             finding("accepted shard " + std::to_string(m.shard.index) + "/" +
                     std::to_string(m.shard.count));
         }
-        if (m.job.command != "suite" && m.job.command != "study")
+        if (m.job.command != "suite" && m.job.command != "study" && m.job.command != "sweep")
             finding("accepted command " + m.job.command);
         (void)m.job.to_json().dump();  // merge prints it in its messages
     } catch (const rotbeam::InputError& e) {
