@@ -10,6 +10,7 @@
 
 #include "cases/loader/beamdyn_import.hpp"
 #include "cases/loader/limits.hpp"
+#include "cases/loader/yaml_file.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "combinations/registry.hpp"
 #include "core/errors.hpp"
@@ -19,70 +20,6 @@ namespace rotbeam {
 namespace {
 
 using cases::YamlReader;
-
-// Case files and override values are UTF-8 text: a NUL or other control byte (but tab and line
-// ends) or a malformed UTF-8 sequence means binary data, which yaml-cpp would otherwise report
-// confusingly (or accept as a scalar). Returns the offset of the first such byte, or npos.
-size_t first_non_text_byte(const std::string& text) {
-    for (size_t i = 0; i < text.size(); ++i) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        int follow = 0;
-        if (c == 0 || (c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) {
-            follow = -1;
-        } else if (c >= 0x80) {
-            follow = (c >= 0xc2 && c <= 0xdf)   ? 1
-                     : (c >= 0xe0 && c <= 0xef) ? 2
-                     : (c >= 0xf0 && c <= 0xf4) ? 3
-                                                : -1;
-            for (int k = 1; follow > 0 && k <= follow; ++k) {
-                if (i + k >= text.size() ||
-                    (static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) {
-                    follow = -1;
-                }
-            }
-        }
-        if (follow < 0) return i;
-        i += static_cast<size_t>(follow);
-    }
-    return std::string::npos;
-}
-
-void check_text(const std::string& text, const std::string& file) {
-    const size_t at = first_non_text_byte(text);
-    if (at == std::string::npos) return;
-    const auto line =
-        1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
-    throw InputError(file + ":" + std::to_string(line) +
-                     ": (file): not a text case file (control or non-UTF-8 byte at offset " +
-                     std::to_string(at) + ")");
-}
-
-YAML::Node parse(const std::string& text, const std::string& file) {
-    if (text.size() > cases::kMaxFileBytes) {
-        throw InputError(file + ":1: (file): larger than " + std::to_string(cases::kMaxFileBytes) +
-                         " bytes (a limit of the case format)");
-    }
-    check_text(text, file);
-    cases::check_yaml_shape(text, file);
-    YAML::Node root;
-    try {
-        root = YAML::Load(text);
-    } catch (const YAML::DeepRecursion& e) {
-        // yaml-cpp's own guard (2000 levels, before the tree exists; its message is "bad file").
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
-                         ": (yaml): nested deeper than " + std::to_string(cases::kMaxYamlDepth) +
-                         " levels (the limit of a case file)");
-    } catch (const YAML::ParserException& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
-                         ": (yaml): " + cases::one_line(e.msg));
-    }
-    if (root.IsNull()) throw InputError(file + ":1: (file): the case file is empty");
-    if (!root.IsMap()) {
-        throw InputError(file + ":" + std::to_string(root.Mark().line + 1) +
-                         ": (file): a case file is a mapping of sections (points, members, ...)");
-    }
-    return root;
-}
 
 [[noreturn]] void override_error(const std::string& file, const std::string& path,
                                  const std::string& problem) {
@@ -115,7 +52,7 @@ YAML::Node descend(YAML::Node& node, const std::string& segment, const std::stri
 // The value of an override, parsed as YAML after the checks a file gets (text, shape).
 YAML::Node override_value(const std::string& value_text, const std::string& path,
                           const std::string& file) {
-    if (const size_t at = first_non_text_byte(value_text); at != std::string::npos) {
+    if (const size_t at = cases::first_non_text_byte(value_text); at != std::string::npos) {
         override_error(file, path,
                        "the value holds a control character or a byte that is not UTF-8 (byte " +
                            std::to_string(at) + ")");
@@ -353,7 +290,7 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
 
 Model load_case_text(const std::string& text, const std::string& file_name,
                      const std::vector<std::string>& overrides) {
-    YAML::Node root = parse(text, file_name);
+    YAML::Node root = cases::parse_yaml_file(text, file_name, cases::kCaseFile);
     std::set<std::string> overridden;
     for (const std::string& o : overrides) {
         for (const std::string& p : apply_override(root, o, file_name)) overridden.insert(p);
@@ -412,7 +349,8 @@ bool sets_references(const std::string& override_text) {
 // one place for the numbers.
 void read_published_references(const std::string& file, const std::vector<std::string>& overrides,
                                const std::string& case_file, Model& model) {
-    YAML::Node root = parse(read_text_file(file, "references file"), file);
+    YAML::Node root =
+        cases::parse_yaml_file(read_text_file(file, "references file"), file, cases::kCaseFile);
     // Every overridden key counts, the case's too: an entry's load factor need not be one of
     // `analysis.load_factors` once --set replaced them (settings.cpp, read_reference).
     std::set<std::string> overridden;

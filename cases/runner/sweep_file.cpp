@@ -12,6 +12,7 @@
 
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/limits.hpp"
+#include "cases/loader/yaml_file.hpp"
 #include "cases/loader/yaml_reader.hpp"
 #include "combinations/registry.hpp"
 #include "core/errors.hpp"
@@ -31,6 +32,9 @@ std::vector<std::string> SweepRun::overrides(const std::vector<std::string>& key
 }
 
 namespace {
+
+constexpr cases::YamlFileKind kSweepFile{"sweep file", "keys (name, cases, ...)",
+                                         "the limit of a sweep file"};
 
 // Messages: `FILE:LINE: KEY: problem`, one line.
 struct Where {
@@ -69,17 +73,24 @@ void expect_keys(const Where& w, const YAML::Node& map, const std::string& key,
     }
 }
 
-// A list of names, each one of `choices` (a single name is a list of one).
-std::vector<std::string> name_list(const Where& w, const YAML::Node& node, const std::string& key,
-                                   const std::vector<std::string>& choices) {
+// The items of a scalar (one) or a list; anything else is refused as not `expected`.
+std::vector<YAML::Node> one_or_list(const Where& w, const YAML::Node& node, const std::string& key,
+                                    const std::string& expected) {
     std::vector<YAML::Node> items;
     if (node.IsScalar()) {
         items.push_back(node);
     } else if (node.IsSequence()) {
         for (const auto& n : node) items.push_back(n);
     } else {
-        w.fail(node, key, "expected a name or a list of names");
+        w.fail(node, key, "expected " + expected);
     }
+    return items;
+}
+
+// A list of names, each one of `choices` (a single name is a list of one).
+std::vector<std::string> name_list(const Where& w, const YAML::Node& node, const std::string& key,
+                                   const std::vector<std::string>& choices) {
+    const std::vector<YAML::Node> items = one_or_list(w, node, key, "a name or a list of names");
     if (items.empty()) w.fail(node, key, "empty list");
     std::vector<std::string> names;
     for (const YAML::Node& n : items) {
@@ -255,14 +266,8 @@ std::vector<CaseEntry> read_cases(const Where& w, const YAML::Node& root,
                                   const std::string& base_dir) {
     if (!root["cases"]) w.fail(root, "cases", "missing required key");
     const YAML::Node node = root["cases"];
-    std::vector<YAML::Node> items;
-    if (node.IsScalar()) {
-        items.push_back(node);
-    } else if (node.IsSequence()) {
-        for (const auto& n : node) items.push_back(n);
-    } else {
-        w.fail(node, "cases", "expected a case or a list of cases");
-    }
+    const std::vector<YAML::Node> items =
+        one_or_list(w, node, "cases", "a case or a list of cases");
     if (items.empty()) w.fail(node, "cases", "empty list");
     if (items.size() > static_cast<size_t>(kMaxSweepRuns)) {
         w.fail(node, "cases",
@@ -466,23 +471,7 @@ std::string run_label(const SweepRun& r, const std::vector<std::string>& keys) {
 Sweep read_sweep_text(const std::string& text, const std::string& file,
                       const std::string& base_dir) {
     const Where w{file};
-    if (text.size() > cases::kMaxFileBytes) {
-        throw InputError(file + ":1: (file): larger than " + std::to_string(cases::kMaxFileBytes) +
-                         " bytes (the limit of a sweep file)");
-    }
-    cases::check_yaml_shape(text, file);
-    YAML::Node root;
-    try {
-        root = YAML::Load(text);
-    } catch (const YAML::DeepRecursion& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
-                         ": (yaml): nested too deep");
-    } catch (const YAML::ParserException& e) {
-        throw InputError(file + ":" + std::to_string(e.mark.line + 1) +
-                         ": (yaml): " + cases::one_line(e.msg));
-    }
-    if (root.IsNull()) throw InputError(file + ":1: (file): the sweep file is empty");
-    if (!root.IsMap()) w.fail(root, "(file)", "a sweep file is a mapping (name, cases, ...)");
+    const YAML::Node root = cases::parse_yaml_file(text, file, kSweepFile);
     expect_keys(w, root, "", {"name", "cases", "combinations", "parameters", "combine", "output"});
     Sweep sweep;
     sweep.file = file;

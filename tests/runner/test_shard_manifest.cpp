@@ -39,7 +39,8 @@ std::string refusal(const std::string& text, const std::string& file = "d/shard.
 
 std::string with(const std::string& key, const std::string& value) {
     return R"({"format": "rotbeam-shard", "version": "v", "job": {"command": "suite", "study": "",
-        "cases": "*", "quick": true, "studies": false, "reduced_follower": false},
+        "cases": "*", "quick": true, "studies": false, "reduced_follower": false,
+        "estimate": true, "sweep": ""},
         "shard": 1, "of": 3, "units": ["runs/a.json"], )" +
            ("\"" + key + "\": " + value + "}");
 }
@@ -51,7 +52,8 @@ BOOST_AUTO_TEST_CASE(real_manifests_are_read_back) {
     for (const auto& entry : fs::directory_iterator(kCorpus)) {
         if (entry.path().filename().string().rfind("real-", 0) != 0) continue;
         const ShardManifest m = parse_shard_manifest(read(entry.path()), "shard.json");
-        BOOST_TEST((m.job.command == "suite" || m.job.command == "study"));
+        BOOST_TEST((m.job.command == "suite" || m.job.command == "study" ||
+                    m.job.command == "sweep"));
         BOOST_TEST(m.shard.index >= 1);
         BOOST_TEST(m.shard.index <= m.shard.count);
         ++n;
@@ -107,7 +109,8 @@ BOOST_AUTO_TEST_CASE(keys_of_another_type_are_named) {
     BOOST_TEST(refusal(with("job", "[]")).find("d/shard.json: job: ") == 0u);
     const std::string command =
         refusal(with("job", R"({"command": "a\nb", "study": "", "cases": "*", "quick": true,
-                   "studies": false, "reduced_follower": false})"));
+                   "studies": false, "reduced_follower": false, "estimate": true,
+                   "sweep": ""})"));
     BOOST_TEST(command.find("d/shard.json: job: command: ") == 0u);
     BOOST_TEST(command.find('\n') == std::string::npos);
 }
