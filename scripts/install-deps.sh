@@ -4,8 +4,8 @@
 # the fuzz preset (docs/fuzzing.md). libcmark-gfm-dev and libcmark-gfm-extensions-dev convert the
 # report's Markdown to HTML; chromium and python3-websockets run the report's browser test
 # (tests/reports/browser_check.py); python3-meshio reads the ParaView files back in a test;
-# openmpi-bin and libopenmpi-dev are for the release-mpi preset (mpirun -np N rotbeam suite,
-# docs/distributed-runs.md). Idempotent: `apt-get update` runs only when something must be installed.
+# openmpi-bin and libopenmpi-dev give the build its second program, rotbeam-mpi (mpirun -np N
+# rotbeam-mpi suite, docs/distributed-runs.md). Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(

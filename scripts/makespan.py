@@ -8,7 +8,7 @@ the others, the speed-accuracy study), as `makespan.py --collect SHARD_DIR` writ
 folder made by `rotbeam suite|study ... --shard 1/1 --jobs 1` (docs/distributed-runs.md): the
 case runs' wall_seconds, the study runs' and whole studies' seconds.
 
-The scheduler simulated is the one of cases/runner/ranks_mpi.cpp: the units in decreasing
+The scheduler simulated is the one of distribution/ranks_mpi.cpp: the units in decreasing
 expected time (here: the measured time, as with --timings from an earlier run), each taken by the
 first rank that is free (one thread per rank), every request answered after `--latency` seconds
 (default 1 ms, the answering thread's polling interval); then the timed units one after another on

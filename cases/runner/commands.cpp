@@ -14,7 +14,8 @@
 #include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
 #include "core/results.hpp"
-#include "distributed.hpp"
+#include "distribution/distributed.hpp"
+#include "distribution/study_registry.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
@@ -24,7 +25,6 @@
 #include "runs/run_case.hpp"
 #include "runs/steps_csv.hpp"
 #include "runs/vtk_output.hpp"
-#include "study_commands.hpp"
 
 namespace rotbeam::cli {
 

@@ -10,10 +10,6 @@
 
 #include "runs/catalog.hpp"  // the catalog lookup the commands share
 
-namespace rotbeam {
-struct ReferenceValue;
-}
-
 namespace rotbeam::cli {
 
 using Args = std::vector<std::string>;
@@ -24,19 +20,12 @@ int command_check(const Args& args);
 int command_run(const Args& args);
 int command_suite(const Args& args);
 int command_verify(const Args& args);
-// The comparison `verify` makes, for the given cases: the report's Markdown section and the rows
-// as `verify --json` writes them (for the report's summary).
-struct PublishedReferences {
-    std::string markdown;
-    nlohmann::json checks;
-};
-PublishedReferences published_references(const std::vector<std::string>& cases);
-// The --set overrides that put a case into the discretization a reference applies to (verify.cpp).
-std::vector<std::string> reference_overrides(const ReferenceValue& ref);
 int command_reference(const Args& args);
 int command_study(const Args& args);
 int command_bench(const Args& args);   // bench_command.cpp
 int command_import(const Args& args);  // import_command.cpp
+int command_sweep(const Args& args);   // sweep_command.cpp
+int command_merge(const Args& args);   // merge_command.cpp
 // completion.cpp: `rotbeam completion bash`, from `commands` (name → command) and their options.
 int command_completion_with(const Args& args, const std::map<std::string, Command>& commands);
 

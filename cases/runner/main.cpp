@@ -15,11 +15,10 @@
 #include "core/results.hpp"
 #include "core/version.hpp"
 #include "dependency_versions.hpp"
-#include "distributed.hpp"
+#include "distribution/distributed.hpp"
+#include "distribution/ranks.hpp"
 #include "interrupt.hpp"
-#include "ranks.hpp"
 #include "runs/timing.hpp"
-#include "sweep_command.hpp"
 
 namespace {
 

@@ -16,32 +16,13 @@
 #include "commands.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
-#include "distributed.hpp"
-#include "runs/parallel.hpp"
-#include "runs/progress.hpp"
-#include "study_commands.hpp"
-#include "suite_plan.hpp"
+#include "distribution/distributed.hpp"
+#include "distribution/study_registry.hpp"
+#include "distribution/suite_plan.hpp"
 
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
-
-void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
-                      const std::string& what) {
-    double total_cost = 0.0;
-    for (const PlannedRun& run : runs) total_cost += run.modelled_seconds;
-    Progress progress(what, runs.size(), std::cerr, progress_options_for_stderr());
-    progress.set_total_cost(total_cost);
-    for_each_parallel(runs.size(), jobs, [&](size_t i) {
-        const PlannedRun& run = runs[i];
-        const std::string label = fs::path(run.output).stem().string();
-        progress.started(label);
-        if (force || !up_to_date(run)) {
-            write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
-        }
-        progress.finished(label, run.modelled_seconds);
-    });
-}
 
 int command_suite(const Args& args) {
     const CommandSpec spec{

@@ -1,4 +1,6 @@
-#include "sweep_command.hpp"
+// `rotbeam sweep FILE` (docs/sweeps.md): a sweep file's runs through the suite's distribution —
+// the list of independent runs over --jobs threads, or one shard of them for `rotbeam merge` —
+// and the sweep table over their results.
 
 #include <algorithm>
 #include <cstdio>
@@ -7,40 +9,15 @@
 #include <thread>
 
 #include "arguments.hpp"
+#include "commands.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
-#include "distributed.hpp"
+#include "distribution/distributed.hpp"
+#include "distribution/sweep_runs.hpp"
 
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
-
-std::vector<PlannedRun> plan_sweep_runs(const Sweep& sweep, const std::string& out_dir) {
-    std::vector<PlannedRun> runs;
-    std::vector<std::pair<std::string, std::string>> texts;  // case path → text
-    for (size_t i = 0; i < sweep.runs.size(); ++i) {
-        const SweepRun& s = sweep.runs[i];
-        PlannedRun run{s.case_name, s.case_path, s.rotation, s.formulation};
-        run.overrides = s.overrides(sweep.keys);
-        run.as_run = true;
-        char number[24];
-        std::snprintf(number, sizeof number, "%04zu", i + 1);
-        run.output = (fs::path(out_dir) / "runs" /
-                      (sweep.name + "-" + number + "_" + s.case_name + "_" + s.rotation + "_" +
-                       s.formulation + ".json"))
-                         .string();
-        auto text = std::find_if(texts.begin(), texts.end(),
-                                 [&](const auto& t) { return t.first == s.case_path; });
-        if (text == texts.end()) {
-            texts.emplace_back(s.case_path, read_text_file(s.case_path));
-            text = texts.end() - 1;
-        }
-        run.key = planned_run_key(text->second, run);
-        run.modelled_seconds = s.modelled_seconds;
-        runs.push_back(std::move(run));
-    }
-    return runs;
-}
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Fuzz target: the shard manifest reader (cases/runner/shard_manifest.hpp) on a text in memory, as
+// Fuzz target: the shard manifest reader (distribution/shard_manifest.hpp) on a text in memory, as
 // `rotbeam merge` reads each folder's shard.json before anything else. docs/fuzzing.md.
 //
 // A finding is anything but a clean refusal or a manifest that keeps its promises: a crash or
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "cases/runner/shard_manifest.hpp"
+#include "distribution/shard_manifest.hpp"
 #include "tests/fuzz/fuzz_finding.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "cases/runner/sweep_file.hpp"
+#include "distribution/sweep_file.hpp"
 #include "tests/fuzz/fuzz_finding.hpp"
 
 namespace {

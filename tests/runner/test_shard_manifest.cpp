@@ -1,4 +1,4 @@
-// The shard manifest reader (cases/runner/shard_manifest.hpp): real manifests read back, damaged
+// The shard manifest reader (distribution/shard_manifest.hpp): real manifests read back, damaged
 // ones refused with one line naming the file and the key. The inputs are the seed corpus of the
 // manifest's fuzz target (tests/fuzz/corpus/fuzz_shard_manifest, docs/fuzzing.md): `real-*`
 // written by `rotbeam suite|study --shard`, `damaged-*` made from them by hand, and `crash-*` the
@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "cases/runner/shard_manifest.hpp"
 #include "core/errors.hpp"
+#include "distribution/shard_manifest.hpp"
 
 using namespace rotbeam;
 using namespace rotbeam::cli;
@@ -52,8 +52,8 @@ BOOST_AUTO_TEST_CASE(real_manifests_are_read_back) {
     for (const auto& entry : fs::directory_iterator(kCorpus)) {
         if (entry.path().filename().string().rfind("real-", 0) != 0) continue;
         const ShardManifest m = parse_shard_manifest(read(entry.path()), "shard.json");
-        BOOST_TEST((m.job.command == "suite" || m.job.command == "study" ||
-                    m.job.command == "sweep"));
+        BOOST_TEST(
+            (m.job.command == "suite" || m.job.command == "study" || m.job.command == "sweep"));
         BOOST_TEST(m.shard.index >= 1);
         BOOST_TEST(m.shard.index <= m.shard.count);
         ++n;

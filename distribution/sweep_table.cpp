@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "distribution/sweep_runs.hpp"
 #include "reports/report.hpp"
-#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "distribution/shard_manifest.hpp"
+#include "distribution/suite_plan.hpp"
 #include "runs/shards.hpp"
-#include "shard_manifest.hpp"
 #include "studies/study_runs.hpp"
-#include "suite_plan.hpp"
 
 namespace rotbeam::cli {
 
@@ -93,14 +93,5 @@ void write_shard_manifest(const JobPlan& plan, const ShardSettings& settings,
 // --jobs was given (under mpirun its default is 1 thread per rank, not every core).
 std::optional<int> run_distributed(const Job& job, const std::optional<std::string>& shard,
                                    ShardSettings settings, bool jobs_given);
-
-// `rotbeam merge DIR... --out DIR` (merge_command.cpp).
-int command_merge(const std::vector<std::string>& args);
-// Merges shard folders of one job into `out`: 0, kExitIncomplete (missing units listed on
-// stderr, nothing written), InputError naming a damaged file.
-int merge_shard_folders(const std::vector<std::string>& dirs, const std::string& out);
-
-// Exit code of `rotbeam merge` when runs are missing from the shard folders (nothing is written).
-constexpr int kExitIncomplete = 5;
 
 }  // namespace rotbeam::cli

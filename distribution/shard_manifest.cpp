@@ -1,4 +1,4 @@
-#include "shard_manifest.hpp"
+#include "distribution/shard_manifest.hpp"
 
 #include <cstdint>
 

@@ -1,14 +1,12 @@
-// `rotbeam sweep FILE` (docs/sweeps.md): a sweep file's runs through the suite's distribution —
-// the list of independent runs over --jobs threads, or one shard of them for `rotbeam merge` —
-// and the sweep table over their results.
+// A sweep (docs/sweeps.md) as the suite's runs: its planned runs, which the suite's distribution
+// makes (--jobs threads, shards, MPI ranks), and the sweep table over their results.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
-#include "suite_plan.hpp"
-#include "sweep_file.hpp"
+#include "distribution/suite_plan.hpp"
+#include "distribution/sweep_file.hpp"
 
 namespace rotbeam::cli {
 
@@ -20,7 +18,5 @@ std::vector<PlannedRun> plan_sweep_runs(const Sweep& sweep, const std::string& o
 // every run; DIR/index.md and DIR/index.html, the last step (or every step, output.steps: all).
 void write_sweep_report(const std::string& out, const Sweep& sweep,
                         const std::vector<PlannedRun>& runs);
-
-int command_sweep(const Args& args);
 
 }  // namespace rotbeam::cli

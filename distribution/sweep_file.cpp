@@ -1,4 +1,4 @@
-#include "sweep_file.hpp"
+#include "distribution/sweep_file.hpp"
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>

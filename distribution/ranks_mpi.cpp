@@ -27,7 +27,8 @@
 
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
-#include "ranks.hpp"
+#include "distribution/merge.hpp"
+#include "distribution/ranks.hpp"
 #include "runs/progress.hpp"
 
 namespace rotbeam::cli {

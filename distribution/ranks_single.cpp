@@ -2,7 +2,7 @@
 #include <cstdlib>
 
 #include "core/errors.hpp"
-#include "ranks.hpp"
+#include "distribution/ranks.hpp"
 
 namespace rotbeam::cli {
 
@@ -10,10 +10,12 @@ int launched_ranks(const std::string& command) {
     for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
         const char* value = std::getenv(name);
         if (value && std::atoi(value) > 1) {
-            throw InputError(command + ": started by mpirun with " + value +
-                             " ranks, but this rotbeam was built without MPI: every rank would "
-                             "run the whole job; build the release-mpi preset, or use --shard I/N "
-                             "(docs/distributed-runs.md)");
+            throw InputError(
+                command + ": started by mpirun with " + value +
+                " ranks, but this rotbeam was built without MPI: every rank would "
+                "run the whole job; use rotbeam-mpi (built beside rotbeam when MPI is found), "
+                "or --shard I/N "
+                "(docs/distributed-runs.md)");
         }
     }
     return 1;
@@ -23,6 +25,6 @@ int run_over_ranks(const Job&, const ShardSettings&) {
     throw InputError("rotbeam: built without MPI: no ranks to run on");
 }
 
-std::string mpi_description() { return "MPI: none (the release-mpi preset builds with it)"; }
+std::string mpi_description() { return "MPI: none (rotbeam-mpi has it)"; }
 
 }  // namespace rotbeam::cli

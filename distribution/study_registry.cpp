@@ -1,4 +1,4 @@
-#include "study_commands.hpp"
+#include "distribution/study_registry.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "suite_plan.hpp"
+#include "distribution/suite_plan.hpp"
 
 #include <fnmatch.h>
 
@@ -12,17 +12,20 @@
 
 #include "cases/loader/case_loader.hpp"
 #include "combinations/registry.hpp"
-#include "commands.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "distribution/gate.hpp"
+#include "distribution/study_registry.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "reports/report.hpp"
 #include "runs/accuracy_run.hpp"
+#include "runs/catalog.hpp"
+#include "runs/parallel.hpp"
+#include "runs/progress.hpp"
 #include "runs/run_case.hpp"
 #include "runs/run_cost.hpp"
-#include "study_commands.hpp"
 
 namespace rotbeam::cli {
 
@@ -220,6 +223,23 @@ void write_suite_report(const std::string& out, const std::vector<PlannedRun>& r
     for (const PlannedRun& r : runs) files.push_back(r.output);
     write_report(out, files, study_names(), published_checks);
     std::cout << "report: " << (fs::path(out) / "index.md").string() << "\n";
+}
+
+void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
+                      const std::string& what) {
+    double total_cost = 0.0;
+    for (const PlannedRun& run : runs) total_cost += run.modelled_seconds;
+    Progress progress(what, runs.size(), std::cerr, progress_options_for_stderr());
+    progress.set_total_cost(total_cost);
+    for_each_parallel(runs.size(), jobs, [&](size_t i) {
+        const PlannedRun& run = runs[i];
+        const std::string label = fs::path(run.output).stem().string();
+        progress.started(label);
+        if (force || !up_to_date(run)) {
+            write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
+        }
+        progress.finished(label, run.modelled_seconds);
+    });
 }
 
 }  // namespace rotbeam::cli

@@ -1,4 +1,4 @@
-#include "verify_plan.hpp"
+#include "distribution/verify_plan.hpp"
 
 #include "cases/loader/case_loader.hpp"
 #include "combinations/registry.hpp"

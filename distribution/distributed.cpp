@@ -1,4 +1,4 @@
-#include "distributed.hpp"
+#include "distribution/distributed.hpp"
 
 #include <fnmatch.h>
 
@@ -11,13 +11,13 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
-#include "ranks.hpp"
+#include "distribution/ranks.hpp"
+#include "distribution/study_registry.hpp"
+#include "distribution/sweep_runs.hpp"
 #include "runs/catalog.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 #include "runs/run_cost.hpp"
-#include "study_commands.hpp"
-#include "sweep_command.hpp"
 
 namespace rotbeam::cli {
 

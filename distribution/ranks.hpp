@@ -1,12 +1,13 @@
-// A job run by the ranks of `mpirun -np N rotbeam suite|study ...` (docs/distributed-runs.md,
-// "MPI"). Built with MPI (the release-mpi preset, ROTBEAM_MPI) this is ranks_mpi.cpp; without it,
-// ranks_single.cpp, which refuses to run under mpirun with more than one rank, because N copies of
-// the whole job writing into one folder would be N times the work for one output.
+// A job run by the ranks of `mpirun -np N rotbeam-mpi suite|study|sweep ...`
+// (docs/distributed-runs.md, "MPI"). Two implementations, one per program, chosen at link time
+// (cases/runner/CMakeLists.txt): ranks_mpi.cpp in rotbeam-mpi; ranks_single.cpp in rotbeam, which
+// refuses to run under mpirun with more than one rank, because N copies of the whole job writing
+// into one folder would be N times the work for one output.
 #pragma once
 
 #include <string>
 
-#include "distributed.hpp"
+#include "distribution/distributed.hpp"
 
 namespace rotbeam::cli {
 
