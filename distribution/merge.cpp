@@ -162,6 +162,17 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
 int merge_shard_folders(const std::vector<std::string>& dirs, const std::string& out) {
     std::vector<ShardFolder> shards;
     const Job job = read_shards(dirs, shards);
+    // A sweep is planned again from its file: the file the shards ran, or every run would look
+    // damaged (another input key) or missing (other run files).
+    if (job.command == "sweep" &&
+        (!std::filesystem::exists(job.sweep) || sweep_file_key(job.sweep) != job.sweep_key)) {
+        throw InputError("rotbeam merge: " + job.sweep + ": " +
+                         (std::filesystem::exists(job.sweep) ? "changed" : "gone") +
+                         " since the shards were made (" +
+                         (fs::path(dirs.front()) / "shard.json").string() +
+                         " records its text); merge with the sweep file the shards ran, or run "
+                         "the shards again");
+    }
     const JobPlan plan = plan_job(job, out);
     std::map<const Unit*, std::string> found;
     std::vector<const Unit*> missing;

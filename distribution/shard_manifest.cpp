@@ -48,7 +48,7 @@ int bounded_int(const nlohmann::json& j, const char* key, int low, int high,
 nlohmann::json Job::to_json() const {
     return {{"command", command},   {"study", study},     {"cases", cases},
             {"quick", quick},       {"studies", studies}, {"reduced_follower", reduced_follower},
-            {"estimate", estimate}, {"sweep", sweep}};
+            {"estimate", estimate}, {"sweep", sweep},     {"sweep_key", sweep_key}};
 }
 
 Job job_from_json(const nlohmann::json& j, const std::string& file) {
@@ -65,6 +65,9 @@ Job job_from_json(const nlohmann::json& j, const std::string& file) {
         member(j, "reduced_follower", T::boolean, "true or false", where).get<bool>();
     job.estimate = member(j, "estimate", T::boolean, "true or false", where).get<bool>();
     job.sweep = member(j, "sweep", T::string, "a string", where).get<std::string>();
+    // Written since merge checks the sweep file against it; a manifest without it has "".
+    if (j.contains("sweep_key"))
+        job.sweep_key = member(j, "sweep_key", T::string, "a string", where).get<std::string>();
     if (job.command != "suite" && job.command != "study" && job.command != "sweep")
         throw InputError(where + ": command: " + nlohmann::json(job.command).dump() +
                          " is not suite, study or sweep");

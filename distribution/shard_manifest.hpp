@@ -17,6 +17,7 @@ struct Job {
     std::string command = "suite";  // "suite", "study" or "sweep"
     std::string study;              // study: its name, or "all"
     std::string sweep;              // sweep: the sweep file (absolute path)
+    std::string sweep_key;          // sweep: stable_hash of the sweep file's text when planned
     std::string cases = "*";        // suite: --cases
     bool quick = false;
     bool studies = true;  // suite: the static studies are part of the job

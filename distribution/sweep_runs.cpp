@@ -6,9 +6,13 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "runs/shards.hpp"
+
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
+
+std::string sweep_file_key(const std::string& path) { return stable_hash(read_text_file(path)); }
 
 std::vector<PlannedRun> plan_sweep_runs(const Sweep& sweep, const std::string& out_dir) {
     std::vector<PlannedRun> runs;

@@ -14,6 +14,10 @@ namespace rotbeam::cli {
 // NAME-NNNN_CASE_ROTATION_FORMULATION.json (NNNN: the run's place in the sweep, from 0001).
 std::vector<PlannedRun> plan_sweep_runs(const Sweep& sweep, const std::string& out_dir);
 
+// The key of the sweep file's text (runs/shards.hpp, stable_hash) that a sweep job records, so
+// that merge can refuse a sweep file changed since the shards were made.
+std::string sweep_file_key(const std::string& path);
+
 // The sweep table from the runs' result files (sweep_table.cpp): DIR/sweep.csv, every step of
 // every run; DIR/index.md and DIR/index.html, the last step (or every step, output.steps: all).
 void write_sweep_report(const std::string& out, const Sweep& sweep,

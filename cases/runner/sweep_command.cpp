@@ -71,6 +71,7 @@ int command_sweep(const Args& args) {
     Job job;
     job.command = "sweep";
     job.sweep = fs::absolute(a.positional[0]).lexically_normal().string();
+    job.sweep_key = sweep_file_key(job.sweep);
     if (const auto code = run_distributed(
             job, a.value("shard"),
             ShardSettings{{}, out, jobs, a.has("force"), a.values("timings")}, a.has("jobs"))) {

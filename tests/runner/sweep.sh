@@ -9,7 +9,8 @@
 #   removed);
 # - the sweep table has the swept keys as columns and one row per run and named point;
 # - a rerun makes nothing again (the run files are not rewritten);
-# - three shards merged equal one run (the results, and sweep.csv byte for byte);
+# - three shards merged equal one run (the results, and sweep.csv byte for byte); a sweep file
+#   changed or gone since the shards is refused by merge, naming it;
 # - every bad sweep file of cases/bad-sweeps/ is refused with exit 2 and one line naming the file
 #   and the key (cases/bad-sweeps/expected.txt), and nothing is written.
 # Usage: sweep.sh ROTBEAM COMPARE_RESULTS_PY SOURCE_DIR
@@ -137,6 +138,29 @@ code=$?
 [ $code -eq 5 ] || fail "merge without shard 2: exit $code, expected 5"
 grep -q -- "rotbeam sweep $file --shard 2/3" "$work/err.txt" ||
     fail "merge without shard 2 names no sweep command: $(tail -1 "$work/err.txt")"
+
+# The sweep file changed (a comment added) or gone between the shards and the merge: refused on one
+# line naming it, exit 2, nothing written (the shards' manifests point to a copy of the file).
+cp "$file" "$work/copy.yaml"
+for i in 1 2 3; do
+    mkdir -p "$work/c$i" && cp -r "$work/s$i/." "$work/c$i/"
+    python3 - "$work/c$i/shard.json" "$work/copy.yaml" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1]))
+m["job"]["sweep"] = sys.argv[2]
+json.dump(m, open(sys.argv[1], "w"))
+PY
+done
+echo "# changed" >>"$work/copy.yaml"
+for what in changed gone; do
+    [ $what = gone ] && rm "$work/copy.yaml"
+    "$rotbeam" merge "$work/c1" "$work/c2" "$work/c3" --out "$work/m-$what" >/dev/null 2>"$work/err.txt"
+    code=$?
+    [ $code -eq 2 ] || fail "merge with the sweep file $what: exit $code, expected 2"
+    [ "$(wc -l <"$work/err.txt")" -eq 1 ] && grep -qF "rotbeam merge: $work/copy.yaml: $what" "$work/err.txt" ||
+        fail "merge with the sweep file $what: '$(cat "$work/err.txt")'"
+    [ -e "$work/m-$what" ] && fail "merge with the sweep file $what wrote its output"
+done
 
 # Bad sweep files: exit 2, one line starting with the file and holding the expected fragment.
 bad=$src/cases/bad-sweeps
