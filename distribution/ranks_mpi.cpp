@@ -1,4 +1,4 @@
-// The ranks of `mpirun -np N rotbeam ...` sharing a job's units (ranks.hpp). Rank 0 holds the
+// The ranks of `mpirun -np N rotbeam-mpi ...` sharing a job's units (ranks.hpp). Rank 0 holds the
 // queue, the units in decreasing expected time; a worker thread of any other rank asks rank 0 for
 // its next one as it starts a unit, sending the unit it has just finished (for rank 0's progress
 // line). Rank 0's own

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The make-span of `mpirun -np N rotbeam ...` predicted from measured unit times.
+"""The make-span of `mpirun -np N rotbeam-mpi ...` predicted from measured unit times.
 
 usage: makespan.py UNITS_CSV [--ranks 1,2,4,...] > TABLE
 
