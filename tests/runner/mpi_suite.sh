@@ -18,12 +18,13 @@ if [ "$(id -u)" -eq 0 ]; then
 fi
 sweep_file=$(cd "$(dirname "$0")/../.." && pwd)/cases/sweeps/rollup-load-elements.yaml
 
-# Each job once in one process (the static program) and once over three ranks: the same files,
-# no work folder left, the summary line from rank 0 only.
+# Each job once in one process (the static program, two threads) and once over three ranks (one
+# thread each, the default under mpirun): the same files, no work folder left, the summary line
+# from rank 0 only.
 check() {  # check NAME ROTBEAM_ARGUMENTS...
     local name=$1
     shift
-    "$rotbeam" "$@" --out "$work/one-$name" >/dev/null 2>"$work/err1.txt" ||
+    "$rotbeam" "$@" --jobs 2 --out "$work/one-$name" >/dev/null 2>"$work/err1.txt" ||
         fail "$name: one process failed: $(tail -1 "$work/err1.txt")"
     "$mpiexec" --oversubscribe -np 3 "$rotbeam_mpi" "$@" --out "$work/ranks-$name" \
         >"$work/out3.txt" 2>"$work/err3.txt" ||
@@ -34,8 +35,8 @@ check() {  # check NAME ROTBEAM_ARGUMENTS...
     n=$(grep -c "units on 3 ranks" "$work/out3.txt")
     [ "$n" -eq 1 ] || fail "$name: the summary line printed $n times (rank 0 only)"
 }
-check suite suite --quick --jobs 2
-check sweep sweep "$sweep_file" --jobs 2
+check suite suite --quick
+check sweep sweep "$sweep_file"
 
 [ $failures -eq 0 ] && echo "mpi_suite: mpirun -np 3 = one process (suite --quick whole, a sweep)"
 exit $((failures > 0))
