@@ -4,11 +4,11 @@
 # this script fails on a non-zero ctest, on a sanitizer report in any program's stderr, and on an
 # exit code the command does not document.
 # Usage: scripts/asan.sh [--full]
-#   default (CI): the unit tests (ctest -L unit, the scripted ones included) but the six whose
+#   default (CI): the unit tests (ctest -L unit, the scripted ones included) but the seven whose
 #                 build costs most (`heavy` below), the runs of `rotbeam suite --quick`, every
 #                 command's --help, every bad-case fixture through `check` and `run` and every
 #                 damaged shard manifest through `merge`;
-#   --full:       also those six, every other ctest test (but the label `long`, which the asan test
+#   --full:       also those seven, every other ctest test (but the label `long`, which the asan test
 #                 preset leaves out), the quick suite's studies and every study path (slow: docs/quality-checks.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,15 +18,16 @@ if [ "${1:-}" = "--full" ]; then full=1; fi
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
-heavy='^(test_parameterizations|test_displacement|test_mixed_dynamics|test_mixed_unit|test_displacement_dynamics_jacobian|test_modal_checks)$'
+heavy='^(test_parameterizations|test_displacement|test_mixed_dynamics|test_mixed_unit|test_displacement_dynamics_jacobian|test_modal_checks|test_harness)$'
 cmake --preset asan >/dev/null
 if [ $full -eq 1 ]; then
   cmake --build --preset asan -j "$(nproc)"
 else
   # The unit tests' executables (a test run by a shell script drives the program itself), but the
-  # six tests of the formulations' and parameterizations' kernels: a quarter of the sanitized
-  # build between them, and their code runs sanitized in `suite --quick` (every formulation ×
-  # parameterization); --full runs them (docs/quality-checks.md, Time).
+  # seven tests of the formulations' and parameterizations' kernels (the six, and the harness of
+  # their tangents, Jacobians and objectivity): a third of the sanitized build between them, and
+  # their code runs sanitized in `suite --quick` (every formulation × parameterization); --full
+  # runs them (docs/quality-checks.md, Time).
   mapfile -t unit < <(ctest --preset asan -N -L unit -E "$heavy" 2>/dev/null |
     sed -n 's/^ *Test *#[0-9]*: //p' |
     while read -r t; do ninja -C build/asan -t query "$t" >/dev/null 2>&1 && echo "$t"; done)

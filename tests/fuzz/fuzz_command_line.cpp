@@ -5,13 +5,18 @@
 // catalog case — everything the program does before a solve, and no solve. docs/fuzzing.md.
 //
 // The option tables of the commands live inside the command functions (cases/runner/*.cpp),
-// which also run the solves; they are mirrored here. A finding is anything but a clean refusal:
-// a crash or sanitizer report, any exception other than InputError, or a multi-line message.
+// which also run the solves, so the target would have to link the whole program to read them; they
+// are mirrored here instead, and the test fuzz_command_line_table (command_table.sh) fails when the
+// copy drifts: it compares the help this table prints (ROTBEAM_FUZZ_PRINT_TABLE=1) with the
+// program's own `rotbeam COMMAND --help` for every command the program lists. A finding is
+// anything but a clean refusal: a crash or sanitizer report, any exception other than InputError,
+// or a multi-line message.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -74,7 +79,8 @@ const std::map<std::string, CommandSpec>& specs() {
            {"quick", "", ""},
            {"reduced-follower", "", ""},
            {"shard", "I/N", ""},
-           {"timings", "DIR", ""}}}},
+           {"timings", "DIR", "", true},
+           {"jobs", "N", ""}}}},
         {"suite",
          {"suite",
           "",
@@ -88,8 +94,21 @@ const std::map<std::string, CommandSpec>& specs() {
            {"quick", "", ""},
            {"studies", "", ""},
            {"no-studies", "", ""},
+           {"estimate", "on|off", ""},
            {"shard", "I/N", ""},
-           {"timings", "DIR", ""}}}},
+           {"timings", "DIR", "", true}}}},
+        {"sweep",
+         {"sweep",
+          "FILE",
+          1,
+          1,
+          "",
+          {{"out", "DIR", ""},
+           {"jobs", "N", ""},
+           {"force", "", ""},
+           {"list", "", ""},
+           {"shard", "I/N", ""},
+           {"timings", "DIR", "", true}}}},
         {"merge", {"merge", "SHARD_DIR...", 1, -1, "", {{"out", "DIR", ""}}}},
         {"completion", {"completion", "bash", 1, 1, "", {{"out", "FILE", ""}}}},
         {"verify", {"verify", "[CASE ...]", 0, -1, "", {{"json", "FILE", ""}}}},
@@ -158,6 +177,18 @@ void parse(const std::vector<std::string>& argv) {
 }
 
 }  // namespace
+
+// ROTBEAM_FUZZ_PRINT_TABLE=1: print every command's help from the table above and stop, for the
+// comparison with the program's (command_table.sh).
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    if (std::getenv("ROTBEAM_FUZZ_PRINT_TABLE") != nullptr) {
+        for (const auto& [name, spec] : specs()) {
+            std::cout << "=== " << name << "\n" << rotbeam::cli::help_text(spec);
+        }
+        std::exit(0);
+    }
+    return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::vector<std::string> argv(1);

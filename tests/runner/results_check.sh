@@ -15,15 +15,36 @@ same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
 
 # complete_files DIR WHAT [temporaries-allowed]: no temporary (unless allowed: a process killed by
 # SIGKILL cannot remove the one it was writing; the next suite in DIR clears it), every JSON
-# parses, no empty file.
+# parses, no empty file, and no file cut short: every text file the program writes (JSON, CSV,
+# gnuplot data, Markdown, HTML, SVG) ends with its last line's newline, every CSV row has the
+# header's number of fields, every PNG ends with its IEND chunk.
 complete_files() {
     if [ "${3:-}" != temporaries-allowed ] && find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then
         fail "$2: temporary left behind"
     fi
-    python3 - "$1" <<'PY' || fail "$2: a truncated or empty JSON file"
-import json, pathlib, sys
-for p in pathlib.Path(sys.argv[1]).rglob("*.json"):
-    json.loads(p.read_text())
+    python3 - "$1" <<'PY' || fail "$2: a truncated or empty file"
+import csv, json, pathlib, sys
+bad = []
+for p in pathlib.Path(sys.argv[1]).rglob("*"):
+    if not p.is_file() or ".rotbeam-tmp." in p.name:
+        continue
+    data = p.read_bytes()
+    if p.suffix == ".json":
+        try:
+            json.loads(data)
+        except ValueError as e:
+            bad.append(f"{p}: {e}")
+    if p.suffix in (".json", ".csv", ".dat", ".md", ".html", ".svg") and not data.endswith(b"\n"):
+        bad.append(f"{p}: no newline at the end")
+    if p.suffix == ".csv":
+        rows = list(csv.reader(data.decode().splitlines()))
+        if any(len(r) != len(rows[0]) for r in rows):
+            bad.append(f"{p}: a row with another number of fields than the header")
+    if p.suffix == ".png" and not data.endswith(b"IEND\xaeB`\x82"):
+        bad.append(f"{p}: no IEND chunk at the end")
+for b in bad[:5]:
+    print(b)
+sys.exit(1 if bad else 0)
 PY
     if find "$1" -type f -empty | grep -q .; then fail "$2: an empty file"; fi
 }

@@ -8,30 +8,35 @@
 #   SIGINT/SIGTERM, keeps its finished runs untouched on resume, and resumes to the same results;
 # - a suite and a `run` that hit a file size limit (ulimit -f, the EFBIG of a full disk) exit 4
 #   naming the file, leave no partial file, and the suite then resumes to the same results;
-# - a `run` stopped by SIGINT or SIGTERM writes nothing.
-# Usage: suite_resume.sh ROTBEAM COMPARE_RESULTS_PY
+# - a `run` stopped by SIGINT or SIGTERM writes nothing, and one stopped by SIGKILL no partial file;
+# - every folder checked (complete_files) holds no file cut short: JSON that parses, text files
+#   that end with their newline, CSV rows of the header's width, PNGs that end with IEND.
+# Usage: suite_resume.sh ROTBEAM COMPARE_RESULTS_PY JOBS2_SUITE
+# JOBS2_SUITE: `rotbeam suite --quick --jobs 2` of the same program (the ctest fixture quick_suite).
 set -u
+jobs2=$3
 # rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
 set -m
 
-# Reference: one uninterrupted suite on one thread; then the same on two threads. The studies
-# cost most of the quick suite (~55 s CPU of it), so the early stops and the full disk use the
-# runs alone (--no-studies, ~5 s) against a reference of their own.
-"$rotbeam" suite --quick --jobs 1 --out "$work/ref" >/dev/null 2>&1 || fail "reference suite failed"
-total=$(ls "$work/ref/runs" | grep -c '\.json$')
+# Reference: one uninterrupted suite on two threads, the fixture's. The suite stopped late (in its
+# studies) runs and resumes on one thread, so that comparing it with the reference checks both
+# that a resumed suite equals an uninterrupted one and that --jobs 1 equals --jobs 2 (a difference
+# from either fails it; each needs ~55 s of CPU for a whole quick suite, so one suite does both).
+# The studies cost most of the quick suite, so the early stops and the full disk use the runs
+# alone (--no-studies, ~5 s) against a reference of their own, on one thread.
+[ -f "$jobs2/index.md" ] || fail "no --jobs 2 suite in $jobs2 (the fixture quick_suite failed?)"
+total=$(ls "$jobs2/runs" 2>/dev/null | grep -c '\.json$')
 [ "$total" -ge 16 ] || fail "reference suite wrote $total runs"
-"$rotbeam" suite --quick --jobs 2 --out "$work/jobs2" >/dev/null 2>&1 || fail "--jobs 2 suite failed"
-same "$work/ref" "$work/jobs2" "the --jobs 2 suite"
 "$rotbeam" suite --quick --no-studies --jobs 1 --out "$work/ref-runs" >/dev/null 2>&1 ||
     fail "reference suite (runs) failed"
 
 # Interrupted: SIGKILL and SIGTERM once a few runs are written, SIGINT once the studies write.
-interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE [FLAGS]
-    local signal=$1 when=$2 dir=$3 reference=$4 flags=${5:-}
-    "$rotbeam" suite --quick $flags --jobs 2 --out "$dir" >"$work/out.txt" 2>"$work/err.txt" &
+interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE JOBS [FLAGS]
+    local signal=$1 when=$2 dir=$3 reference=$4 jobs=$5 flags=${6:-}
+    "$rotbeam" suite --quick $flags --jobs $jobs --out "$dir" >"$work/out.txt" 2>"$work/err.txt" &
     local pid=$!
     for _ in $(seq 1 3000); do
         if [ "$when" = early ]; then
@@ -47,6 +52,7 @@ interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE [FLAGS]
     local code=$?
     if [ -f "$dir/index.md" ]; then
         echo "note: the suite finished before $signal ($when)"
+        same "$reference" "$dir" "the suite (--jobs $jobs) that finished before SIG$signal"
         return
     fi
     case $signal in
@@ -65,18 +71,20 @@ interrupt() {  # interrupt SIGNAL WHEN DIR REFERENCE [FLAGS]
     local before finished
     finished=$(ls "$dir/runs" | grep -c '\.json$')
     before=$(cd "$dir/runs" && stat -c '%n %y' *.json | sort)
-    "$rotbeam" suite --quick $flags --jobs 2 --out "$dir" >/dev/null 2>&1 ||
+    "$rotbeam" suite --quick $flags --jobs $jobs --out "$dir" >/dev/null 2>&1 ||
         fail "resume after SIG$signal failed"
     complete_files "$dir" "resumed after SIG$signal ($when)"
     while read -r name stamp; do
         [ "$(stat -c '%y' "$dir/runs/$name")" = "$stamp" ] || fail "finished run redone: $name"
     done <<<"$before"
-    same "$reference" "$dir" "the suite resumed after SIG$signal ($when, $finished of $total runs)"
-    echo "SIG$signal ($when): stopped with exit $code after $finished of $total runs, resumed"
+    same "$reference" "$dir" \
+        "the suite (--jobs $jobs) resumed after SIG$signal ($when, $finished of $total runs)"
+    echo "SIG$signal ($when, --jobs $jobs): stopped with exit $code after $finished of $total runs," \
+        "resumed"
 }
-interrupt KILL early "$work/kill" "$work/ref-runs" --no-studies
-interrupt TERM early "$work/term" "$work/ref-runs" --no-studies
-interrupt INT late "$work/int" "$work/ref"
+interrupt KILL early "$work/kill" "$work/ref-runs" 2 --no-studies
+interrupt TERM early "$work/term" "$work/ref-runs" 2 --no-studies
+interrupt INT late "$work/int" "$jobs2" 1
 
 # A file size limit of 8 KiB: the run results (tens of KiB) cannot be written.
 (
@@ -118,6 +126,22 @@ for signal in INT TERM; do
         [ -z "$(ls -A "$work/run")" ] || fail "run, SIG$signal left: $(ls -A "$work/run")"
     fi
 done
+# `run` stopped by SIGKILL: its hidden temporaries at most, never a partial result (a result written
+# before the signal is complete).
+rm -rf "$work/run-kill"
+mkdir -p "$work/run-kill"
+"$rotbeam" run joined-beam-dead --out "$work/run-kill" >/dev/null 2>&1 &
+pid=$!
+sleep 0.5
+kill -s KILL $pid
+wait $pid
+code=$?
+if [ $code -eq 0 ]; then
+    echo "note: the run finished before SIGKILL"
+else
+    [ $code -eq 137 ] || fail "run, SIGKILL: exit $code, expected 137"
+    complete_files "$work/run-kill" "run after SIGKILL" temporaries-allowed
+fi
 # And an uninterrupted run is the same twice (the JSON and the CSV history of a dynamic run).
 "$rotbeam" run joined-beam-dead --out "$work/run/a" >/dev/null 2>&1 || fail "run failed"
 "$rotbeam" run joined-beam-dead --out "$work/run/b" >/dev/null 2>&1 || fail "run failed"
@@ -129,4 +153,4 @@ if [ $failures -ne 0 ]; then
     exit 1
 fi
 echo "suite resume: --jobs 1 = --jobs 2; stopped by SIGKILL/SIGTERM/SIGINT and by a file size" \
-    "limit, resumed to the same results; run leaves nothing when stopped"
+    "limit, resumed to the same results; run leaves no partial file when stopped"

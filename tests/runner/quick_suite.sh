@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# `rotbeam suite --quick --jobs 2` once, into OUT (removed first), for the checks that read its
+# results and report instead of running the same suite again (test_report_complete,
+# test_suite_resume; docs/quality-checks.md, "Time"). The ctest fixture `quick_suite`.
+# Usage: quick_suite.sh ROTBEAM OUT
+set -u
+rotbeam=$1
+out=$2
+rm -rf "$out"
+mkdir -p "$(dirname "$out")"
+if ! "$rotbeam" suite --quick --jobs 2 --out "$out" >"$out.log" 2>&1; then
+    echo "FAIL: suite --quick --jobs 2 failed: $(tail -3 "$out.log")"
+    rm -rf "$out"
+    exit 1
+fi
+echo "quick suite written to $out"
