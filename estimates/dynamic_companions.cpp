@@ -40,13 +40,18 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
     }
     plan.time_method = "dt/2";
     // Generalized-α and the mixed trapezoidal scheme are second order; Gauss–Legendre
-    // collocation with s stages is of order 2s (core/gauss_collocation.hpp).
+    // collocation with s stages is of order 2s (core/gauss_collocation.hpp); Radau IIA with 3
+    // stages of order 5 in the positions and rotations the histories hold, on the closed loop
+    // (index 3) too (core/dae_radau.hpp; measured in docs/mixed-dynamics.md).
     switch (model.analysis.dynamics.integrator) {
         case Integrator::gauss_legendre_2:
             plan.time_order = 4.0;
             break;
         case Integrator::gauss_legendre_3:
             plan.time_order = 6.0;
+            break;
+        case Integrator::radau_iia_3:
+            plan.time_order = 5.0;
             break;
         default:
             plan.time_order = 2.0;
