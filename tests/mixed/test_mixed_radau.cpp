@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/dae_driver.hpp"
+#include "core/errors.hpp"
 #include "core/so3.hpp"
 #include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
@@ -199,9 +200,83 @@ std::vector<std::vector<double>> order_table(const std::string& title, DaeSystem
     return errors;
 }
 
+// ẋ − cos t = 0 (x(0) = 0, x = sin t), whose evaluation is refused (SingularityError, as a
+// parameterization near its singular angle) the first `refusals` times it is asked about a time
+// in (0.5, 0.6].
+class RefusingSystem : public DaeSystem {
+  public:
+    explicit RefusingSystem(int refusals) : refusals_(refusals) {
+        pattern_ = SparseMatrix(1, 1);
+        pattern_.insert(0, 0) = 0.0;
+        pattern_.makeCompressed();
+        ones_ = VecX::Ones(1);
+    }
+    int size() const override { return 1; }
+    void evaluate(double t, const VecX&, const VecX& xdot, VecX& r, SparseMatrix* Jx,
+                  SparseMatrix* Jxd) override {
+        if (t > 0.5 && t <= 0.6 && refused < refusals_) {
+            ++refused;
+            throw SingularityError("toy", "evaluate", 6.28, "refused on purpose");
+        }
+        r.resize(1);
+        r[0] = xdot[0] - std::cos(t);
+        if (Jx != nullptr) {
+            *Jx = pattern_;
+            Jx->valuePtr()[0] = 0.0;
+        }
+        if (Jxd != nullptr) {
+            *Jxd = pattern_;
+            Jxd->valuePtr()[0] = 1.0;
+        }
+    }
+    const SparseMatrix& pattern() const override { return pattern_; }
+    const VecX& differential() const override { return ones_; }
+    const VecX& residual_scale() const override { return ones_; }
+    const VecX& state_scale() const override { return ones_; }
+    AssemblyCounters counters() const override { return {}; }
+    int refused = 0;
+
+  private:
+    int refusals_;
+    SparseMatrix pattern_;
+    VecX ones_;
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(mixed_radau)
+
+// A refused stage evaluation is a failed step: with kept stage matrices it is first retried with
+// fresh ones (the second refusal), then with h/2 from the unchanged state (the third), then h/4
+// passes; the grid is kept, the run completes, counts its 2 cuts and ends on x = sin t (Δt = 0.1:
+// the 3-point Radau quadrature's error is h⁵ = 1e-5 times a constant far below 0.1 per unit
+// time). With the cuts off (max_cuts = 0) a refusal that persists stops the run with status
+// singular, naming the time.
+BOOST_AUTO_TEST_CASE(radau_iia_cuts_the_step_when_a_stage_state_is_refused) {
+    DaeSettings s;
+    s.end_time = 1.0;
+    s.time_step = 0.1;
+    RefusingSystem toy(3);
+    VecX x = VecX::Zero(1), xdot = VecX::Zero(1);
+    std::vector<double> times;
+    const DaeOutcome out = integrate_radau_iia(
+        toy, x, xdot, s, [&](double t, const VecX&, const VecX&, int) { times.push_back(t); });
+    BOOST_TEST_MESSAGE(out.message);
+    BOOST_TEST((out.status == SolveStatus::converged));
+    BOOST_TEST(toy.refused == 3);
+    BOOST_TEST(out.control.step_cuts == 2);
+    BOOST_TEST(times.size() == 11U);
+    BOOST_TEST_MESSAGE("x(1) − sin 1 = " << x[0] - std::sin(1.0));
+    BOOST_TEST(std::abs(x[0] - std::sin(1.0)) < 1e-6);
+    s.max_cuts = 0;
+    RefusingSystem stubborn(1000);
+    x.setZero();
+    xdot.setZero();
+    const DaeOutcome stopped = integrate_radau_iia(stubborn, x, xdot, s, nullptr);
+    BOOST_TEST((stopped.status == SolveStatus::singular));
+    BOOST_TEST(stopped.message.find("t = 0.6") != std::string::npos, stopped.message);
+    BOOST_TEST(stopped.last_time == 0.5, boost::test_tools::tolerance(1e-12));
+}
 
 // Index 1 (a cantilever: docs/mixed-dynamics.md "Index"): Radau IIA's global error is O(h^5) in
 // every component, differential and algebraic (core/dae_radau.hpp). Released from its first
