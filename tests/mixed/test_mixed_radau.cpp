@@ -336,7 +336,8 @@ BOOST_AUTO_TEST_CASE(radau_iia_agrees_with_the_trapezoidal_rule_at_convergence) 
 // order 5.05 from 8e-3 to 4e-3 and then stall near 1.3e-4 of their amplitude, every other group
 // near its own floor (docs/mixed-dynamics.md "Radau IIA"): the load's onset (Ḟ(0) = 2e6 N/s)
 // excites the stiff modes, which the L-stable scheme damps at each tested step but the reference
-// partly keeps, so the table measures that modal content, not the scheme's order. Asserted only
+// partly keeps, so the table measures that modal content, not the scheme's order (the index-1
+// cantilever driven the same way, next test, shows the same). Asserted only
 // what holds whatever that content: the positions' error falls by more than 10 over the table
 // (measured 43).
 BOOST_AUTO_TEST_CASE(radau_iia_on_the_closed_loop_converges_in_the_positions) {
@@ -350,6 +351,28 @@ BOOST_AUTO_TEST_CASE(radau_iia_on_the_closed_loop_converges_in_the_positions) {
     const std::vector<std::vector<double>> e =
         order_table("Radau IIA, joined beam (index 3), WM, 3 elements per member (error, order)",
                     dyn, x, all_unknowns<P>(dyn), 8e-3, 0.4, 4, 1e-12);
+    BOOST_TEST(e.back()[kU] < 0.1 * e.front()[kU]);
+}
+
+// The same measurement on an index-1 structure driven the same way: the §8 cantilever (8
+// elements) from rest under a tip force sin 20t N (Ḟ(0) = 20 N/s), 0–0.4 s, Δt = 8e-3 … 1e-3
+// against 1.25e-4, every unknown. Printed next to the joined beam's table, to separate the index
+// from the excited stiff modes as the cause of the joined beam's low observed orders: measured
+// the same erratic orders 0.2–3 (docs/mixed-dynamics.md "Radau IIA"), so the modal content, not
+// the index, sets them here. Asserted as there: the positions' error falls by more than 10 over
+// the table (measured 231).
+BOOST_AUTO_TEST_CASE(radau_iia_on_a_cantilever_driven_from_rest) {
+    using P = param::WienerMilenkovic;
+    const Model model = test::catalog_model(
+        "free-vibration",
+        {"discretization.formulation=mixed", "discretization.order=1",
+         "analysis.initial_state=rest", "loads.release.time={type: sine, omega: 20.0}"});
+    form::MixedDynamicsOf<P> dyn(model, 0.4, 1e-9);
+    const VecX x = dyn.from_static_state(form::MixedStaticsOf<P>(model).state_vector());
+    const std::vector<std::vector<double>> e = order_table(
+        "Radau IIA, cantilever (index 1) driven from rest by sin 20t N at the tip, WM, "
+        "8 elements (error, order)",
+        dyn, x, all_unknowns<P>(dyn), 8e-3, 0.4, 4, 1e-12);
     BOOST_TEST(e.back()[kU] < 0.1 * e.front()[kU]);
 }
 
