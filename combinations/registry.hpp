@@ -46,7 +46,8 @@ inline constexpr std::array kDisplacementIntegrators = {
     Integrator::generalized_alpha, Integrator::gauss_legendre_2, Integrator::gauss_legendre_3};
 inline constexpr std::array kDisplacementInterpolations = {Interpolation::relative,
                                                            Interpolation::direct};
-inline constexpr std::array kMixedIntegrators = {Integrator::trapezoidal, Integrator::ida};
+inline constexpr std::array kMixedIntegrators = {Integrator::trapezoidal, Integrator::ida,
+                                                 Integrator::radau_iia_3};
 
 // One entry per Formulation, in enum order.
 inline constexpr std::array kFormulations = {

@@ -37,14 +37,16 @@ enum class Update { multiplicative, additive };
 enum class WmMap { plain, continuous };
 
 // The time integrator; `automatic` (no name in the case) is the formulation's first listed.
-// gauss_legendre_2/3: Gauss–Legendre collocation with 2/3 stages (core/gauss_collocation.hpp).
+// gauss_legendre_2/3: Gauss–Legendre collocation with 2/3 stages (core/gauss_collocation.hpp);
+// radau_iia_3: the 3-stage Radau IIA method on the implicit DAE (core/dae_radau.hpp).
 enum class Integrator {
     automatic,
     generalized_alpha,
     trapezoidal,
     ida,
     gauss_legendre_2,
-    gauss_legendre_3
+    gauss_legendre_3,
+    radau_iia_3
 };
 
 // Where a dynamic analysis starts: at rest in the reference configuration, or at rest from the
@@ -84,8 +86,10 @@ struct ChoiceNames<WmMap> {
 template <>
 struct ChoiceNames<Integrator> {
     // `automatic` has no name in a case file: parse_choice never returns it.
-    static constexpr std::array<std::string_view, 6> kNames = {
-        "", "generalized-alpha", "trapezoidal", "ida", "gauss-legendre-2", "gauss-legendre-3"};
+    static constexpr std::array<std::string_view, 7> kNames = {
+        "",           "generalized-alpha", "trapezoidal",
+        "ida",        "gauss-legendre-2",  "gauss-legendre-3",
+        "radau-iia-3"};
 };
 template <>
 struct ChoiceNames<InitialState> {

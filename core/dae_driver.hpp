@@ -9,8 +9,10 @@
 //    absolute tolerances atol_i = absolute_tolerance × state_scale_i (IDASVtolerances), maximum
 //    order `max_order` (2 by default: BDF3–5 are not A-stable, their stability regions miss a
 //    part of the left half-plane next to the imaginary axis where the undamped structure's modes
-//    ±iω lie; BDF2 is A-stable, at the price of damping high frequencies).
-// Both start from consistent initial conditions: given the differential unknowns of X, the
+//    ±iω lie; BDF2 is A-stable, at the price of damping high frequencies);
+//  - the 3-stage Radau IIA method (core/dae_radau.hpp), fixed steps, order 5 on the differential
+//    unknowns of an index-1 system.
+// All three start from consistent initial conditions: given the differential unknowns of X, the
 // algebraic unknowns of X and the differential unknowns of Ẋ are solved from F(t₀, X, Ẋ) = 0 (an
 // index-1 DAE: that Jacobian is regular) — by the shared Newton for the fixed-step scheme and by
 // IDACalcIC (IDA_YA_YDP_INIT) for IDA; a start that is already consistent is kept. IDA excludes the
@@ -71,6 +73,7 @@ struct DaeOutcome {
     long newton_iterations = 0;
     long residual_evaluations = 0;
     long jacobian_evaluations = 0;
+    long factorizations = 0;       // Radau IIA: the stage matrices' LU factorizations
     long error_test_failures = 0;  // IDA
     long nonlinear_failures = 0;   // IDA
     int last_order = 0;            // IDA
@@ -94,10 +97,21 @@ bool already_consistent(DaeSystem& dae, double t, const VecX& x, const VecX& xdo
 NewtonOutcome consistent_initial_conditions(DaeSystem& dae, double t, VecX& x, VecX& xdot,
                                             const NewtonSettings& settings, double rate_time);
 
+// An increment δx_j is resolvable only to the residual's accuracy: it changes row i by J_ij δx_j,
+// so below min_i rscale_i / |J_ij| (times the tolerance) it is invisible in every scaled residual
+// row. Raises scale_j to that resolution where the unknown's own scale is finer (an
+// angular-momentum rate whose effect h Ḣ on a moment row is tiny against the moment scale; a
+// stiff section's force), so the increment test asks for what round-off allows.
+void raise_to_resolution(const SparseMatrix& J, const VecX& rscale, VecX& scale);
+
 DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                                  const DaeOutput& output);
 
 DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                          const DaeOutput& output);
+
+// The 3-stage Radau IIA method, fixed steps with the step cut (core/dae_radau.hpp).
+DaeOutcome integrate_radau_iia(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
+                               const DaeOutput& output);
 
 }  // namespace rotbeam

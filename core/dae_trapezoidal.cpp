@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/dae_driver.hpp"
+#include "core/dae_fixed_steps.hpp"
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
 #include "core/step_size_control.hpp"
@@ -13,13 +14,6 @@
 
 namespace rotbeam {
 
-namespace {
-
-// An increment δx_j is resolvable only to the residual's accuracy: it changes row i by J_ij δx_j,
-// so below min_i rscale_i / |J_ij| (times the tolerance) it is invisible in every scaled residual
-// row. The increment scale is raised to that resolution where the unknown's own scale is finer
-// (an angular-momentum rate whose effect h Ḣ on a moment row is tiny against the moment scale; a
-// stiff section's force), so the increment test asks for what round-off allows.
 void raise_to_resolution(const SparseMatrix& J, const VecX& rscale, VecX& scale) {
     for (Eigen::Index c = 0; c < J.outerSize(); ++c) {
         double resolution = std::numeric_limits<double>::infinity();
@@ -31,6 +25,8 @@ void raise_to_resolution(const SparseMatrix& J, const VecX& rscale, VecX& scale)
         if (std::isfinite(resolution)) scale[c] = std::max(scale[c], resolution);
     }
 }
+
+namespace {
 
 // Common state handling of the two systems below: an additive unknown vector with checkpoints.
 class AdditiveSystem : public NonlinearSystem {
@@ -288,34 +284,6 @@ class TrapezoidalRun {
     bool scaled_ = false;
 };
 
-// Fixed steps on the grid start + n Δt; a step whose Newton fails is covered by halves of itself.
-bool run_fixed(TrapezoidalRun& run, const DaeSettings& s, const DaeOutput& output) {
-    const long steps = std::lround((s.end_time - s.start_time) / s.time_step);
-    const long every =
-        s.output_interval > 0.0 ? std::max(1L, std::lround(s.output_interval / s.time_step)) : 1;
-    for (long n = 1; n <= steps; ++n) {
-        const double t = s.start_time + static_cast<double>(n) * s.time_step;
-        check_time_limit("at time", run.time());
-        for (int cuts = 0;;) {
-            // Uncut: the case's Δt itself; cut: pieces of Δt / 2^cuts, the last landing on t.
-            const double piece = std::ldexp(s.time_step, -cuts);
-            const bool last = cuts == 0 || run.time() + piece >= t - 1e-9 * piece;
-            const double hs = cuts == 0 ? s.time_step : last ? t - run.time() : piece;
-            const double to = last ? t : run.time() + hs;
-            if (!run.try_step(to, hs)) {
-                if (!run.cut(hs, cuts)) return false;
-                ++cuts;
-                continue;
-            }
-            run.accept(to, hs);
-            if (last) break;
-        }
-        if (output && (n % every == 0 || n == steps))
-            output(t, run.x(), run.xdot(), run.iterations());
-    }
-    return true;
-}
-
 }  // namespace
 
 namespace {
@@ -415,7 +383,7 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
         run.finish(m.str());
         return outcome;
     }
-    if (!run_fixed(run, s, output)) return outcome;
+    if (!run_fixed_steps(run, s, output)) return outcome;
     run.finish("fixed-step trapezoidal, " +
                std::to_string(std::lround((s.end_time - s.start_time) / s.time_step)) + " steps");
     return outcome;

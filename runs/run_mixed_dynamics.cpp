@@ -148,16 +148,35 @@ void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNorm
     worst.elements = std::max(worst.elements, now.elements);
 }
 
-// The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme)
-// or `ida` (SUNDIALS IDA, BDF of order ≤ 2, analysis.relative_tolerance and absolute_tolerance,
-// 1e-6 by default, the latter × the state scales).
-bool use_ida(const DynamicSettings& d) {
+// The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme),
+// `ida` (SUNDIALS IDA, BDF of order ≤ 2, analysis.relative_tolerance and absolute_tolerance,
+// 1e-6 by default, the latter × the state scales) or `radau-iia-3` (fixed steps, order 5 on an
+// index-1 system, core/dae_radau.hpp).
+Integrator mixed_integrator(const DynamicSettings& d) {
     if (!comb::takes_integrator(Formulation::mixed, d.integrator)) {
         throw InputError("analysis.integrator: unknown integrator '" +
-                         std::string(choice_name(d.integrator)) +
-                         "' for the mixed formulation (trapezoidal | ida)");
+                         std::string(choice_name(d.integrator)) + "' for the mixed formulation (" +
+                         comb::integrator_names(Formulation::mixed) + ")");
     }
-    return comb::integrator_for(Formulation::mixed, d.integrator) == Integrator::ida;
+    return comb::integrator_for(Formulation::mixed, d.integrator);
+}
+
+// The classical order of the fixed-step schemes (the result's max_order; IDA: its setting).
+int scheme_order(Integrator integrator, const DaeSettings& s) {
+    if (integrator == Integrator::ida) return s.max_order;
+    return integrator == Integrator::radau_iia_3 ? 5 : 2;
+}
+
+DaeOutcome integrate(Integrator integrator, DaeSystem& dae, VecX& x, VecX& xdot,
+                     const DaeSettings& s, const DaeOutput& output) {
+    switch (integrator) {
+        case Integrator::ida:
+            return integrate_ida(dae, x, xdot, s, output);
+        case Integrator::radau_iia_3:
+            return integrate_radau_iia(dae, x, xdot, s, output);
+        default:
+            return integrate_trapezoidal(dae, x, xdot, s, output);
+    }
 }
 
 template <class P>
@@ -167,7 +186,8 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         throw InputError(
             "analysis: a dynamic analysis needs time_step > 0 and end_time > time_step");
     }
-    const bool ida = use_ida(d);
+    const Integrator integrator = mixed_integrator(d);
+    const bool ida = integrator == Integrator::ida;
     VecX state = form::MixedStaticsOf<P>(model).state_vector();
     if (d.initial_state == InitialState::static_equilibrium && has_static_load(model)) {
         double lambda = 0.0;
@@ -232,23 +252,24 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         result["steps"].push_back(std::move(step));
         if constexpr (P::kSize == 4) track_norm_drift(dyn.norm_drift(xs, t), drift);
     };
-    const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
-                               : integrate_trapezoidal(dyn, x, xdot, s, output);
-    result["dynamics"] = {
-        {"integrator", choice_name(ida ? Integrator::ida : Integrator::trapezoidal)},
-        {"steps", out.steps},
-        {"newton_iterations", out.newton_iterations},
-        {"residual_evaluations", out.residual_evaluations},
-        {"jacobian_evaluations", out.jacobian_evaluations},
-        {"error_test_failures", out.error_test_failures},
-        {"nonlinear_failures", out.nonlinear_failures},
-        {"max_order", ida ? s.max_order : 2},
-        {"last_time", out.last_time}};
+    const DaeOutcome out = integrate(integrator, dyn, x, xdot, s, output);
+    result["dynamics"] = {{"integrator", choice_name(integrator)},
+                          {"steps", out.steps},
+                          {"newton_iterations", out.newton_iterations},
+                          {"residual_evaluations", out.residual_evaluations},
+                          {"jacobian_evaluations", out.jacobian_evaluations},
+                          {"error_test_failures", out.error_test_failures},
+                          {"nonlinear_failures", out.nonlinear_failures},
+                          {"max_order", scheme_order(integrator, s)},
+                          {"last_time", out.last_time}};
     if (ida) {
         result["dynamics"]["relative_tolerance"] = s.relative_tolerance;
         result["dynamics"]["absolute_tolerance"] = s.absolute_tolerance;
     } else {
         add_step_control_json(s.time_tolerance, out.control, result["dynamics"]);
+    }
+    if (integrator == Integrator::radau_iia_3) {
+        result["dynamics"]["factorizations"] = out.factorizations;
     }
     result["counters"] = counters_json(dyn.counters());
     set_analysis_status(result, out.status, out.message);

@@ -10,8 +10,8 @@
 
 #include "cases/loader/beamdyn_import.hpp"
 #include "cases/loader/limits.hpp"
-#include "cases/loader/yaml_file.hpp"
 #include "cases/loader/model_builder.hpp"
+#include "cases/loader/yaml_file.hpp"
 #include "combinations/registry.hpp"
 #include "core/errors.hpp"
 
@@ -190,10 +190,11 @@ void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& 
                    comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
     }
     // Adaptive steps exist for generalized-alpha, the trapezoidal scheme and IDA
-    // (core/step_size_control.hpp); the Gauss-Legendre schemes take fixed steps only.
-    const bool gauss =
-        asked == Integrator::gauss_legendre_2 || asked == Integrator::gauss_legendre_3;
-    if (gauss && model.analysis.dynamics.time_tolerance > 0.0) {
+    // (core/step_size_control.hpp); the Gauss-Legendre and Radau IIA schemes take fixed steps only.
+    const bool fixed_only = asked == Integrator::gauss_legendre_2 ||
+                            asked == Integrator::gauss_legendre_3 ||
+                            asked == Integrator::radau_iia_3;
+    if (fixed_only && model.analysis.dynamics.time_tolerance > 0.0) {
         r.fail(root["analysis"]["time_tolerance"], "analysis.time_tolerance",
                "not available with analysis.integrator: " + std::string(choice_name(asked)) +
                    " (fixed steps only)");

@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE(names_parse_back_to_their_ids) {
     }
     for (const Integrator i :
          {Integrator::generalized_alpha, Integrator::trapezoidal, Integrator::ida,
-          Integrator::gauss_legendre_2, Integrator::gauss_legendre_3}) {
+          Integrator::gauss_legendre_2, Integrator::gauss_legendre_3, Integrator::radau_iia_3}) {
         BOOST_TEST((parse_choice<Integrator>(choice_name(i)) == i));
     }
     BOOST_TEST(!parse_choice<Integrator>("").has_value());  // `automatic` has no name
@@ -89,6 +89,8 @@ BOOST_AUTO_TEST_CASE(integrators_default_to_the_first_listed_and_refuse_the_othe
     BOOST_TEST(!comb::takes_integrator(Formulation::displacement, Integrator::trapezoidal));
     BOOST_TEST(comb::takes_integrator(Formulation::displacement, Integrator::gauss_legendre_3));
     BOOST_TEST(!comb::takes_integrator(Formulation::mixed, Integrator::gauss_legendre_2));
+    BOOST_TEST(comb::takes_integrator(Formulation::mixed, Integrator::radau_iia_3));
+    BOOST_TEST(!comb::takes_integrator(Formulation::displacement, Integrator::radau_iia_3));
 }
 
 // Every listed combination (and the mixed WM's continuous map) builds its static problem from the

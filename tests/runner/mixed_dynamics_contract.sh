@@ -12,7 +12,7 @@ src=$2
 . "$(dirname "$0")/scratch.sh"
 
 for rotation in wiener-milenkovic rodrigues rotation-vector euler-angles quaternion; do
-    for integrator in trapezoidal ida; do
+    for integrator in trapezoidal ida radau-iia-3; do
         out="$work/$rotation-$integrator"
         "$rotbeam" run "$src/cases/joined-beam-follower.yaml" --formulation mixed --rotation "$rotation" \
             --set analysis.integrator=$integrator --set analysis.end_time=0.05 \

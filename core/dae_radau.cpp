@@ -1,0 +1,427 @@
+// The 3-stage Radau IIA method on an implicit DAE (core/dae_radau.hpp): the tableau, its
+// eigen-transformation, one step's simplified Newton and the fixed-step run.
+#include "core/dae_radau.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseLU>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include "core/convergence.hpp"
+#include "core/dae_fixed_steps.hpp"
+#include "core/errors.hpp"
+#include "core/sparse_lu.hpp"
+#include "core/step_observer.hpp"
+#include "core/step_size_control.hpp"
+#include "core/time_limit.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+using Complex = std::complex<double>;
+using ComplexSparse = Eigen::SparseMatrix<Complex, Eigen::ColMajor, int>;
+constexpr int kStages = 3;
+// The stage matrices are kept for the next step (of the same size) when the last iteration
+// contracted at least this fast. A kept matrix costs nothing but iterations, each 3 residuals and
+// a real and a complex solve, against an evaluation of ∂F/∂X, ∂F/∂Ẋ and two factorizations.
+constexpr double kReuseRate = 0.05;
+
+// Radau IIA, s = 3 (HW II, Table IV.5.6), and W = A⁻¹ = S Λ S⁻¹ with the real eigenvalue first
+// and the pair's representative (imaginary part > 0) second; the third column of S is the
+// conjugate of the second, so the third transformed system is the conjugate of the second's.
+struct RadauTableau {
+    Eigen::Matrix3d A, W;
+    Eigen::Vector3d c;
+    Eigen::Matrix3cd S, S_inv;
+    double gamma = 0.0;  // the real eigenvalue of W
+    Complex mu;          // the pair's representative α + iβ
+};
+
+RadauTableau radau_tableau() {
+    RadauTableau t;
+    const double r = std::sqrt(6.0);
+    t.c << (4.0 - r) / 10.0, (4.0 + r) / 10.0, 1.0;
+    t.A << (88.0 - 7.0 * r) / 360.0, (296.0 - 169.0 * r) / 1800.0, (-2.0 + 3.0 * r) / 225.0,
+        (296.0 + 169.0 * r) / 1800.0, (88.0 + 7.0 * r) / 360.0, (-2.0 - 3.0 * r) / 225.0,
+        (16.0 - r) / 36.0, (16.0 + r) / 36.0, 1.0 / 9.0;
+    t.W = t.A.inverse();  // the 3 × 3 Butcher matrix, not a stage system
+    const Eigen::EigenSolver<Eigen::Matrix3d> es(t.W);
+    int real = -1, pair = -1;
+    for (int k = 0; k < kStages; ++k) {
+        const Complex l = es.eigenvalues()(k);
+        if (std::abs(l.imag()) <= 1e-12 * std::abs(l)) real = k;
+        if (l.imag() > 1e-12 * std::abs(l)) pair = k;
+    }
+    ROTBEAM_VERIFY(real >= 0 && pair >= 0, "Radau IIA tableau: unexpected spectrum of A⁻¹");
+    t.gamma = es.eigenvalues()(real).real();
+    t.mu = es.eigenvalues()(pair);
+    t.S.col(0) = es.eigenvectors().col(real).real().cast<Complex>();
+    t.S.col(1) = es.eigenvectors().col(pair);
+    t.S.col(2) = es.eigenvectors().col(pair).conjugate();
+    t.S_inv = t.S.inverse();
+    const Eigen::Vector3cd lambda(t.gamma, t.mu, std::conj(t.mu));
+    const double defect =
+        (t.S * lambda.asDiagonal() * t.S_inv - t.W.cast<Complex>()).cwiseAbs().maxCoeff();
+    ROTBEAM_VERIFY(defect <= 1e-12 * t.W.cwiseAbs().maxCoeff(), "Radau IIA tableau: W ≠ S Λ S⁻¹");
+    return t;
+}
+
+// One step's stage equations and their simplified Newton (core/dae_radau.hpp). Buffers are sized
+// once; the complex LU's pattern is analysed once, KLU keeps its pivot order.
+class RadauStepper {
+  public:
+    RadauStepper(DaeSystem& dae, const NewtonSettings& newton)
+        : dae_(dae), T_(radau_tableau()), newton_(newton), n_(dae.size()) {
+        for (auto* v : {&Z_, &Zold_, &Ydot_, &R_, &dZ_}) {
+            for (VecX& z : *v) z.setZero(n_);
+        }
+        for (auto* v : {&y_, &r_, &gr_, &xr_, &x1_, &xd1_}) v->setZero(n_);
+        gc_.setZero(n_);
+        xc_.setZero(n_);
+    }
+
+    // From (x_n, ẋ_n) at t to t + h; on success state() and rate() are the step end. The stage
+    // matrices of an earlier step are kept while the step size is unchanged and the last stage
+    // iteration contracted by kReuseRate or better; if the iteration then fails, fresh ones are
+    // made and the step is tried again before it counts as failed.
+    NewtonOutcome step(double t, double h, const VecX& xn, const VecX& xdn);
+    // The step of size h was accepted: its stages predict the next step's.
+    void remember(double h) {
+        Zold_ = Z_;
+        h_old_ = h;
+    }
+    const VecX& state() const { return x1_; }
+    const VecX& rate() const { return xd1_; }
+    long factorizations() const { return factorizations_; }
+
+  private:
+    NewtonOutcome iterate(double t, double h, const VecX& xn, const VecX& xdn, bool fresh);
+    bool factor(double t, double h, const VecX& xn, const VecX& xdn);
+    void predict(double h, const VecX& xdn);
+    double stage_residuals(double t, double h, const VecX& xn);
+    double correction();
+    void stage_rate(int i, double h, VecX& out) const;
+
+    DaeSystem& dae_;
+    RadauTableau T_;
+    NewtonSettings newton_;
+    int n_ = 0;
+    std::array<VecX, kStages> Z_, Zold_, Ydot_, R_, dZ_;
+    VecX y_, r_, gr_, xr_, x1_, xd1_, work_, scale_;
+    SparseMatrix Jx_, Jxd_, E_real_, E_floor_;
+    ComplexSparse E_complex_;
+    Eigen::VectorXcd gc_, xc_;
+    SparseLUSolver real_lu_{true};
+    Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> complex_lu_;
+    bool analysed_ = false;
+    double floor_ = 0.0;
+    double h_old_ = 0.0;       // 0: no previous step to extrapolate from
+    double factored_h_ = 0.0;  // the step of the factored matrices (0: none valid)
+    double rate_ = 1.0;        // the last converged iteration's worst contraction η_k/η_{k−1}
+    long factorizations_ = 0;
+};
+
+// ∂F/∂X, ∂F/∂Ẋ at the step start, E_γ by KLU and E_μ by the complex SparseLU. False when one is
+// singular. The increment scales are fixed at the first factorization (as the trapezoidal scheme
+// fixes them at its first iteration matrix).
+bool RadauStepper::factor(double t, double h, const VecX& xn, const VecX& xdn) {
+    dae_.evaluate(t, xn, xdn, r_, &Jx_, &Jxd_);
+    const int nnz = static_cast<int>(Jx_.nonZeros());
+    ROTBEAM_VERIFY(Jxd_.nonZeros() == nnz, "Radau IIA: ∂F/∂X and ∂F/∂Ẋ patterns differ");
+    if (!analysed_) {
+        E_real_ = Jx_;
+        E_floor_ = Jx_;
+        E_complex_ = Jx_.cast<Complex>();
+    }
+    const double g = T_.gamma / h;
+    const Complex m = T_.mu / h;
+    // The stage rates are sums (1/h) Σ_j w_ij Z_j: their terms are bounded by ‖W‖∞/h times Z.
+    const double w1 = T_.W.cwiseAbs().rowwise().sum().maxCoeff() / h;
+    const double* jx = Jx_.valuePtr();
+    const double* jd = Jxd_.valuePtr();
+    for (int k = 0; k < nnz; ++k) {
+        E_real_.valuePtr()[k] = jx[k] + g * jd[k];
+        E_complex_.valuePtr()[k] = jx[k] + m * jd[k];
+        E_floor_.valuePtr()[k] = std::abs(jx[k]) + w1 * std::abs(jd[k]);
+    }
+    if (!analysed_) {
+        scale_ = dae_.increment_scale();
+        raise_to_resolution(E_real_, dae_.residual_scale(), scale_);
+        complex_lu_.analyzePattern(E_complex_);
+        analysed_ = true;
+    }
+    floor_ = round_off_floor(E_floor_, dae_.residual_scale(), scale_, work_);
+    factorizations_ += 2;
+    complex_lu_.factorize(E_complex_);
+    if (complex_lu_.info() != Eigen::Success) return false;
+    return real_lu_.factorize(E_real_);
+}
+
+// The previous step's collocation polynomial (through (0, 0) and (c_j, Z_j) in units of its step)
+// at the new stage times 1 + c_i h/h_old, less its end value Z_3; without one, Z_i = c_i h Ẋ_n.
+void RadauStepper::predict(double h, const VecX& xdn) {
+    if (h_old_ <= 0.0) {
+        for (int i = 0; i < kStages; ++i) Z_[i] = (T_.c(i) * h) * xdn;
+        return;
+    }
+    for (int i = 0; i < kStages; ++i) {
+        const double tau = 1.0 + T_.c(i) * h / h_old_;
+        Z_[i] = -Zold_[kStages - 1];
+        for (int j = 0; j < kStages; ++j) {
+            double l = tau / T_.c(j);  // the basis polynomial vanishes at the node 0 too
+            for (int m = 0; m < kStages; ++m) {
+                if (m != j) l *= (tau - T_.c(m)) / (T_.c(j) - T_.c(m));
+            }
+            Z_[i] += l * Zold_[j];
+        }
+    }
+}
+
+// Ẏ_i = (1/h) Σ_j w_ij Z_j on the differential unknowns, zero on the algebraic ones.
+void RadauStepper::stage_rate(int i, double h, VecX& out) const {
+    out.setZero();
+    for (int j = 0; j < kStages; ++j) out += (T_.W(i, j) / h) * Z_[j];
+    out.array() *= dae_.differential().array();
+}
+
+// The stage residuals R_i; returns their largest scaled max norm.
+double RadauStepper::stage_residuals(double t, double h, const VecX& xn) {
+    double rho = 0.0;
+    for (int i = 0; i < kStages; ++i) {
+        stage_rate(i, h, Ydot_[i]);
+        y_ = xn + Z_[i];
+        dae_.evaluate(t + T_.c(i) * h, y_, Ydot_[i], R_[i], nullptr, nullptr);
+        rho = std::max(rho, scaled_max_norm(R_[i], dae_.residual_scale()));
+    }
+    return rho;
+}
+
+// δZ = −(S ⊗ I) diag(E_γ, E_μ, conj E_μ)⁻¹ (S⁻¹ ⊗ I) R; the pair contributes 2 Re(S_i1 x_μ).
+// Returns the largest scaled max norm of the stage corrections.
+double RadauStepper::correction() {
+    gr_.setZero();
+    gc_.setZero();
+    for (int i = 0; i < kStages; ++i) {
+        gr_ += T_.S_inv(0, i).real() * R_[i];
+        gc_ += T_.S_inv(1, i) * R_[i].cast<Complex>();
+    }
+    real_lu_.solve(gr_, xr_);
+    xc_ = complex_lu_.solve(gc_);
+    double eta = 0.0;
+    for (int i = 0; i < kStages; ++i) {
+        dZ_[i] = -T_.S(i, 0).real() * xr_ - 2.0 * (T_.S(i, 1) * xc_).real();
+        eta = std::max(eta, scaled_max_norm(dZ_[i], scale_));
+    }
+    return eta;
+}
+
+NewtonOutcome RadauStepper::step(double t, double h, const VecX& xn, const VecX& xdn) {
+    const bool reuse = h == factored_h_ && rate_ <= kReuseRate;
+    NewtonOutcome out = iterate(t, h, xn, xdn, !reuse);
+    if (reuse && !out.accepted()) {
+        // The kept matrices no longer describe the stage equations: fresh ones, then the cut.
+        const int spent = out.iterations;
+        out = iterate(t, h, xn, xdn, true);
+        out.iterations += spent;
+    }
+    return out;
+}
+
+NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const VecX& xdn,
+                                    bool fresh) {
+    NewtonOutcome out;
+    try {
+        if (fresh) {
+            factored_h_ = 0.0;
+            if (!factor(t, h, xn, xdn)) {
+                out.singular = true;
+                out.failure = "a stage iteration matrix is singular";
+                return out;
+            }
+            factored_h_ = h;
+        }
+        predict(h, xdn);
+        double rate = 0.0;
+        IterateMeasures m;
+        m.linear = true;
+        const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
+        int growing = 0;
+        for (int k = 1; k <= newton_.max_iterations; ++k) {
+            m.previous_residual = m.residual;
+            m.previous_correction = m.correction;
+            m.residual = stage_residuals(t, h, xn);
+            if (!std::isfinite(m.residual)) {
+                out.failure = "non-finite stage residual at iteration " + std::to_string(k);
+                return out;
+            }
+            m.correction = correction();
+            out.iterations = k;
+            if (k > 1) rate = std::max(rate, m.correction / m.previous_correction);
+            m.last_step_full = k > 1;
+            m.round_off_floor = floor_;
+            const Convergence c = accepted(m, tol);
+            if (newton_.trace != nullptr) {
+                *newton_.trace << "  stage iteration " << k << ": residual " << m.residual
+                               << ", correction " << m.correction << "\n";
+            }
+            if (c != Convergence::exact) {
+                for (int i = 0; i < kStages; ++i) Z_[i] += dZ_[i];
+            }
+            if (c != Convergence::none) {
+                out.converged = c != Convergence::stalled_at_round_off;
+                out.criterion = c;
+                out.iterations = k;
+                out.scaled_residual = m.residual;
+                out.error_bound = c == Convergence::exact ? 0.0 : m.correction;
+                out.round_off_floor = floor_;
+                rate_ = rate;
+                x1_ = xn + Z_[kStages - 1];  // stiffly accurate: the last stage
+                stage_rate(kStages - 1, h, xd1_);
+                return out;
+            }
+            // The simplified Newton converges linearly; two iterations in a row in which neither
+            // the correction nor the residual shrinks mean the frozen matrix no longer describes
+            // the stage equations (step too large).
+            const bool stuck =
+                m.correction >= m.previous_correction && m.residual >= m.previous_residual;
+            growing = stuck ? growing + 1 : 0;
+            if (growing >= 2) {
+                std::ostringstream s;
+                s << "the simplified Newton iteration of the stages does not contract (iteration "
+                  << k << ", scaled correction " << m.correction << ", residual " << m.residual
+                  << ")";
+                out.failure = s.str();
+                return out;
+            }
+        }
+        std::ostringstream s;
+        s << "the stage equations did not converge in " << newton_.max_iterations
+          << " iterations (scaled residual " << m.residual << ", correction " << m.correction
+          << ")";
+        out.failure = s.str();
+    } catch (const SingularityError& e) {
+        out.singular = true;
+        out.failure = e.what();
+    }
+    return out;
+}
+
+// The run: state, stepper and bookkeeping, with the interface run_fixed_steps drives.
+class RadauRun {
+  public:
+    RadauRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome)
+        : dae_(dae), x_(x), xdot_(xdot), s_(s), outcome_(outcome), stepper_(dae, s.newton) {}
+
+    double time() const { return t_; }
+    void start(double t) { t_ = t; }
+    const VecX& x() const { return x_; }
+    const VecX& xdot() const { return xdot_; }
+    int iterations() const { return last_.iterations; }
+
+    bool try_step(double t_next, double h) {
+        try {
+            last_ = stepper_.step(t_, h, x_, xdot_);
+        } catch (const TimeLimitReached& e) {
+            rethrow_with_context(e, "in the step to time", t_next);
+        }
+        outcome_.newton_iterations += last_.iterations;
+        return last_.accepted();
+    }
+    void accept(double t_next, double h) {
+        stalls_.add(last_);
+        stepper_.remember(h);
+        x_ = stepper_.state();
+        xdot_ = stepper_.rate();
+        t_ = t_next;
+        ++outcome_.steps;
+        outcome_.last_time = t_;
+        outcome_.control.add_step(h, outcome_.steps == 1);
+        if (step_observed()) {
+            notify_step({t_, static_cast<int>(outcome_.steps), outcome_.newton_iterations,
+                         dae_.counters().jacobian_evaluations});
+        }
+    }
+    // A stage-iteration failure at the step h: true to retry with h/2, false (status set) past
+    // the cuts.
+    bool cut(double h, int cuts) {
+        if (cuts < s_.max_cuts) {
+            if (outcome_.control.step_cuts == 0) outcome_.control.first_cut_time = t_;
+            ++outcome_.control.step_cuts;
+            return true;
+        }
+        std::ostringstream m;
+        m.precision(9);
+        m << "Radau IIA stage iteration failed at t = " << t_ + h << " (step " << outcome_.steps + 1
+          << ", Δt " << h;
+        if (cuts > 0) m << " after " << cuts << " cuts to h/2";
+        m << "): " << last_.failure;
+        const std::string state = dae_.describe_state(x_);
+        if (!state.empty()) m << "; " << state;
+        outcome_.status = last_.singular ? SolveStatus::singular : SolveStatus::diverged;
+        outcome_.message = m.str();
+        return false;
+    }
+    void finish() {
+        const AssemblyCounters c = dae_.counters();
+        outcome_.residual_evaluations = c.residual_evaluations;
+        outcome_.jacobian_evaluations = c.jacobian_evaluations;
+        outcome_.factorizations = stepper_.factorizations();
+        std::ostringstream m;
+        m << "fixed-step Radau IIA (3 stages), "
+          << std::lround((s_.end_time - s_.start_time) / s_.time_step) << " steps, "
+          << outcome_.newton_iterations << " stage iterations";
+        if (outcome_.control.step_cuts > 0) {
+            m.precision(9);
+            m << "; " << outcome_.control.step_cuts
+              << " steps cut to h/2 after a stage-iteration failure (first from t = "
+              << outcome_.control.first_cut_time << ")";
+        }
+        outcome_.message = m.str();
+        if (stalls_.count > 0) {
+            outcome_.status = SolveStatus::stalled_at_round_off;
+            outcome_.message += "; " + stalls_.describe("steps", s_.newton.residual_tolerance);
+        }
+    }
+    void add_initial(const NewtonOutcome& ic) { stalls_.add(ic); }
+
+  private:
+    DaeSystem& dae_;
+    VecX& x_;
+    VecX& xdot_;
+    const DaeSettings& s_;
+    DaeOutcome& outcome_;
+    RadauStepper stepper_;
+    StallSummary stalls_;
+    NewtonOutcome last_;
+    double t_ = 0.0;
+};
+
+}  // namespace
+
+DaeOutcome integrate_radau_iia(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
+                               const DaeOutput& output) {
+    ROTBEAM_VERIFY(s.time_step > 0.0 && s.end_time > s.start_time, "bad time interval");
+    DaeOutcome outcome;
+    outcome.last_time = s.start_time;
+    const NewtonOutcome ic =
+        consistent_initial_conditions(dae, s.start_time, x, xdot, s.newton, s.time_step);
+    if (!ic.accepted()) {
+        outcome.status = ic.singular ? SolveStatus::singular : SolveStatus::diverged;
+        outcome.message =
+            "initial conditions at t = " + std::to_string(s.start_time) + ": " + ic.failure;
+        return outcome;
+    }
+    outcome.newton_iterations += ic.iterations;
+    if (output) output(s.start_time, x, xdot, ic.iterations);
+    RadauRun run(dae, x, xdot, s, outcome);
+    run.add_initial(ic);
+    run.start(s.start_time);
+    if (!run_fixed_steps(run, s, output)) return outcome;
+    run.finish();
+    return outcome;
+}
+
+}  // namespace rotbeam
