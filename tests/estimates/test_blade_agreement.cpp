@@ -1,0 +1,133 @@
+// The MH-104 blade (cases/blade-mh104.yaml, docs/benchmarks.md §4) has no published number: its
+// verification is the two formulations against each other (docs/suite-reproductions.md, "The two
+// formulations on the blade"). Both discretize the same beam: their first twelve natural
+// frequencies about the undeformed state agree to ≤ 2.3e-5 relative (displacement 20 × p4 against
+// the mixed values extrapolated from 80 and 160 elements at the mixed element's order 2), so the
+// two tip histories converge to the same function and the difference of two runs is bounded by
+// the sum of their errors.
+//
+// The runs (Wiener–Milenković, Δt = 1 ms, tip every 5 ms over 0–2 s), each with its own estimate
+// (docs/error-estimates.md, Dynamics: space + time at every output time and the history's
+// largest):
+// - displacement 20 elements × p5, Gauss–Legendre 3 (order 6 in time): estimate p+1 (20 × p6) and
+//   Δt/2;
+// - mixed 80 elements, trapezoidal: estimate h/2, h/4 (160, 320 elements) and Δt/2. It cannot reach
+//   1e-4 at a cost a test can afford (docs/suite-reproductions.md measures why: the order-2 phase
+//   error of the flap modes next to the forcing frequency; 1e-4 needs ≈ 1800 elements and
+//   Δt ≲ 0.25 ms), so it is held to its own estimate (5 % of the amplitude, measured).
+//
+// What is asserted, for the tip displacement and the tip rotation, and why:
+// - the displacement run's history estimate is ≤ 1e-4 of the history's amplitude, with every
+//   estimate reliable: the refined side of the comparison is at the accuracy asked for;
+// - the largest difference of the two histories over the output times is at most the sum of the
+//   two histories' largest estimated errors (space + time): the agreement "within the combined
+//   estimates" of the histories;
+// - at every output time the difference is at most 3 × the sum of the two pointwise estimates,
+//   the estimates' criterion of an estimator failure (docs/error-estimates.md). Not 1 ×: a
+//   pointwise h-estimate is built from |u_h − u_h/2| and |u_h/2 − u_h/4|, which pass near zero at
+//   the times where the runs cross while the true error does not; measured 2026-11-26, the sum is
+//   exceeded at 46 (displacement) and 48 (rotation) of the 401 output times, by up to 2.47× and
+//   1.71×, and by at most 1.07× and 1.45× where both estimates call themselves reliable.
+// Cost: 201 s of CPU (2026-11-26), 157 s of them the mixed run's companions (label long:
+// ctest --preset long -R test_blade_agreement).
+#include <algorithm>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cases/loader/case_loader.hpp"
+#include "core/static_driver.hpp"
+#include "estimates/point_difference.hpp"
+#include "runs/run_case.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+using json = nlohmann::json;
+
+json estimated_blade(const std::vector<std::string>& overrides) {
+    const std::string path = std::string(ROTBEAM_SOURCE_DIR) + "/cases/blade-mh104.yaml";
+    std::vector<std::string> all = {"discretization.rotation=wiener-milenkovic",
+                                    "analysis.output_interval=0.005"};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    const RunRequest request{path, load_case(path, all, CaseParts::case_file)};
+    json result = run_case(request);
+    BOOST_TEST_REQUIRE(has_solution(result["status"].get<std::string>()),
+                       result["message"].get<std::string>());
+    add_run_estimate(request, result);
+    return result;
+}
+
+// The estimate of the tip's `what` at output time i (space + time), or −1 when none.
+double tip_estimate(const json& result, std::size_t i, const std::string& what) {
+    const json& e = result["steps"][i]["estimate"];
+    if (!e.contains("tip") || !e["tip"][what].contains("error")) return -1.0;
+    return e["tip"][what]["error"].get<double>();
+}
+
+// The tip's displacement (q = 0) or rotation (q = 1) difference of two runs at one output time.
+double tip_difference(const json& a, const json& b, int q) {
+    const estimate::PointDifference d =
+        estimate::point_difference(a["points"]["tip"], b["points"]["tip"]);
+    return q == 0 ? d.displacement : d.rotation;
+}
+
+const char* const kQuantities[] = {"displacement", "rotation"};
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(refined_displacement_and_mixed_blade_histories_agree_within_their_estimates) {
+    const json d =
+        estimated_blade({"discretization.formulation=displacement", "members.blade.elements=20",
+                         "discretization.order=5", "analysis.integrator=gauss-legendre-3"});
+    const json m =
+        estimated_blade({"discretization.formulation=mixed", "members.blade.elements=80"});
+    BOOST_TEST(d["estimate"]["unreliable"].get<int>() == 0);
+    const json& sd = d["steps"];
+    const json& sm = m["steps"];
+    BOOST_TEST_REQUIRE(sd.size() == sm.size());
+    for (int q = 0; q < 2; ++q) {
+        const std::string what = kQuantities[q];
+        const json& hd = d["estimate"]["history"]["tip"][what];
+        const json& hm = m["estimate"]["history"]["tip"][what];
+        const double amplitude = hd["amplitude"].get<double>();
+        BOOST_TEST(hd["max_error"].get<double>() <= 1e-4 * amplitude,
+                   "displacement 20 x p5 GL3, tip " << what << ": estimate "
+                                                    << hd["max_error"].get<double>() / amplitude
+                                                    << " of the amplitude");
+        double largest = 0.0;
+        double worst_ratio = 0.0;
+        int outside = 0;
+        int compared = 0;
+        for (std::size_t i = 0; i < sd.size(); ++i) {
+            BOOST_TEST_REQUIRE(std::abs(sd[i]["time"].get<double>() - sm[i]["time"].get<double>()) <
+                               1e-9);
+            const double diff = tip_difference(sd[i], sm[i], q);
+            largest = std::max(largest, diff);
+            const double ed = tip_estimate(d, i, what);
+            const double em = tip_estimate(m, i, what);
+            if (ed < 0.0 || em < 0.0) continue;
+            ++compared;
+            if (diff > ed + em) ++outside;
+            if (diff > 0.0) worst_ratio = std::max(worst_ratio, diff / (ed + em));
+        }
+        const double combined = hd["max_error"].get<double>() + hm["max_error"].get<double>();
+        BOOST_TEST_MESSAGE("tip " << what << ": displacement estimate "
+                                  << hd["max_error"].get<double>() / amplitude
+                                  << " of the amplitude " << amplitude << ", mixed 80 "
+                                  << hm["max_error"].get<double>() / amplitude << " (space "
+                                  << hm["max_space"].get<double>() / amplitude << ", time "
+                                  << hm["max_time"].get<double>() / amplitude
+                                  << "); largest difference " << largest / amplitude
+                                  << ", combined " << combined / amplitude << "; outside the "
+                                  << "pointwise sum at " << outside << " of " << compared
+                                  << " output times, worst " << worst_ratio << "x");
+        BOOST_TEST(largest <= combined, "tip " << what);
+        BOOST_TEST(compared == static_cast<int>(sd.size()), "tip " << what);
+        BOOST_TEST(worst_ratio <= 3.0, "tip " << what);
+    }
+}
+
+}  // namespace rotbeam
