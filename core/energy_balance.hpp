@@ -36,6 +36,10 @@ struct EnergyTerms {
     double energy = 0.0;
     VecX load, velocity;
     double dissipation = 0.0;
+    // A potential energy counted in `energy` with a minus sign whose changes are energy moved, like
+    // the loads' work (the centrifugal potential of a rotating frame, whose energy is the Jacobi
+    // integral; 0 otherwise): energy + potential at the start and Σ |Δ potential| join the scale.
+    double potential = 0.0;
 };
 
 class EnergyBalance {
@@ -45,7 +49,8 @@ class EnergyBalance {
 
     void start(const EnergyTerms& e) {
         e0_ = e.energy;
-        scale_ = e.energy;
+        scale_ = e.energy + e.potential;
+        last_potential_ = e.potential;
         last_load_ = e.load;
         last_velocity_ = e.velocity;
         last_dissipation_ = e.dissipation;
@@ -60,7 +65,8 @@ class EnergyBalance {
         work_ += dw;
         const double dd = 0.5 * h * (last_dissipation_ + e.dissipation);
         dissipated_ += dd;
-        scale_ += std::abs(dw) + std::abs(dd);
+        scale_ += std::abs(dw) + std::abs(dd) + std::abs(e.potential - last_potential_);
+        last_potential_ = e.potential;
         last_load_ = e.load;  // same size every step: no allocation
         last_velocity_ = e.velocity;
         last_dissipation_ = e.dissipation;
@@ -89,7 +95,7 @@ class EnergyBalance {
 
   private:
     double e0_ = 0.0, work_ = 0.0, dissipated_ = 0.0, scale_ = 0.0, energy_ = 0.0, defect_ = 0.0;
-    double last_dissipation_ = 0.0, onset_time_ = 0.0;
+    double last_dissipation_ = 0.0, last_potential_ = 0.0, onset_time_ = 0.0;
     long onset_step_ = -1;
     VecX last_load_, last_velocity_;
 };

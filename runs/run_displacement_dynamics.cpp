@@ -9,6 +9,7 @@
 #include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/results.hpp"
+#include "core/so3.hpp"
 #include "core/static_driver.hpp"
 #include "estimates/accuracy_scale.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
@@ -122,17 +123,35 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
 
 // Reactions of the constrained named points: the force and moment the support exerts on the beam
 // (the residual rows the support's node would have), inertial axes.
+// With a rotating frame, Q turns them from the frame's axes to inertial axes.
 template <class P>
-nlohmann::json reactions_json(const Model& model, form::DisplacementDynamics<P>& problem) {
+nlohmann::json reactions_json(const Model& model, form::DisplacementDynamics<P>& problem,
+                              const Mat3& Q) {
     nlohmann::json out = nlohmann::json::object();
     for (const Constraint& c : model.constraints) {
         const int node = problem.mesh().point_node[static_cast<size_t>(c.point)];
         if (node < 0) continue;
         const Vec6 r = problem.reaction(node);
-        out[model.points[static_cast<size_t>(c.point)].name] = {{"force", vec3(r.head(3))},
-                                                                {"moment", vec3(r.tail(3))}};
+        out[model.points[static_cast<size_t>(c.point)].name] = {{"force", vec3(Q * r.head<3>())},
+                                                                {"moment", vec3(Q * r.tail<3>())}};
     }
     return out;
+}
+
+// The named points' states of a run in a rotating frame turned to inertial axes at frame rotation
+// Q (docs/rotating-frame.md): position c + Q (X + u − c), rotation Q R. The rotation angle is then
+// the principal angle of Q R (the continuation along the beam is that of the frame's axes).
+template <class P>
+void to_inertial_axes(const Model& model, const form::DisplacementDynamics<P>& problem,
+                      const Mat3& Q, std::vector<PointState>& states,
+                      std::vector<Vec3>& continued) {
+    const Vec3& c = problem.frame_center();
+    for (size_t i = 0; i < states.size(); ++i) {
+        const Vec3& X = model.points[i].position;
+        states[i].displacement = c + Q * (X + states[i].displacement - c) - X;
+        states[i].rotation = Q * states[i].rotation;
+        continued[i] = so3::log_map(states[i].rotation);
+    }
 }
 
 // The displacement formulation's Gauss–Legendre stage count of `integrator`, 0 for generalized-α.
@@ -162,7 +181,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
     result["dofs"] = problem.size();
     if (d.initial_state == InitialState::static_equilibrium) {
         problem.statics().set_time(0.0);
-        const StaticSolve solve = solve_static(model, problem.statics(), {1.0},
+        const StaticSolve solve = solve_static(model, problem.static_problem(), {1.0},
                                                StaticRecording{.steps = false}, trace, result);
         if (!static_state_usable(solve.outcome, result)) return;
         problem.adopt_static_state();
@@ -183,13 +202,31 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = problem.point_state(static_cast<int>(i));
         }
-        const std::vector<Vec3> continued =
+        std::vector<Vec3> continued =
             rotation_vectors_along_beam(model, problem.statics().rotation_stations(), states);
+        // With turning supports: `points` and `reactions` in inertial axes, the same in the
+        // frame's axes (the motion relative to it) under `rotating_frame`.
+        nlohmann::json relative;
+        const Mat3 Q = problem.frame_rotation(s.time);
+        if (problem.rotating()) {
+            relative =
+                step_json(model, std::nullopt, s.time, s.newton_iterations, states, continued);
+            relative["reactions"] = reactions_json(model, problem, Mat3::Identity());
+            to_inertial_axes(model, problem, Q, states, continued);
+        }
         nlohmann::json step =
             step_json(model, std::nullopt, s.time, s.newton_iterations, states, continued);
-        step["reactions"] = reactions_json(model, problem);
+        step["reactions"] = reactions_json(model, problem, Q);
         const form::BeamEnergy e = problem.energy();
         step["energy"] = {{"kinetic", e.kinetic}, {"strain", e.strain}};
+        if (problem.rotating()) {
+            step["energy"]["angular_momentum"] = vec3(Q * e.angular_momentum);
+            step["energy"]["jacobi_integral"] =
+                e.total() - problem.frame_angular_velocity().dot(e.angular_momentum);
+            step["rotating_frame"] = {{"angle", s.time * problem.frame_angular_velocity().norm()},
+                                      {"points", relative["points"]},
+                                      {"reactions", relative["reactions"]}};
+        }
         result["steps"].push_back(std::move(step));
         record_frames(problem.statics());
     };

@@ -36,11 +36,13 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
     in.comment("(title)");
     in.comment("SIMULATION CONTROL");
     const bool dynamic = in.flag("DynamicSolve");
-    const int dynamic_line = in.line();
     // Used only by a dynamic solve; a static one repeats the same solve at each time.
-    in.number("t_initial");
-    in.number("t_final");
-    in.number("dt");
+    deck.dynamic = dynamic;
+    deck.t_initial = in.number("t_initial");
+    deck.t_final = in.number("t_final");
+    const int t_final_line = in.line();
+    deck.dt = in.number("dt");
+    const int dt_line = in.line();
     in.comment("GRAVITY PARAMETER");
     deck.gravity = {in.number("Gx"), in.number("Gy"), in.number("Gz")};
     in.comment("FRAME PARAMETER");
@@ -64,25 +66,38 @@ std::string parse_driver(DeckLines& in, BeamDynDeck& deck) {
     auto refuse_at = [&](int line, const std::string& key, const std::string& why) {
         throw InputError(in.name() + ":" + std::to_string(line) + ": " + key + ": " + why);
     };
-    // A dynamic deck is refused at its DynamicSolve line, naming what else it would need.
+    // A dynamic deck: time span and step checked here; a rotating root is the turning supports of
+    // docs/rotating-frame.md (BeamDyn's driver turns the root about the global origin).
     if (dynamic) {
-        const bool rotating = root_velocity != std::array<double, 3>{};
-        refuse_at(dynamic_line, "DynamicSolve",
-                  std::string("a dynamic solve is not imported (static decks only)") +
-                      (rotating ? "; this deck also drives its root at a constant angular "
-                                  "velocity (RootVel), which rotbeam models only as a steady "
-                                  "rotating frame in statics and modes (docs/rotating-frame.md)"
-                                : ""));
+        if (!(deck.t_final > deck.t_initial)) {
+            refuse_at(t_final_line, "t_final", "must be greater than t_initial");
+        }
+        if (!(deck.dt > 0.0) || deck.dt > deck.t_final - deck.t_initial) {
+            refuse_at(dt_line, "dt", "must be positive and at most t_final - t_initial");
+        }
+        deck.root_velocity = root_velocity;
+    } else {
+        for (size_t i = 0; i < 3; ++i) {
+            if (root_velocity[i] != 0.0) {
+                refuse_at(root_velocity_line[i], "RootVel(" + std::to_string(i + 4) + ")",
+                          "a rotating root in a static solve is not modelled (BeamDyn ignores "
+                          "it there; a steady rotation is rotbeam's rotating_frame)");
+            }
+        }
     }
+    // GlbRotBladeT0 = False: BeamDyn computes in the global frame and starts the root at GlbDCM
+    // relative to it; with an identity GlbDCM both frames coincide, so only that case is taken.
     if (!root_frame) {
-        refuse_at(root_frame_line, "GlbRotBladeT0",
-                  "False (calculations in the global frame instead of the initial blade root's) "
-                  "is not modelled");
-    }
-    for (size_t i = 0; i < 3; ++i) {
-        if (root_velocity[i] != 0.0) {
-            refuse_at(root_velocity_line[i], "RootVel(" + std::to_string(i + 4) + ")",
-                      "a rotating root (prescribed angular velocity) is not modelled");
+        bool identity = true;
+        for (size_t r = 0; r < 3; ++r) {
+            for (size_t c = 0; c < 3; ++c) {
+                identity = identity && std::abs(deck.root_dcm[r][c] - (r == c ? 1.0 : 0.0)) <= 1e-6;
+            }
+        }
+        if (!identity) {
+            refuse_at(root_frame_line, "GlbRotBladeT0",
+                      "False (calculations in the global frame, the root turned by GlbDCM in "
+                      "it) is modelled only with an identity GlbDCM");
         }
     }
     in.comment("APPLIED FORCE");
@@ -109,18 +124,23 @@ std::string parse_primary(DeckLines& in, BeamDynDeck& deck) {
     in.comment("(header)");
     in.comment("(title)");
     in.comment("SIMULATION CONTROL");
-    in.flag("Echo");             // output only
-    in.flag("QuasiStaticInit");  // BeamDyn ignores it in a static solve
-    in.number("rhoinf");         // the time integrator's, dynamic only
+    in.flag("Echo");                                      // output only
+    deck.quasi_static_init = in.flag("QuasiStaticInit");  // dynamic only
+    deck.rho_infinity = in.number("rhoinf");              // dynamic only
+    if (deck.dynamic && !(deck.rho_infinity >= 0.0 && deck.rho_infinity <= 1.0)) {
+        in.fail("rhoinf", "must lie in [0, 1]");
+    }
     const int quadrature = in.integer("quadrature", 1, 2);
     refuse_if(quadrature == 2, in, "quadrature",
               "trapezoidal quadrature (2) is not modelled: rotbeam integrates with Gauss points");
     double unused = 0.0;
     in.number_or_default("refine", unused);  // used only with trapezoidal quadrature
     // Solver controls: rotbeam's own convergence criteria apply (docs/beamdyn-import.md).
-    for (const char* key : {"n_fact", "DTBeam", "load_retries", "NRMax", "stop_tol"}) {
-        in.number_or_default(key, unused);
+    in.number_or_default("n_fact", unused);
+    if (in.number_or_default("DTBeam", deck.beam_dt) && deck.dynamic && !(deck.beam_dt > 0.0)) {
+        in.fail("DTBeam", "must be positive");
     }
+    for (const char* key : {"load_retries", "NRMax", "stop_tol"}) in.number_or_default(key, unused);
     for (const char* key : {"tngt_stf_fd", "tngt_stf_comp"}) {
         if (in.peek_label() == key) {
             std::string value = in.text(key);

@@ -41,6 +41,13 @@ struct BeamDynDeck {
     std::array<std::array<double, 3>, 3> root_dcm{};  // rows as written (global → root frame)
     std::array<double, 6> distributed_load{};         // N/m, N·m/m, global axes
     std::array<double, 6> tip_load{};                 // N, N·m, global axes
+    // A dynamic solve (DynamicSolve): the time span, the driver's step, the root's angular
+    // velocity about the global origin (RootVel(4..6)); from the primary file rhoinf, DTBeam (0:
+    // DEFAULT, the driver's dt) and QuasiStaticInit.
+    bool dynamic = false;
+    double t_initial = 0.0, t_final = 0.0, dt = 0.0, rho_infinity = 0.0, beam_dt = 0.0;
+    bool quasi_static_init = false;
+    std::array<double, 3> root_velocity{};
     // primary
     std::vector<int> member_key_points;  // key points of each member (neighbours share one)
     std::vector<BeamDynKeyPoint> key_points;

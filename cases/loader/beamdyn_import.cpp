@@ -327,7 +327,24 @@ std::string Importer::text(const std::string& name) {
     const auto& g = deck_.gravity;
     if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0)
         os << "gravity: " << vec(Vec3(g[0], g[1], g[2])) << "\n";
-    os << "analysis:\n  type: static\n  load_factors: [1]\n";
+    const auto& w = deck_.root_velocity;
+    if (w[0] != 0.0 || w[1] != 0.0 || w[2] != 0.0) {
+        // BeamDyn's driver turns the root about the global origin at RootVel from t_initial.
+        os << "rotating_frame:\n  angular_velocity: " << vec(Vec3(w[0], w[1], w[2]))
+           << "\n  center: [0, 0, 0]\n";
+    }
+    if (deck_.dynamic) {
+        // BeamDyn steps with DTBeam (DEFAULT: the driver's dt); its generalized-α is
+        // Chung–Hulbert's with rhoinf. Time starts at 0 here (t_initial is BeamDyn's clock only).
+        const double step = deck_.beam_dt > 0.0 ? deck_.beam_dt : deck_.dt;
+        os << "analysis:\n  type: dynamic\n  integrator: generalized-alpha\n  rho_infinity: "
+           << num(deck_.rho_infinity) << "\n  time_step: " << num(step)
+           << "\n  end_time: " << num(deck_.t_final - deck_.t_initial)
+           << "\n  output_interval: " << num(deck_.dt)
+           << "\n  initial_state: " << (deck_.quasi_static_init ? "static" : "rest") << "\n";
+    } else {
+        os << "analysis:\n  type: static\n  load_factors: [1]\n";
+    }
     os << "discretization:\n  formulation: displacement\n  order: " << deck_.order
        << "\n  quadrature: full\n";
     return os.str();

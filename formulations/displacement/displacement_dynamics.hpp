@@ -23,6 +23,17 @@
 // rotation vector's spatial tangent; c_v, c_a the generalized-α slopes). Loads carry their own
 // time functions (DisplacementStatics::set_time).
 //
+// Rotating root (case key `rotating_frame`, docs/rotating-frame.md): the supports turn at constant
+// angular velocity Ω about the axis through c. The unknowns are then the motion relative to the
+// frame Q(t) = exp(t Ω̃) that turns with them (supports at rest in it), in that frame's axes: u, R
+// and v = [u˙; ω] relative. The inertial force is F^I of the absolute motion, whose kinematics in
+// the frame's axes are (r = x − c, v_u the relative translation rate)
+//   u¨_abs = v˙_u + 2 Ω × v_u + Ω × (Ω × r),  ω_abs = ω + Ω,  ω˙_abs = ω˙ + Ω × ω,
+// so its tangent gains ∂/∂v_u = M_u 2Ω̃, ∂/∂ω = M_ω Ω̃ (Coriolis) and ∂/∂x = M_u Ω̃Ω̃
+// (centrifugal), M_u, M_ω the mass's translation and rotation columns. The damping law acts on
+// the relative rates (a rigid rotation dissipates nothing), gravity turns in the frame's axes
+// (Q(t)ᵀ g); dead loads, which would turn too, are refused with a rotating frame.
+//
 // Nothing allocates after the first evaluation (buffers sized in the constructor).
 #pragma once
 
@@ -40,8 +51,15 @@
 namespace rotbeam::form {
 
 struct BeamEnergy {
-    double kinetic = 0.0;  // ½ vᵀ M v with the mass rule's quadrature
+    double kinetic = 0.0;  // ½ vᵀ M v with the mass rule's quadrature (absolute velocity)
     double strain = 0.0;   // ½ ∫ [ε; κ]ᵀ C [ε; κ] (= the material-axis form with C*)
+    // ∫ (r × p + h) about the rotating frame's centre (the origin without one), [p; h] = M v the
+    // section's momentum and angular momentum about its centre; in the unknowns' axes.
+    Vec3 angular_momentum = Vec3::Zero();
+    // ½ ∫ v_fᵀ M v_f of the frame's rigid velocity v_f = [Ω × r; Ω] at the current configuration
+    // (0 without a rotating frame): the Jacobi integral is kinetic + strain − Ω · L
+    //   = ½ ∫ v_relᵀ M v_rel + strain − frame_kinetic.
+    double frame_kinetic = 0.0;
     double total() const { return kinetic + strain; }
 };
 
@@ -80,8 +98,22 @@ class DisplacementDynamics : public CollocationProblem {
     // The static problem on the same mesh (its state is this problem's configuration): used for
     // `initial_state: static` (run_static on it at the loads of t = 0, then adopt_static_state()).
     DisplacementStatics<P>& statics() { return statics_; }
+    // The same static problem with the steady rotating frame's inertial force switched on, for
+    // that solve (adopt_static_state() switches it off again: the dynamics assemble their own).
+    DisplacementStatics<P>& static_problem();
     void adopt_static_state();
-    // Sets every free node's velocity: translation u˙ and spatial angular velocity ω.
+    // The rotating frame of the supports (docs/rotating-frame.md): its rotation Q(t) = exp(t Ω̃)
+    // from the unknowns' axes to inertial axes (the identity without one), Ω and the centre c.
+    bool rotating() const { return spinning_; }
+    Mat3 frame_rotation(double t) const;
+    const Vec3& frame_angular_velocity() const { return omega_frame_; }
+    const Vec3& frame_center() const { return center_; }
+    // The Jacobi integral of the motion relative to the frame, E − Ω · L (kinetic + strain
+    // energy minus Ω times the angular momentum about c): constant for a free undamped beam whose
+    // supports turn at constant Ω (the supports' work Ω · M equals Ω · dL/dt); E without a frame.
+    double frame_energy();
+    // Sets every free node's velocity: translation u˙ and spatial angular velocity ω (relative to
+    // the rotating frame when there is one: zero is the rigid rotation).
     void set_velocity(const Vec3& u_dot, const Vec3& omega);
     void set_node_velocity(int node, const Vec6& v) { v_n_[node] = v_[node] = v; }
     // Sets a node's acceleration v˙ (and a = v˙) at the step start, e.g. for tests of a moving
@@ -115,6 +147,13 @@ class DisplacementDynamics : public CollocationProblem {
 
   private:
     void update_iterate();
+    // The loads' time t: the statics' time functions, and gravity turned into the frame's axes.
+    void set_load_time(double t);
+    // The absolute kinematics of a point in the rotating frame (header comment), in place: s holds
+    // the relative u¨, ω, ω˙ on entry; v_u is the relative translation rate, x the position.
+    void add_frame_motion(InertialState& s, const Vec3& v_u, const Vec3& x) const;
+    // Absolute 6-velocity of a point from its relative one: [v_u + Ω × (x − c); ω + Ω].
+    Vec6 absolute_velocity(const Vec6& v, const Vec3& x) const;
     void set_configuration();
     void gather(const MeshElement& e);
     void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot) const;
@@ -131,6 +170,9 @@ class DisplacementDynamics : public CollocationProblem {
     DisplacementStatics<P> statics_;
     Mesh mass_mesh_;
     bool damped_ = false;
+    bool spinning_ = false;
+    Vec3 omega_frame_ = Vec3::Zero(), center_ = Vec3::Zero(), gravity_ = Vec3::Zero();
+    Mat3 W_ = Mat3::Zero();  // Ω̃
     GeneralizedAlpha scheme_;
     double h_ = 0.0;
     double time_ = 0.0;  // time of the loads (t_{n+1} in a step)

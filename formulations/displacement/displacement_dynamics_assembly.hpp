@@ -93,11 +93,17 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
         s.u_ddot.setZero();
         s.omega.setZero();
         s.omega_dot.setZero();
+        Vec3 v_u = Vec3::Zero(), x = Vec3::Zero();
         for (int j = 0; j < nn; ++j) {
             s.u_ddot += N[j] * vd_[e.nodes[j]].head<3>();
             s.omega += N[j] * v_[e.nodes[j]].tail<3>();
             s.omega_dot += N[j] * vd_[e.nodes[j]].tail<3>();
+            if (spinning_) {
+                v_u += N[j] * v_[e.nodes[j]].head<3>();
+                x += N[j] * (mesh().nodes[e.nodes[j]].x0 + statics_.node_displacement(e.nodes[j]));
+            }
         }
+        add_frame_motion(s, v_u, x);
         const InertialBlocks B = calculate_inertial_blocks(qp.M_star, s);
         ++inertial_terms_;
         for (int a = 0; a < nn; ++a) {
@@ -114,7 +120,13 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
             }
             if (relative) A_[0] += Mat3::Identity() - sum;
         }
-        const Mat6 GM = cv * B.G + ca * B.M;
+        Mat6 GM = cv * B.G + ca * B.M;
+        if (spinning_) {
+            // Coriolis through v_u and ω, centrifugal through the position (header comment).
+            GM.leftCols<3>() +=
+                (2.0 * cv) * B.M.leftCols<3>() * W_ + kq * B.M.leftCols<3>() * W_ * W_;
+            GM.rightCols<3>() += cv * B.M.rightCols<3>() * W_;
+        }
         for (int a = 0; a < nn; ++a) {
             if (mesh().nodes[e.nodes[a]].dof < 0) continue;
             for (int b = 0; b < nn; ++b) {
@@ -240,10 +252,10 @@ void DisplacementDynamics<P>::external_load(VecX& f) {
                            load.head<3>() += force;
                            load.tail<3>() += moment;
                        }
-                       if (model_.gravity.squaredNorm() > 0.0) {
+                       if (gravity_.squaredNorm() > 0.0) {
                            const Vec3 eta = rot.R * (qp.Rr * qp.eta_star);
-                           load.head<3>() += qp.mass * model_.gravity;
-                           load.tail<3>() += qp.mass * eta.cross(model_.gravity);
+                           load.head<3>() += qp.mass * gravity_;
+                           load.tail<3>() += qp.mass * eta.cross(gravity_);
                        }
                        for (int a = 0; a < static_cast<int>(e.nodes.size()); ++a) {
                            const int d = mesh().nodes[e.nodes[a]].dof;
@@ -254,7 +266,9 @@ void DisplacementDynamics<P>::external_load(VecX& f) {
 
 template <param::RotationParameterization P>
 bool DisplacementDynamics<P>::energy_terms(EnergyTerms& terms) {
-    terms.energy = energy().total();
+    const BeamEnergy E = energy();
+    terms.energy = E.total() - omega_frame_.dot(E.angular_momentum);
+    terms.potential = E.frame_kinetic;
     external_load(terms.load);
     terms.velocity.setZero(size());
     for (size_t i = 0; i < mesh().nodes.size(); ++i) {
@@ -270,14 +284,26 @@ bool DisplacementDynamics<P>::energy_terms(EnergyTerms& terms) {
 template <param::RotationParameterization P>
 BeamEnergy DisplacementDynamics<P>::energy() {
     BeamEnergy E;
-    for_each_point(mass_mesh_.elements,
-                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
-                       const int nn = static_cast<int>(e.nodes.size());
-                       Vec6 v = Vec6::Zero();
-                       for (int j = 0; j < nn; ++j) v += e.N(j, q) * v_[e.nodes[j]];
-                       const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
-                       E.kinetic += 0.5 * e.qp[q].weight * v.dot(M * v);
-                   });
+    for_each_point(mass_mesh_.elements, [&](int, const MeshElement& e, int q,
+                                            const InterpolatedRotation<P>& rot) {
+        const int nn = static_cast<int>(e.nodes.size());
+        Vec6 v = Vec6::Zero();
+        Vec3 x = Vec3::Zero();
+        for (int j = 0; j < nn; ++j) {
+            v += e.N(j, q) * v_[e.nodes[j]];
+            x += e.N(j, q) * (mesh().nodes[e.nodes[j]].x0 + statics_.node_displacement(e.nodes[j]));
+        }
+        const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
+        if (spinning_) {
+            const Vec6 v_f = absolute_velocity(Vec6::Zero(), x);
+            E.frame_kinetic += 0.5 * e.qp[q].weight * v_f.dot(M * v_f);
+        }
+        v = absolute_velocity(v, x);
+        const Vec6 momentum = M * v;
+        E.kinetic += 0.5 * e.qp[q].weight * v.dot(momentum);
+        E.angular_momentum +=
+            e.qp[q].weight * ((x - center_).cross(momentum.head<3>()) + momentum.tail<3>());
+    });
     for_each_point(mesh().elements,
                    [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
                        const int nn = static_cast<int>(e.nodes.size());
@@ -289,6 +315,12 @@ BeamEnergy DisplacementDynamics<P>::energy() {
                        E.strain += 0.5 * e.qp[q].weight * strain.dot(C * strain);
                    });
     return E;
+}
+
+template <param::RotationParameterization P>
+double DisplacementDynamics<P>::frame_energy() {
+    const BeamEnergy E = energy();
+    return E.total() - omega_frame_.dot(E.angular_momentum);
 }
 
 // The residual rows a constrained node would have: its elements' elastic, damping and inertial
@@ -345,10 +377,10 @@ Vec6 DisplacementDynamics<P>::reaction(int node) {
                 out.head<3>() -= qp.weight * e.N(a, q) * f * (R * d.force);
                 out.tail<3>() -= qp.weight * e.N(a, q) * f * (R * d.moment);
             }
-            if (model_.gravity.squaredNorm() > 0.0) {
+            if (gravity_.squaredNorm() > 0.0) {
                 const Vec3 eta = Q * qp.eta_star;
-                out.head<3>() -= qp.weight * e.N(a, q) * qp.mass * model_.gravity;
-                out.tail<3>() -= qp.weight * e.N(a, q) * qp.mass * eta.cross(model_.gravity);
+                out.head<3>() -= qp.weight * e.N(a, q) * qp.mass * gravity_;
+                out.tail<3>() -= qp.weight * e.N(a, q) * qp.mass * eta.cross(gravity_);
             }
         }
         const MeshElement& em = mass_mesh_.elements[k];
@@ -356,11 +388,16 @@ Vec6 DisplacementDynamics<P>::reaction(int node) {
             interpolate(em, q, rot);
             InertialState s;
             s.Q = rot.R * em.qp[q].Rr;
+            Vec3 v_u = Vec3::Zero(), x = Vec3::Zero();
             for (int j = 0; j < nn; ++j) {
                 s.u_ddot += em.N(j, q) * vd_[em.nodes[j]].head<3>();
                 s.omega += em.N(j, q) * v_[em.nodes[j]].tail<3>();
                 s.omega_dot += em.N(j, q) * vd_[em.nodes[j]].tail<3>();
+                v_u += em.N(j, q) * v_[em.nodes[j]].head<3>();
+                x += em.N(j, q) *
+                     (mesh().nodes[em.nodes[j]].x0 + statics_.node_displacement(em.nodes[j]));
             }
+            add_frame_motion(s, v_u, x);
             out += em.qp[q].weight * em.N(a, q) * calculate_inertial_blocks(em.qp[q].M_star, s).F;
         }
     }

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
+#include "core/so3.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "parameterizations/rotation_vector.hpp"
@@ -16,10 +17,23 @@ template <param::RotationParameterization P>
 DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
     : model_(model), statics_(model), mass_mesh_(build_mass_mesh(model)) {
     if (model.rotating_frame.active()) {
-        throw InputError(
-            "rotating_frame: not modelled by the dynamics (statics and the displacement modal "
-            "analysis only)");
+        // Dead loads are fixed in inertial axes: in the frame's axes they would turn with −Ω.
+        const auto dead = [](LoadFrame f) { return f != LoadFrame::follower; };
+        bool has_dead = !model.load_fields.empty();
+        for (const PointLoad& l : model.point_loads) has_dead = has_dead || dead(l.frame);
+        for (const DistributedLoad& l : model.distributed_loads)
+            has_dead = has_dead || dead(l.frame);
+        if (has_dead) {
+            throw InputError(
+                "rotating_frame: the dynamics with a rotating frame take follower loads and "
+                "gravity only (dead loads and load fields are not turned with the frame)");
+        }
+        spinning_ = true;
+        omega_frame_ = model.rotating_frame.angular_velocity;
+        center_ = model.rotating_frame.center;
+        W_ = so3::skew(omega_frame_);
     }
+    gravity_ = model.gravity;
     if (model.discretization.displacement.update != Update::multiplicative) {
         throw InputError(
             "discretization.update: dynamics composes rotation increments "
@@ -64,7 +78,49 @@ DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
     K_.resize(nn);
     X1_.resize(nn);
     X2_.resize(nn);
-    statics_.set_time(0.0);
+    // The dynamics assemble the frame's inertial force (assemble_inertia); the statics' steady
+    // one is switched on only for `initial_state: static` (static_problem()).
+    statics_.set_rotating_frame_forces(false);
+    set_load_time(0.0);
+}
+
+template <param::RotationParameterization P>
+Mat3 DisplacementDynamics<P>::frame_rotation(double t) const {
+    return spinning_ ? so3::exp_map(t * omega_frame_) : Mat3::Identity();
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::set_load_time(double t) {
+    statics_.set_time(t);
+    time_ = t;
+    if (spinning_) {
+        gravity_ = frame_rotation(t).transpose() * model_.gravity;
+        statics_.set_gravity(gravity_);
+    }
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::add_frame_motion(InertialState& s, const Vec3& v_u,
+                                               const Vec3& x) const {
+    if (!spinning_) return;
+    s.u_ddot += 2.0 * W_ * v_u + W_ * (W_ * (x - center_));
+    s.omega_dot += W_ * s.omega;
+    s.omega += omega_frame_;
+}
+
+template <param::RotationParameterization P>
+Vec6 DisplacementDynamics<P>::absolute_velocity(const Vec6& v, const Vec3& x) const {
+    if (!spinning_) return v;
+    Vec6 out = v;
+    out.head<3>() += omega_frame_.cross(x - center_);
+    out.tail<3>() += omega_frame_;
+    return out;
+}
+
+template <param::RotationParameterization P>
+DisplacementStatics<P>& DisplacementDynamics<P>::static_problem() {
+    statics_.set_rotating_frame_forces(true);
+    return statics_;
 }
 
 template <param::RotationParameterization P>
@@ -74,6 +130,7 @@ void DisplacementDynamics<P>::adopt_static_state() {
         p_n_[i] = statics_.node_rotation(static_cast<int>(i));
     }
     delta_.setZero();
+    statics_.set_rotating_frame_forces(false);
 }
 
 template <param::RotationParameterization P>
@@ -151,8 +208,7 @@ void DisplacementDynamics<P>::restore_state(int slot) {
 // M v˙_0 = −r(q_0, v_0, v˙ = 0, t): M = ∂r/∂v˙ is the inertia assembly with c_a = 1 alone.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::initialize_acceleration(double t) {
-    statics_.set_time(t);
-    time_ = t;
+    set_load_time(t);
     for (size_t i = 0; i < mesh().nodes.size(); ++i) {
         statics_.set_node_state(static_cast<int>(i), u_n_[i], p_n_[i]);
         v_[i] = v_n_[i];
@@ -185,8 +241,7 @@ void DisplacementDynamics<P>::begin_step(double t_next, double h, const Generali
     h_ = h;
     cv_ = g.velocity_slope(h);
     ca_ = g.acceleration_slope(h);
-    statics_.set_time(t_next);
-    time_ = t_next;
+    set_load_time(t_next);
     for (size_t i = 0; i < mesh().nodes.size(); ++i) {
         const int d = mesh().nodes[i].dof;
         if (d < 0) continue;
@@ -262,8 +317,7 @@ void DisplacementDynamics<P>::set_stage(const Eigen::Ref<const VecX>& delta,
         v_[i] = v.segment<6>(d);
         vd_[i] = a_[i] = v_dot.segment<6>(d);
     }
-    statics_.set_time(t);
-    time_ = t;
+    set_load_time(t);
     cv_ = c_v;
     ca_ = c_a;
 }

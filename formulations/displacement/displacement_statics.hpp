@@ -69,6 +69,12 @@ class DisplacementStatics : public StaticProblem {
         absent_load_stiffness_ = load_stiffness;
     }
     bool rescales_nodes() const { return rescale_nodes_; }
+    // Dynamics in a rotating frame (displacement_dynamics.hpp): the dynamics assemble the whole
+    // inertial force of the moving frame themselves, so they switch the steady one off here
+    // (on from the model otherwise), and turn gravity with the frame (the gravity vector in
+    // rotating components at the current time).
+    void set_rotating_frame_forces(bool on) { spin_forces_ = on; }
+    void set_gravity(const Vec3& g) { model_.gravity = g; }
     // Adds a 6×6 node block (rows of element node a, columns of node b) into J's fixed pattern.
     void add_block(SparseMatrix& J, int element, int a, int b, const Mat6& block) const;
     PointState point_state(int point_index) const override;
@@ -177,6 +183,7 @@ class DisplacementStatics : public StaticProblem {
     void add_load_stiffness(int node, const Vec3& f, const Vec3& m, double factor, SparseMatrix& J);
 
     Model model_;
+    bool spin_forces_ = true;  // set_rotating_frame_forces
     Mesh mesh_;
     std::vector<NodeLoad> point_loads_;
     std::vector<double> distributed_factor_;  // per distributed load: time function value

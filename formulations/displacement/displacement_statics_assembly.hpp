@@ -110,7 +110,7 @@ template <param::RotationParameterization P>
 RotatingFrameForces DisplacementStatics<P>::rotating_frame_forces(const MeshElement& e,
                                                                   const QuadraturePoint& qp,
                                                                   const double* N, const Mat3& R) {
-    if (!model_.rotating_frame.active()) return {};
+    if (!spin_forces_ || !model_.rotating_frame.active()) return {};
     Vec3 x = Vec3::Zero();
     for (size_t j = 0; j < e.nodes.size(); ++j) x += N[j] * (mesh_.nodes[e.nodes[j]].x0 + ue_[j]);
     const RotatingFrame& f = model_.rotating_frame;
@@ -125,7 +125,7 @@ void DisplacementStatics<P>::assemble_element(int k, VecX& r, SparseMatrix* J) {
     const bool jac = J != nullptr;
     const bool loads = !model_.distributed_loads.empty() || !model_.load_fields.empty() ||
                        model_.gravity.squaredNorm() > 0.0;
-    const bool spinning = model_.rotating_frame.active();
+    const bool spinning = spin_forces_ && model_.rotating_frame.active();
     gather_element(e, jac);
     InterpolatedRotation<P> rot;
     Vec6 f_ext = Vec6::Zero();

@@ -97,15 +97,27 @@ void check_displacement_statics(const comb::Combination& c) {
 // ~h² ≈ 4e-11, round-off ~ε/h × (largest cancelling term / column size) ≲ 1e-8 here, where the
 // inertia slope c_a = (1 − α_m)/((1 − α_f) β h²) ~ 1e4 mixes with stiffness ~1e4. 1e-7 keeps a
 // margin of 10; a wrong block (a sign in G^I, a missing T or A_b map) errs by 1e-3 or more.
+// The third state turns the supports (rotating_frame, docs/rotating-frame.md): Coriolis and
+// centrifugal columns of the inertia, gravity in the frame's axes, the damping on relative rates;
+// its dead distributed moment (refused with a rotating frame) is dropped.
 template <class P>
 void check_displacement_dynamics(const comb::Combination& c) {
-    for (const bool damping : {false, true}) {
+    for (const int variant : {0, 1, 2}) {
+        const bool damping = variant > 0;
         Model m = moving_model(2, 3, damping);
+        if (variant == 2) {
+            std::erase_if(m.distributed_loads,
+                          [](const DistributedLoad& l) { return l.frame != LoadFrame::follower; });
+            m.rotating_frame.angular_velocity = Vec3(0.7, -1.1, 2.3);
+            m.rotating_frame.center = Vec3(0.3, -0.2, 0.1);
+        }
         apply(c, m);
         form::DisplacementDynamics<P> d(m);
         set_moving_state(d);
         d.save_state(NonlinearSystem::kStepSlot);
-        const std::string label = damping ? "moving, damped" : "moving, undamped";
+        const std::string label = variant == 2 ? "moving, damped, rotating frame"
+                                  : damping    ? "moving, damped"
+                                               : "moving, undamped";
         BOOST_TEST_CONTEXT(c.label() << ", " << label) {
             const JacobianError e = displacement_jacobian_error(d, NonlinearSystem::kStepSlot);
             const AssemblyCounters n = d.counters();
