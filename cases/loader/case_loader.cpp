@@ -189,15 +189,6 @@ void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& 
                "the " + std::string(choice_name(f)) + " formulation integrates with " +
                    comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
     }
-    // Adaptive steps exist for generalized-alpha, the trapezoidal scheme and IDA
-    // (core/step_size_control.hpp); the Gauss-Legendre schemes take fixed steps only.
-    const bool gauss =
-        asked == Integrator::gauss_legendre_2 || asked == Integrator::gauss_legendre_3;
-    if (gauss && model.analysis.dynamics.time_tolerance > 0.0) {
-        r.fail(root["analysis"]["time_tolerance"], "analysis.time_tolerance",
-               "not available with analysis.integrator: " + std::string(choice_name(asked)) +
-                   " (fixed steps only)");
-    }
 }
 
 // The displacement formulation's `midpoint` mass rule samples the inertia at one point per
