@@ -79,8 +79,9 @@ nlohmann::json run_dynamic_to_accuracy(const RunRequest& request) {
     // The worst time and space estimates over the named points' histories, in the scales above.
     double worst_time = -1.0, worst_space = -1.0;
     std::string worst_quantity;
-    const nlohmann::json& e = result.value("estimate", nlohmann::json::object());
-    for (const auto& [point, quantities] : e.value("history", nlohmann::json::object()).items()) {
+    const nlohmann::json e = result.value("estimate", nlohmann::json::object());
+    const nlohmann::json history = e.value("history", nlohmann::json::object());
+    for (const auto& [point, quantities] : history.items()) {
         for (const auto& [quantity, h] : quantities.items()) {
             const double scale = quantity == "displacement" ? length : 1.0;
             const double t = h.value("max_time", 0.0) / scale;

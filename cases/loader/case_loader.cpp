@@ -10,8 +10,8 @@
 
 #include "cases/loader/beamdyn_import.hpp"
 #include "cases/loader/limits.hpp"
-#include "cases/loader/yaml_file.hpp"
 #include "cases/loader/model_builder.hpp"
+#include "cases/loader/yaml_file.hpp"
 #include "combinations/registry.hpp"
 #include "core/errors.hpp"
 

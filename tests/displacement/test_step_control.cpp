@@ -173,8 +173,7 @@ class RefusesFullSizeStages : public CollocationProblem {
         inner_.set_start_acceleration(v_dot);
     }
     void set_stage(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
-                   const Eigen::Ref<const VecX>& v_dot, double t, double c_v,
-                   double c_a) override {
+                   const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override {
         const double in_step = t / 1e-3 - std::floor(t / 1e-3);
         const double c1 = 0.5 - std::sqrt(3.0) / 6.0;
         const bool full = std::abs(in_step - c1) < 1e-6 || std::abs(in_step - (1.0 - c1)) < 1e-6;
@@ -244,12 +243,12 @@ BOOST_AUTO_TEST_CASE(a_gauss_step_cut_recovers_a_step_refused_at_full_size) {
 
 // Adaptive Gauss–Legendre steps (step doubling, core/gauss_collocation.hpp) on the first-mode
 // motion over four periods, against z_0 cos ω₁t (exact up to ~1e-12 m): the global error of the
-// tip's z at the end, scaled like the tolerance (translations by the length scale, 1 m here), must be within the
-// tolerance τ for each τ — the controller's promise (core/step_size_control.hpp: local errors ≤
-// τ h/T summed over the window, undamped modes propagating them without growth) — and the step
-// count must scale as τ^(−1/2s): τ/16 doubles it for 2 stages, τ/64 for 3. The count ratio is
-// checked within [1.7, 2.3]: the first steps (from the given 1 ms, growth ≤ 2 per step) and the
-// step that lands on the end are not at the asymptotic size, a few of some 20–200 steps.
+// tip's z at the end, scaled like the tolerance (translations by the length scale, 1 m here), must
+// be within the tolerance τ for each τ — the controller's promise (core/step_size_control.hpp:
+// local errors ≤ τ h/T summed over the window, undamped modes propagating them without growth) —
+// and the step count must scale as τ^(−1/2s): τ/16 doubles it for 2 stages, τ/64 for 3. The count
+// ratio is checked within [1.7, 2.3]: the first steps (from the given 1 ms, growth ≤ 2 per step)
+// and the step that lands on the end are not at the asymptotic size, a few of some 20–200 steps.
 void check_adaptive(int stages, const std::vector<double>& tolerances) {
     const Model m = unloaded_free_vibration();
     NewtonSettings newton;
@@ -269,9 +268,10 @@ void check_adaptive(int stages, const std::vector<double>& tolerances) {
         BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
         const double exact = f.tip0.z() * std::cos(f.omega * ts.end_time);
         const double error = std::abs(d.point_state(f.tip).displacement.z() - exact);
-        std::printf("Gauss %d adaptive, tolerance %.1e: %d steps (%d rejected), error at the end "
-                    "%.3e (%.3f of the tolerance)\n",
-                    stages, tau, out.steps, out.control.rejected_steps, error, error / tau);
+        std::printf(
+            "Gauss %d adaptive, tolerance %.1e: %d steps (%d rejected), error at the end "
+            "%.3e (%.3f of the tolerance)\n",
+            stages, tau, out.steps, out.control.rejected_steps, error, error / tau);
         BOOST_TEST(error <= tau);
         steps.push_back(out.steps);
     }
