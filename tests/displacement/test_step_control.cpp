@@ -249,7 +249,14 @@ BOOST_AUTO_TEST_CASE(a_gauss_step_cut_recovers_a_step_refused_at_full_size) {
 // and the step count must scale as τ^(−1/2s): τ/16 doubles it for 2 stages, τ/64 for 3. The count
 // ratio is checked within [1.7, 2.3]: the first steps (from the given 1 ms, growth ≤ 2 per step)
 // and the step that lands on the end are not at the asymptotic size, a few of some 20–200 steps.
-void check_adaptive(int stages, const std::vector<double>& tolerances) {
+// Tolerances 6.4e-5 … 1e-6 (0.64 … 0.01 of the amplitude): above the estimate's floor on this
+// motion. The start has no axial foreshortening (~A²/L = 1e-8 m), so it excites the axial modes
+// (ω ≳ 1e4 rad/s, unresolved) at about that amplitude; step doubling reports such a mode at ~its
+// amplitude, and a tolerance whose allowance τ h/T falls below that resolves them (measured:
+// Gauss 2 at τ = 6.25e-8 took 78 620 steps where τ = 1e-6 took 48; Gauss 3 at 1.6e-8, 47 856) —
+// correctly so, the axial oscillation is part of the discrete motion, but then the first mode's
+// order no longer sets the count.
+void check_adaptive(int stages, const std::vector<double>& tolerances, bool check_count) {
     const Model m = unloaded_free_vibration();
     NewtonSettings newton;
     newton.residual_tolerance = 1e-14;
@@ -275,7 +282,7 @@ void check_adaptive(int stages, const std::vector<double>& tolerances) {
         BOOST_TEST(error <= tau);
         steps.push_back(out.steps);
     }
-    for (size_t k = 1; k < steps.size(); ++k) {
+    for (size_t k = 1; check_count && k < steps.size(); ++k) {
         const double ratio = static_cast<double>(steps[k]) / steps[k - 1];
         BOOST_TEST(ratio >= 1.7);
         BOOST_TEST(ratio <= 2.3);
@@ -283,11 +290,14 @@ void check_adaptive(int stages, const std::vector<double>& tolerances) {
 }
 
 BOOST_AUTO_TEST_CASE(adaptive_gauss_legendre_2_meets_its_global_tolerance) {
-    check_adaptive(2, {1e-7, 1e-7 / 16.0, 1e-7 / 256.0});
+    check_adaptive(2, {1.6e-5, 1e-6}, true);  // measured 26 → 48 steps
 }
 
 BOOST_AUTO_TEST_CASE(adaptive_gauss_legendre_3_meets_its_global_tolerance) {
-    check_adaptive(3, {1e-7, 1e-7 / 64.0});
+    // The count is not checked: between the floor above and τ ≈ 1e-4 the 3-stage steps are not in
+    // their asymptotic range (measured 24 → 26 steps for τ 6.4e-5 → 1e-6, steps of ~20 ms, ωh ≈ 1),
+    // so τ^(−1/6) does not describe them there; the errors are checked.
+    check_adaptive(3, {6.4e-5, 1e-6}, false);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
