@@ -11,20 +11,6 @@
 
 namespace rotbeam {
 
-NewtonOutcome guarded_attempt(double t_next, const std::function<NewtonOutcome()>& attempt) {
-    NewtonOutcome out;
-    try {
-        out = attempt();
-    } catch (const TimeLimitReached& e) {
-        rethrow_with_context(e, "in the step to time", t_next);
-    } catch (const SingularityError& e) {
-        out.converged = false;
-        out.singular = true;
-        out.failure = e.what();
-    }
-    return out;
-}
-
 namespace {
 
 // The run's loop state and its bookkeeping of converged, cut and rejected steps.

@@ -9,7 +9,9 @@
 #include <functional>
 #include <string>
 
+#include "core/errors.hpp"
 #include "core/generalized_alpha.hpp"
+#include "core/time_limit.hpp"
 
 namespace rotbeam {
 
@@ -40,9 +42,23 @@ struct StepLoopLabels {
     std::string iterations = "Newton iterations";  // what the iteration count counts
 };
 
-// `attempt` with a parameterization's refusal (SingularityError) turned into a singular outcome and
-// the time limit given the step's end time.
-NewtonOutcome guarded_attempt(double t_next, const std::function<NewtonOutcome()>& attempt);
+// `attempt()` with a parameterization's refusal (SingularityError) turned into a singular outcome
+// and the time limit given the step's end time. A template, not a std::function: a step allocates
+// nothing (test_displacement_allocation).
+template <class Attempt>
+NewtonOutcome guarded_attempt(double t_next, Attempt&& attempt) {
+    NewtonOutcome out;
+    try {
+        out = attempt();
+    } catch (const TimeLimitReached& e) {
+        rethrow_with_context(e, "in the step to time", t_next);
+    } catch (const SingularityError& e) {
+        out.converged = false;
+        out.singular = true;
+        out.failure = e.what();
+    }
+    return out;
+}
 
 // Runs `scheme` from settings.start_time (the problem at its initial state, its acceleration set)
 // to settings.end_time as run_generalized_alpha documents (core/generalized_alpha.hpp): outputs,
