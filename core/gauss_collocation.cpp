@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <sstream>
 
 #include "core/convergence.hpp"
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
-#include "core/step_observer.hpp"
-#include "core/time_limit.hpp"
+#include "core/time_stepping.hpp"
 
 namespace rotbeam {
 
@@ -86,16 +86,6 @@ StageTransform transform_of(const Eigen::MatrixXd& A) {
     return t;
 }
 
-std::string step_failure(const char* what, long step, double t, const std::string& why,
-                         const NonlinearSystem& problem) {
-    std::ostringstream s;
-    s.precision(9);
-    s << what << " at time step " << step << " (t = " << t << "): " << why;
-    const std::string state = problem.describe_state();
-    if (!state.empty()) s << "; " << state;
-    return s.str();
-}
-
 // One step's stage equations and their simplified Newton (the header's construction). Buffers
 // are sized once; the complex LU's pattern is analysed once.
 class GaussStepper {
@@ -104,10 +94,15 @@ class GaussStepper {
     // From the problem's step start (q_n, v_n, v˙_n) at time t to t + h; on success the problem's
     // iterate is the step end (q_{n+1}, v_{n+1}, an extrapolated v˙_{n+1}), not yet accepted.
     NewtonOutcome step(double t, double h);
+    // Steps that converged only after the iteration matrix was refreshed at their stages.
+    int refreshes() const { return refreshes_; }
 
   private:
     void predict(double h);
+    // The iteration matrix at the stage mean of Z_ (zero: the step start) and t_mid.
     bool factor(double t_mid, double h);
+    NewtonOutcome iterate(double t, double h);
+    void stage_mean(double h);
     void stage_rates(double h);
     double stage_residuals(double t, double h);
     double correction();
@@ -121,7 +116,8 @@ class GaussStepper {
     int n_ = 0;
     VecX v_n_, vd_n_, r_, work_, gr_, xr_;
     VecX delta1_, v1_, vd1_;  // the step end
-    std::vector<VecX> Z_, K_, V_, L_, R_, dZ_;
+    std::vector<VecX> Z_, K_, V_, L_, R_, dZ_, best_Z_;
+    VecX z_mean_, v_mean_, l_mean_;
     SparseMatrix J0_, Jv_, Ja_, E_real_, E_floor_;
     ComplexSparse E_complex_;
     Eigen::VectorXcd gc_, xc_;
@@ -129,6 +125,7 @@ class GaussStepper {
     Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> complex_lu_;
     bool analysed_ = false;
     double floor_ = 0.0;
+    int refreshes_ = 0;
 };
 
 GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton)
@@ -146,8 +143,11 @@ GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const Newton
         }
         extrapolate_(j) = l;
     }
-    for (auto* v : {&v_n_, &vd_n_, &r_, &gr_, &xr_, &delta1_, &v1_, &vd1_}) v->setZero(n_);
-    for (auto* v : {&Z_, &K_, &V_, &L_, &R_, &dZ_}) v->assign(s, VecX::Zero(n_));
+    for (auto* v :
+         {&v_n_, &vd_n_, &r_, &gr_, &xr_, &delta1_, &v1_, &vd1_, &z_mean_, &v_mean_, &l_mean_}) {
+        v->setZero(n_);
+    }
+    for (auto* v : {&Z_, &K_, &V_, &L_, &R_, &dZ_, &best_Z_}) v->assign(s, VecX::Zero(n_));
     gc_.setZero(n_);
     xc_.setZero(n_);
 }
@@ -160,16 +160,39 @@ void GaussStepper::predict(double h) {
     }
 }
 
-// K₀, C₀, M₀ from three assemblies at the step start, then E(λ) = K₀ + μ C₀ + μ² M₀, μ = λ/h, for
-// the real eigenvalue (KLU) and the pair's representative (complex SparseLU). False when one is
-// singular.
+// The mean over the stages of Δ_i, v_i and L_i of the iterate Z_ (with Z_ = 0 the step start:
+// Δ = 0, v_n, v˙_n).
+void GaussStepper::stage_mean(double h) {
+    const int s = tableau_.stages;
+    bool start = true;
+    for (const VecX& z : Z_) start = start && z.isZero(0.0);
+    if (start) {
+        z_mean_.setZero();
+        v_mean_ = v_n_;
+        l_mean_ = vd_n_;
+        return;
+    }
+    stage_rates(h);
+    z_mean_.setZero();
+    v_mean_.setZero();
+    l_mean_.setZero();
+    for (int i = 0; i < s; ++i) {
+        z_mean_ += Z_[i] / s;
+        v_mean_ += V_[i] / s;
+        l_mean_ += L_[i] / s;
+    }
+}
+
+// K₀, C₀, M₀ from three assemblies at the stage mean of Z_ (at the step start: Δ = 0, v_n, v˙_n),
+// then E(λ) = K₀ + μ C₀ + μ² M₀, μ = λ/h, for the real eigenvalue (KLU) and the pair's
+// representative (complex SparseLU). False when one is singular.
 bool GaussStepper::factor(double t_mid, double h) {
-    Z_[0].setZero();
-    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 0.0, 0.0);
+    stage_mean(h);
+    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 0.0, 0.0);
     problem_.evaluate(r_, &J0_);
-    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 1.0, 0.0);
+    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 1.0, 0.0);
     problem_.evaluate(r_, &Jv_);
-    problem_.set_stage(Z_[0], v_n_, vd_n_, t_mid, 0.0, 1.0);
+    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 0.0, 1.0);
     problem_.evaluate(r_, &Ja_);
     const int nnz = static_cast<int>(J0_.nonZeros());
     ROTBEAM_VERIFY(Jv_.nonZeros() == nnz && Ja_.nonZeros() == nnz,
@@ -271,15 +294,12 @@ void GaussStepper::finish_step(double t, double h) {
     problem_.set_stage(delta1_, v1_, vd1_, t + h, 0.0, 0.0);
 }
 
-NewtonOutcome GaussStepper::step(double t, double h) {
+// The simplified Newton from the iterate Z_ with the factored matrix; Z_ ends at the last
+// iterate, best_Z_ at the one of the smallest stage residual.
+NewtonOutcome GaussStepper::iterate(double t, double h) {
     NewtonOutcome out;
-    problem_.start_rates(v_n_, vd_n_);
-    if (!factor(t + 0.5 * h, h)) {
-        out.singular = true;
-        out.failure = "the stage iteration matrix is singular";
-        return out;
-    }
-    predict(h);
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < tableau_.stages; ++i) best_Z_[i] = Z_[i];
     IterateMeasures m;
     m.linear = true;
     const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
@@ -290,7 +310,12 @@ NewtonOutcome GaussStepper::step(double t, double h) {
         m.residual = stage_residuals(t, h);
         if (!std::isfinite(m.residual)) {
             out.failure = "non-finite stage residual at iteration " + std::to_string(k);
+            out.iterations = k;
             return out;
+        }
+        if (m.residual < best) {
+            best = m.residual;
+            for (int i = 0; i < tableau_.stages; ++i) best_Z_[i] = Z_[i];
         }
         m.correction = correction();
         m.last_step_full = k > 1;
@@ -324,6 +349,7 @@ NewtonOutcome GaussStepper::step(double t, double h) {
             s << "the simplified Newton iteration of the stages does not contract (iteration " << k
               << ", scaled correction " << m.correction << ", residual " << m.residual << ")";
             out.failure = s.str();
+            out.iterations = k;
             return out;
         }
     }
@@ -331,79 +357,149 @@ NewtonOutcome GaussStepper::step(double t, double h) {
     s << "the stage equations did not converge in " << newton_.max_iterations
       << " iterations (scaled residual " << m.residual << ", correction " << m.correction << ")";
     out.failure = s.str();
+    out.iterations = newton_.max_iterations;
     return out;
 }
 
+// The stage iteration with the matrix of the step start; when it fails (not for a singular
+// matrix or a refused state), once more from its best iterate with the matrix refreshed at that
+// iterate's stage mean: the frozen matrix neglects dexp(Δ_i) − I and the change of K, C, M over
+// the step, which grows with the rotation per step.
+NewtonOutcome GaussStepper::step(double t, double h) {
+    problem_.start_rates(v_n_, vd_n_);
+    for (VecX& z : Z_) z.setZero();
+    NewtonOutcome out;
+    if (!factor(t + 0.5 * h, h)) {
+        out.singular = true;
+        out.failure = "the stage iteration matrix is singular";
+        return out;
+    }
+    predict(h);
+    out = iterate(t, h);
+    if (out.accepted() || out.singular || !std::isfinite(best_Z_[0].squaredNorm())) return out;
+    for (int i = 0; i < tableau_.stages; ++i) Z_[i] = best_Z_[i];
+    if (!factor(t + 0.5 * h, h)) return out;
+    const int first = out.iterations;
+    NewtonOutcome again = iterate(t, h);
+    if (again.accepted()) {
+        ++refreshes_;
+        again.iterations += first;
+        return again;
+    }
+    out.failure += "; again with the iteration matrix refreshed at the stages: " + again.failure;
+    return out;
+}
+
+// The collocation step for the shared loop (core/time_stepping.hpp): one step per attempt, or
+// with adaptive steps the step-doubling pair of the header (slot 0 of the problem keeps the
+// accepted state, slot 1 the end of the step of H).
+class GaussScheme : public StepScheme {
+  public:
+    GaussScheme(CollocationProblem& problem, int stages, const TimeIntegrationSettings& settings,
+                const NewtonSettings& newton)
+        : problem_(problem),
+          stepper_(problem, stages, newton),
+          doubling_(settings.tolerance > 0.0),
+          length_(settings.length_scale),
+          richardson_(std::ldexp(1.0, 2 * stages) - 1.0),
+          order_(2 * stages + 1) {}
+
+    NewtonOutcome attempt(double t, double /*t_next*/, double h) override {
+        if (!doubling_) return stepper_.step(t, h);
+        problem_.keep_start(0);
+        NewtonOutcome whole = stepper_.step(t, h);
+        if (!whole.accepted()) return whole;
+        problem_.end_step();
+        problem_.keep_start(1);
+        problem_.restore_start(0);
+        NewtonOutcome first = stepper_.step(t, 0.5 * h);
+        if (!first.accepted()) return back(first);
+        problem_.end_step();
+        NewtonOutcome second = stepper_.step(t + 0.5 * h, 0.5 * h);
+        if (!second.accepted()) return back(second);
+        // The pair's iterations, and the weaker of its two convergence statements.
+        second.iterations += first.iterations + whole.iterations;
+        if (!first.converged) second = worse_of(second, first);
+        return second;
+    }
+    int accept() override {
+        problem_.end_step();
+        return doubling_ ? 2 : 1;
+    }
+    // ‖q_H − q_{H/2,H/2}‖ / (2^{2s} − 1): the pair's local error (header).
+    double local_error(double /*h*/) override {
+        return problem_.distance_from_kept(1, length_) / richardson_;
+    }
+    void reject() override { problem_.restore_start(0); }
+    int local_error_order() const override { return order_; }
+    int refreshes() const { return stepper_.refreshes(); }
+
+  private:
+    // A failed half step: back to the accepted state, the failure reported.
+    NewtonOutcome back(const NewtonOutcome& failed) {
+        problem_.restore_start(0);
+        return failed;
+    }
+    static NewtonOutcome worse_of(NewtonOutcome a, const NewtonOutcome& b) {
+        a.converged = false;
+        a.criterion = b.criterion;
+        a.scaled_residual = std::max(a.scaled_residual, b.scaled_residual);
+        a.error_bound = std::max(a.error_bound, b.error_bound);
+        a.round_off_floor = std::max(a.round_off_floor, b.round_off_floor);
+        return a;
+    }
+
+    CollocationProblem& problem_;
+    GaussStepper stepper_;
+    bool doubling_;
+    double length_;
+    double richardson_;
+    int order_;
+};
+
 }  // namespace
+
+void CollocationProblem::keep_start(int /*slot*/) {
+    throw SolverError("this problem cannot keep a step start: adaptive Gauss steps not available");
+}
+void CollocationProblem::restore_start(int /*slot*/) {
+    throw SolverError("this problem cannot keep a step start: adaptive Gauss steps not available");
+}
+double CollocationProblem::distance_from_kept(int /*slot*/, double /*length*/) const {
+    throw SolverError("this problem cannot keep a step start: adaptive Gauss steps not available");
+}
 
 DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output) {
-    DynamicOutcome outcome;
     const double h0 = settings.time_step;
     if (!(h0 > 0.0) || !(settings.end_time > settings.start_time)) {
         throw InputError("analysis: a dynamic analysis needs time_step > 0 and end_time > 0");
     }
-    GaussStepper stepper(problem, stages, newton);
+    GaussScheme scheme(problem, stages, settings, newton);
     // The right limit of t_0, as run_generalized_alpha (a load released at t_0).
     constexpr double kRightLimit = 1e-6;
     problem.initialize_acceleration(settings.start_time + kRightLimit * h0);
-    const double span = settings.end_time - settings.start_time;
-    const long steps = std::max(1L, std::lround(std::ceil(span / h0 - 1e-9)));
-    const double every = settings.output_interval > 0.0 ? settings.output_interval : h0;
-    double next_output = settings.start_time + every;
     if (on_output) on_output({settings.start_time, 0});
-    double t = settings.start_time;
-    StallSummary stalls;
     VecX kept_v(problem.size()), kept_v_dot(problem.size());
-    for (long n = 1; n <= steps; ++n) {
-        const double t_next =
-            n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
-        check_time_limit("at time", t);
-        NewtonOutcome out;
-        try {
-            out = stepper.step(t, t_next - t);
-        } catch (const TimeLimitReached& e) {
-            rethrow_with_context(e, "in the step to time", t_next);
-        } catch (const SingularityError& e) {
-            out.converged = false;
-            out.singular = true;
-            out.failure = e.what();
-        }
-        if (!out.accepted()) {
-            outcome.status = out.singular ? SolveStatus::singular : SolveStatus::diverged;
-            outcome.message = step_failure(out.singular ? "singular" : "diverged", n, t_next,
-                                           out.failure, problem);
-            outcome.last_time = t;
-            return outcome;
-        }
-        stalls.add(out);
-        problem.end_step();
-        t = t_next;
-        ++outcome.steps;
-        outcome.newton_iterations += out.iterations;
-        outcome.last_time = t;
-        if (n == steps || t >= next_output - 1e-9 * h0) {
-            // The output state's acceleration (reactions) is the consistent one of its (q, v),
-            // not the stage polynomial's order-s extrapolation; the next step starts from the
-            // latter again, as it would without this output.
-            problem.start_rates(kept_v, kept_v_dot);
-            problem.initialize_acceleration(t);
-            if (on_output) on_output({t, out.iterations});
-            problem.set_start_acceleration(kept_v_dot);
-            while (next_output <= t + 1e-9 * h0) next_output += every;
-        }
-        notify_step({t, outcome.steps, outcome.newton_iterations, -1});
+    const auto output = [&](const TimeStepRecord& record) {
+        // The output state's acceleration (reactions) is the consistent one of its (q, v), not
+        // the stage polynomial's order-s extrapolation; the next step starts from the latter
+        // again, as it would without this output.
+        problem.start_rates(kept_v, kept_v_dot);
+        problem.initialize_acceleration(record.time);
+        if (on_output) on_output(record);
+        problem.set_start_acceleration(kept_v_dot);
+    };
+    const StepLoopLabels labels{"Gauss–Legendre " + std::to_string(stages) + " stages",
+                                "stage iterations"};
+    DynamicOutcome outcome = run_step_loop(scheme, problem, settings, newton, labels, output);
+    outcome.control.matrix_refreshes = scheme.refreshes();
+    if (scheme.refreshes() > 0) {
+        outcome.message += "; " + std::to_string(scheme.refreshes()) +
+                           " steps converged after refreshing the stage iteration matrix";
     }
-    std::ostringstream s;
-    s << outcome.steps << " time steps, Gauss–Legendre " << stages << " stages ("
-      << outcome.newton_iterations << " stage iterations)";
-    if (stalls.count > 0) {
-        outcome.status = SolveStatus::stalled_at_round_off;
-        s << "; " << stalls.describe("time steps", newton.residual_tolerance);
-    }
-    outcome.message = s.str();
     return outcome;
 }
 

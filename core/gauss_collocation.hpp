@@ -59,6 +59,13 @@ class CollocationProblem : public SecondOrderProblem {
     // v = dexp(Δ) w: the velocity of the motion exp(Δ(t)) ∘ q_n when Δ˙ = w.
     virtual void velocity_of_rate(const Eigen::Ref<const VecX>& delta,
                                   const Eigen::Ref<const VecX>& w, Eigen::Ref<VecX> v) const = 0;
+    // For the step doubling of adaptive steps: keep the accepted state (q_n, v_n, v˙_n) in `slot`
+    // (0 or 1), return to it (as accepted state, the iterate at it), and the distance of the
+    // iterate's configuration from the one kept (max over the nodes: translation / length,
+    // rotation angle in rad). A problem without them cannot run with adaptive steps (SolverError).
+    virtual void keep_start(int slot);
+    virtual void restore_start(int slot);
+    virtual double distance_from_kept(int slot, double length) const;
 };
 
 // The Gauss–Legendre tableau of `stages` (2 or 3; else InputError): nodes c, weights b, matrix A.
@@ -70,12 +77,25 @@ struct GaussLegendre {
     int order() const { return 2 * stages; }
 };
 
-// Fixed steps from start_time to end_time (settings.rho_infinity is not used), as
-// run_generalized_alpha: on_output at the initial state and every output_interval; the state at
+// From start_time to end_time (settings.rho_infinity is not used) through the shared step loop
+// of run_generalized_alpha (core/time_stepping.hpp): fixed steps, or adaptive steps when
+// settings.tolerance > 0; on_output at the initial state and every output_interval; the state at
 // an output has the consistent acceleration of its (q, v), for the report only: the next step
 // starts from the collocation polynomial's, so the output times do not change the motion. A step
-// whose stage Newton fails ends the run with status diverged or singular, the step and time in the
-// message.
+// whose stage iteration fails is first retried once with the iteration matrix refreshed at its
+// stages (the matrix is otherwise frozen at the step start), then cut to h/2 (settings.max_cuts);
+// the energy balance stops a run whose energy grows, as for generalized-α.
+//
+// Adaptive steps use step doubling (Richardson): from the accepted state, one step of H and two of
+// H/2; the pair is the candidate, its local error estimated as ‖q_H − q_{H/2,H/2}‖ / (2^{2s} − 1)
+// (the errors C H^{2s+1} and 2 C (H/2)^{2s+1} differ by (1 − 2^{−2s}) C H^{2s+1}, of which the
+// pair's is 1/(2^{2s} − 1)). Gauss–Legendre has no embedded pair of its own order: the stage
+// values give the collocation polynomial, an estimate of order s + 1, which would overstate the
+// error of the order-2s result by a factor ∝ h^(−s) and drive the steps far below need at tight
+// tolerances. Step doubling costs one extra step of H per accepted pair (about 1.5× the stage
+// iterations of the pair alone); for an undamped mode it resolves no worse than the scheme itself:
+// Gauss keeps every mode's amplitude, so the difference is bounded by twice the mode's amplitude
+// even for ωH ≫ 1 (the estimate saturates instead of growing as (ωH)^{2s+1}).
 DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,

@@ -10,9 +10,11 @@
 // local errors propagate without growth (each mode is a rotation in its phase plane), so the
 // global error is at most their sum, Σ e ≤ τ Σ h / T = τ; the Δt/2 companion of the run checks
 // the global error afterwards (docs/error-estimates.md, Dynamics).
-// Both schemes have local error C h³ (second order). The ratio r = e / (τ h / T) then scales as h²,
-// so the step that makes r = 1 is h r^(−1/2); it is taken with a safety factor and bounded growth
-// and shrink per step.
+// A scheme of order p has local error C h^(p+1) (q = p + 1: 3 for generalized-α and the
+// trapezoidal rule, 2s + 1 for s-stage Gauss–Legendre). The ratio r = e / (τ h / T) then scales as
+// h^(q−1), so the step that makes r = 1 is h r^(−1/(q−1)); it is taken with a safety factor and
+// bounded growth and shrink per step. The step count over the window then scales as τ^(−1/(q−1)):
+// τ/4 doubles it for a second-order scheme, τ/16 for a fourth-order one.
 #pragma once
 
 #include <algorithm>
@@ -29,7 +31,8 @@ inline constexpr int kDynamicStepCuts = 10;
 struct StepControlRecord {
     int step_cuts = 0;  // Newton failures recovered by halving the step
     double first_cut_time = 0.0;
-    int rejected_steps = 0;  // adaptive: steps whose local error exceeded the allowance
+    int rejected_steps = 0;    // adaptive: steps whose local error exceeded the allowance
+    int matrix_refreshes = 0;  // Gauss: steps passed after refreshing the stage iteration matrix
     double smallest_step = 0.0, largest_step = 0.0;  // of the converged steps
     void add_step(double h, bool first) {
         smallest_step = first ? h : std::min(smallest_step, h);
@@ -40,6 +43,7 @@ struct StepControlRecord {
 struct StepSizeControl {
     double tolerance = 0.0;  // τ: the global error allowed over the window (scaled)
     double span = 1.0;       // T
+    int order = 3;           // q: the local error is C h^q
 
     static constexpr double kSafety = 0.9;     // aim at 0.9² of the allowed error
     static constexpr double kMaxGrowth = 2.0;  // per accepted step
@@ -49,9 +53,11 @@ struct StepSizeControl {
 
     // e / (τ h / T): ≤ 1 accepts the step.
     double ratio(double error, double h) const { return error / (tolerance * h / span); }
-    // The next step after a step h with ratio r (local error ∝ h³ against an allowance ∝ h).
+    // The next step after a step h with ratio r (local error ∝ h^q against an allowance ∝ h).
     double next(double h, double r) const {
-        const double f = r > 0.0 ? kSafety / std::sqrt(r) : kMaxGrowth;
+        const double f =
+            r > 0.0 ? kSafety / (order == 3 ? std::sqrt(r) : std::pow(r, 1.0 / (order - 1)))
+                    : kMaxGrowth;
         return h * std::clamp(f, kMaxShrink, r > 1.0 ? kSafety : kMaxGrowth);
     }
     bool underflow(double h) const { return h < kMinStep * span; }

@@ -25,10 +25,11 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
     if (uses_ida(model) || d.time_tolerance > 0.0) {
         // BDF with a local error test per step: the global error is proportional to the tolerance
         // (Hairer, Nørsett & Wanner, tolerance proportionality), so the ratio 4 gives the same
-        // Richardson factor 1/(1 − 1/4) as halving a second-order step. Adaptive steps of the
-        // second-order schemes (core/step_size_control.hpp): the step that meets a local error
-        // C h³ ≤ τ h / T is h ∝ τ^(1/2), so τ/4 halves every step: this companion is the
-        // adaptive run's Δt/2 companion, and its global error ∝ h² ∝ τ (order 1 in τ).
+        // Richardson factor 1/(1 − 1/4) as halving a second-order step. Adaptive steps
+        // (core/step_size_control.hpp): the step that meets a local error C h^(p+1) ≤ τ h / T is
+        // h ∝ τ^(1/p), so the global error ∝ h^p ∝ τ (order 1 in τ) for every scheme order p; for
+        // the second-order schemes τ/4 halves every step (the adaptive run's Δt/2 companion), for
+        // Gauss–Legendre s it shortens them by 4^(1/2s).
         plan.time_method = "tolerance/4";
         plan.time_order = 1.0;
         plan.time_ratio = 4.0;

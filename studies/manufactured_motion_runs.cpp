@@ -73,6 +73,8 @@ void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunRe
     ts.end_time = spec.end_time;
     ts.output_interval = model.analysis.dynamics.output_interval;
     ts.rho_infinity = spec.rho_infinity;
+    ts.tolerance = spec.time_tolerance;
+    ts.length_scale = spec.motion.length;
     Recorder record{model, spec.motion, result};
     const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
     const auto on_output = [&](const TimeStepRecord& r) {

@@ -43,6 +43,9 @@ struct MotionRunSpec {
     double end_time = 1.0;
     double rho_infinity = 0.5;  // generalized-α
     double tolerance = 1e-6;    // IDA: rtol = atol (atol times the state scales)
+    // Displacement: adaptive steps with this global tolerance (translations over the motion's
+    // length, rotations in rad) when > 0; dt is then the first step.
+    double time_tolerance = 0.0;
     oracle::ManufacturedMotion motion;
     std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5", ".../p3/gl2"
 };

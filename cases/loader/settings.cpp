@@ -38,7 +38,7 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}},
     {"estimate", {"static", "dynamic", "modal"}},
-    {"accuracy", {"static", "modal"}}};
+    {"accuracy", {"static", "modal", "dynamic"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
     if (n["load_factors"] || required) {
@@ -215,6 +215,17 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     } else if (type == "dynamic") {
         a.kind = AnalysisKind::dynamic;
         read_dynamic(r, n, a.dynamics);
+        if (a.accuracy > 0.0) {
+            // Accuracy control of a dynamic run is in time only (docs/accuracy-control.md,
+            // Dynamics): adaptive steps with half the target as their global tolerance, the Δt/2
+            // companion of the estimate checking it; the mesh stays the case's.
+            if (n["time_tolerance"]) {
+                r.fail(n["accuracy"], "analysis.accuracy",
+                       "sets the time tolerance of a dynamic analysis (accuracy/2); give one of "
+                       "analysis.accuracy and analysis.time_tolerance");
+            }
+            a.dynamics.time_tolerance = 0.5 * a.accuracy;
+        }
     } else {
         a.kind = AnalysisKind::modal;
         read_static(r, n, a.statics, false);

@@ -173,6 +173,20 @@ void print_estimate_summary(const nlohmann::json& e, std::ostream& os) {
 
 // Accuracy control: every attempt with its cost and decision, then the outcome.
 void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
+    if (!a.contains("attempts")) {
+        // A dynamic run: time only (runs/accuracy_run.hpp).
+        os << std::setprecision(3) << "accuracy " << a["tolerance"].get<double>() << " ("
+           << a["strategy"].get<std::string>() << "): " << a["status"].get<std::string>();
+        if (a.contains("time_estimate")) {
+            os << ", time estimate " << a["time_estimate"].get<double>() << " ("
+               << a["worst_quantity"].get<std::string>() << ") against "
+               << a["target"].get<double>() << ", space estimate (not controlled) "
+               << a["space_estimate"].get<double>();
+        }
+        if (a.contains("reason")) os << " — " << a["reason"].get<std::string>();
+        os << std::setprecision(10) << "\n";
+        return;
+    }
     os << std::setprecision(3) << "accuracy " << a["tolerance"].get<double>()
        << " (estimates <= " << a["target"].get<double>() << " of their scale; "
        << a["strategy"].get<std::string>() << "):\n";
@@ -350,7 +364,8 @@ int command_run(const Args& args) {
           "analysis.estimate, on; docs/error-estimates.md)"},
          {"accuracy", "TOL",
           "refine the discretization until every estimate is <= TOL/2 of its scale, 1e-12 <= "
-          "TOL < 1 (static and modal; docs/accuracy-control.md; default: the case's "
+          "TOL < 1 (static and modal; dynamic: adaptive time steps to TOL/2, the mesh as given; "
+          "docs/accuracy-control.md; default: the case's "
           "analysis.accuracy, none)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {

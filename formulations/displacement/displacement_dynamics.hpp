@@ -94,6 +94,9 @@ class DisplacementDynamics : public CollocationProblem {
                    const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override;
     void velocity_of_rate(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& w,
                           Eigen::Ref<VecX> v) const override;
+    void keep_start(int slot) override;
+    void restore_start(int slot) override;
+    double distance_from_kept(int slot, double length) const override;
 
     // The static problem on the same mesh (its state is this problem's configuration): used for
     // `initial_state: static` (run_static on it at the loads of t = 0, then adopt_static_state()).
@@ -188,6 +191,13 @@ class DisplacementDynamics : public CollocationProblem {
     VecX delta_;
     VecX stage_backup_;  // set_stage: delta_ before the stage, restored if it is refused
     std::array<VecX, kCheckpointSlots> saved_delta_;
+    // keep_start: the accepted state (u, p, v, v˙, a) per node, two slots.
+    struct KeptStart {
+        std::vector<Vec3> u;
+        std::vector<Params> p;
+        std::vector<Vec6> v, vd, a;
+    };
+    std::array<KeptStart, 2> kept_;
 
     // Per-element workspace (p+1 nodes).
     std::vector<Params> pe_;

@@ -337,6 +337,47 @@ void DisplacementDynamics<P>::velocity_of_rate(const Eigen::Ref<const VecX>& del
 }
 
 template <param::RotationParameterization P>
+void DisplacementDynamics<P>::keep_start(int slot) {
+    ROTBEAM_VERIFY(slot == 0 || slot == 1, "keep_start: slot out of range");
+    KeptStart& k = kept_[static_cast<size_t>(slot)];
+    k.u = u_n_;
+    k.p = p_n_;
+    k.v = v_n_;
+    k.vd = vd_n_;
+    k.a = a_n_;
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::restore_start(int slot) {
+    ROTBEAM_VERIFY(slot == 0 || slot == 1, "restore_start: slot out of range");
+    const KeptStart& k = kept_[static_cast<size_t>(slot)];
+    ROTBEAM_VERIFY(k.u.size() == u_n_.size(), "restore_start: nothing kept");
+    u_n_ = k.u;
+    p_n_ = k.p;
+    v_n_ = v_ = k.v;
+    vd_n_ = vd_ = k.vd;
+    a_n_ = a_ = k.a;
+    delta_.setZero();
+    set_configuration();
+}
+
+// max over the free nodes of |u − u_kept| / length and the angle of R R_keptᵀ.
+template <param::RotationParameterization P>
+double DisplacementDynamics<P>::distance_from_kept(int slot, double length) const {
+    ROTBEAM_VERIFY(slot == 0 || slot == 1, "distance_from_kept: slot out of range");
+    const KeptStart& k = kept_[static_cast<size_t>(slot)];
+    double worst = 0.0;
+    for (size_t i = 0; i < mesh().nodes.size(); ++i) {
+        if (mesh().nodes[i].dof < 0) continue;
+        const int n = static_cast<int>(i);
+        const double du = (statics_.node_displacement(n) - k.u[i]).norm() / length;
+        const Mat3 dR = P::matrix(statics_.node_rotation(n)) * P::matrix(k.p[i]).transpose();
+        worst = std::max({worst, du, so3::log_map(dR).norm()});
+    }
+    return worst;
+}
+
+template <param::RotationParameterization P>
 AssemblyCounters DisplacementDynamics<P>::counters() const {
     AssemblyCounters c = statics_.counters();
     c.inertial_terms = inertial_terms_;
