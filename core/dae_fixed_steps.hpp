@@ -3,15 +3,118 @@
 // the unchanged state, up to max_cuts times in a row, and covered by halves of itself, so the grid
 // and the output times do not change. `Run` offers time(), x(), xdot(), iterations(),
 // try_step(t_next, h) (the state unchanged until accept), accept(t_next, h) and cut(h, cuts)
-// (true: retry with h/2; false: the status is set).
+// (true: retry with h/2; false: the status is set). DaeRun holds what every scheme's run shares.
 #pragma once
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "core/dae_driver.hpp"
+#include "core/static_driver.hpp"
+#include "core/step_observer.hpp"
 #include "core/time_limit.hpp"
 
 namespace rotbeam {
+
+// What a DAE run keeps besides its scheme's step: the state it advances (the caller's x, ẋ), its
+// time, the last attempt's Newton outcome, the stalls, and the outcome's counters, step-control
+// record and message. A scheme derives from it and adds try_step (through attempted()) and
+// accept (through accepted()).
+class DaeRun {
+  public:
+    // `failing`: what a failed step's message names ("fixed-step Newton"); `iteration`: what a cut
+    // recovered from ("Newton" in "after a Newton failure").
+    DaeRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome,
+           std::string failing, std::string iteration)
+        : dae_(dae),
+          x_(x),
+          xdot_(xdot),
+          s_(s),
+          outcome_(outcome),
+          failing_(std::move(failing)),
+          iteration_(std::move(iteration)) {}
+
+    double time() const { return t_; }
+    void start(double t) { t_ = t; }
+    const VecX& x() const { return x_; }
+    const VecX& xdot() const { return xdot_; }
+    int iterations() const { return last_.iterations; }
+    void add_initial(const NewtonOutcome& ic) { stalls_.add(ic); }
+    void fail(SolveStatus status, const std::string& message) {
+        outcome_.status = status;
+        outcome_.message = message;
+    }
+    // A failed attempt at the step h: true to retry with h/2, false (status and message set, with
+    // the time, the step and the state the system describes) past the cuts.
+    bool cut(double h, int cuts) {
+        if (cuts < s_.max_cuts) {
+            if (outcome_.control.step_cuts == 0) outcome_.control.first_cut_time = t_;
+            ++outcome_.control.step_cuts;
+            return true;
+        }
+        std::ostringstream m;
+        m.precision(9);
+        m << failing_ << " failed at t = " << t_ + h << " (step " << outcome_.steps + 1 << ", Δt "
+          << h;
+        if (cuts > 0) m << " after " << cuts << " cuts to h/2";
+        m << "): " << last_.failure;
+        const std::string state = dae_.describe_state(x_);
+        if (!state.empty()) m << "; " << state;
+        fail(last_.singular ? SolveStatus::singular : SolveStatus::diverged, m.str());
+        return false;
+    }
+    // The outcome's counters and message: `what`, the cuts, the stalls (counted in `stalled`).
+    void finish(const std::string& what, const std::string& stalled) {
+        const AssemblyCounters c = dae_.counters();
+        outcome_.residual_evaluations = c.residual_evaluations;
+        outcome_.jacobian_evaluations = c.jacobian_evaluations;
+        std::ostringstream m;
+        m << what;
+        if (outcome_.control.step_cuts > 0) {
+            m.precision(9);
+            m << "; " << outcome_.control.step_cuts << " steps cut to h/2 after a " << iteration_
+              << " failure (first from t = " << outcome_.control.first_cut_time << ")";
+        }
+        outcome_.message = m.str();
+        if (stalls_.count > 0) {
+            outcome_.status = SolveStatus::stalled_at_round_off;
+            outcome_.message += "; " + stalls_.describe(stalled.c_str(), s_.newton.residual_tolerance);
+        }
+    }
+
+  protected:
+    // The attempt's outcome, counted: true when it converged.
+    bool attempted(const NewtonOutcome& out) {
+        last_ = out;
+        outcome_.newton_iterations += out.iterations;
+        return out.accepted();
+    }
+    // After the scheme moved x_, ẋ_ to the converged step's state at t_next (a step h).
+    void accepted(double t_next, double h) {
+        stalls_.add(last_);
+        t_ = t_next;
+        ++outcome_.steps;
+        outcome_.last_time = t_;
+        outcome_.control.add_step(h, outcome_.steps == 1);
+        if (step_observed()) {
+            notify_step({t_, static_cast<int>(outcome_.steps), outcome_.newton_iterations,
+                         dae_.counters().jacobian_evaluations});
+        }
+    }
+
+    DaeSystem& dae_;
+    VecX& x_;
+    VecX& xdot_;
+    const DaeSettings& s_;
+    DaeOutcome& outcome_;
+
+  private:
+    std::string failing_, iteration_;
+    StallSummary stalls_;
+    NewtonOutcome last_;
+    double t_ = 0.0;
+};
 
 template <class Run>
 bool run_fixed_steps(Run& run, const DaeSettings& s, const DaeOutput& output) {

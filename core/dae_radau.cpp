@@ -13,6 +13,7 @@
 #include "core/dae_fixed_steps.hpp"
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
+#include "core/stage_iteration.hpp"
 #include "core/step_observer.hpp"
 #include "core/step_size_control.hpp"
 #include "core/time_limit.hpp"
@@ -244,64 +245,22 @@ NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const Ve
             factored_h_ = h;
         }
         predict(h, xdn);
-        double rate = 0.0;
-        IterateMeasures m;
-        m.linear = true;
-        const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
-        int growing = 0;
-        for (int k = 1; k <= newton_.max_iterations; ++k) {
-            m.previous_residual = m.residual;
-            m.previous_correction = m.correction;
-            m.residual = stage_residuals(t, h, xn);
-            if (!std::isfinite(m.residual)) {
-                out.failure = "non-finite stage residual at iteration " + std::to_string(k);
-                return out;
+        struct Stages {
+            RadauStepper& r;
+            double t, h;
+            const VecX& xn;
+            double residual() { return r.stage_residuals(t, h, xn); }
+            double correction() { return r.correction(); }
+            void apply_correction() {
+                for (int i = 0; i < kStages; ++i) r.Z_[i] += r.dZ_[i];
             }
-            m.correction = correction();
-            out.iterations = k;
-            if (k > 1) rate = std::max(rate, m.correction / m.previous_correction);
-            m.last_step_full = k > 1;
-            m.round_off_floor = floor_;
-            const Convergence c = accepted(m, tol);
-            if (newton_.trace != nullptr) {
-                *newton_.trace << "  stage iteration " << k << ": residual " << m.residual
-                               << ", correction " << m.correction << "\n";
+            void converged(double rate) {
+                r.rate_ = rate;
+                r.x1_ = xn + r.Z_[kStages - 1];  // stiffly accurate: the last stage
+                r.stage_rate(kStages - 1, h, r.xd1_);
             }
-            if (c != Convergence::exact) {
-                for (int i = 0; i < kStages; ++i) Z_[i] += dZ_[i];
-            }
-            if (c != Convergence::none) {
-                out.converged = c != Convergence::stalled_at_round_off;
-                out.criterion = c;
-                out.iterations = k;
-                out.scaled_residual = m.residual;
-                out.error_bound = c == Convergence::exact ? 0.0 : m.correction;
-                out.round_off_floor = floor_;
-                rate_ = rate;
-                x1_ = xn + Z_[kStages - 1];  // stiffly accurate: the last stage
-                stage_rate(kStages - 1, h, xd1_);
-                return out;
-            }
-            // The simplified Newton converges linearly; two iterations in a row in which neither
-            // the correction nor the residual shrinks mean the frozen matrix no longer describes
-            // the stage equations (step too large).
-            const bool stuck =
-                m.correction >= m.previous_correction && m.residual >= m.previous_residual;
-            growing = stuck ? growing + 1 : 0;
-            if (growing >= 2) {
-                std::ostringstream s;
-                s << "the simplified Newton iteration of the stages does not contract (iteration "
-                  << k << ", scaled correction " << m.correction << ", residual " << m.residual
-                  << ")";
-                out.failure = s.str();
-                return out;
-            }
-        }
-        std::ostringstream s;
-        s << "the stage equations did not converge in " << newton_.max_iterations
-          << " iterations (scaled residual " << m.residual << ", correction " << m.correction
-          << ")";
-        out.failure = s.str();
+        } stages{*this, t, h, xn};
+        out = iterate_stages(stages, newton_, floor_);
     } catch (const SingularityError& e) {
         out.singular = true;
         out.failure = e.what();
@@ -310,93 +269,36 @@ NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const Ve
 }
 
 // The run: state, stepper and bookkeeping, with the interface run_fixed_steps drives.
-class RadauRun {
+class RadauRun : public DaeRun {
   public:
     RadauRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome)
-        : dae_(dae), x_(x), xdot_(xdot), s_(s), outcome_(outcome), stepper_(dae, s.newton) {}
-
-    double time() const { return t_; }
-    void start(double t) { t_ = t; }
-    const VecX& x() const { return x_; }
-    const VecX& xdot() const { return xdot_; }
-    int iterations() const { return last_.iterations; }
+        : DaeRun(dae, x, xdot, s, outcome, "Radau IIA stage iteration", "stage-iteration"),
+          stepper_(dae, s.newton) {}
 
     bool try_step(double t_next, double h) {
         try {
-            last_ = stepper_.step(t_, h, x_, xdot_);
+            return attempted(stepper_.step(time(), h, x_, xdot_));
         } catch (const TimeLimitReached& e) {
             rethrow_with_context(e, "in the step to time", t_next);
         }
-        outcome_.newton_iterations += last_.iterations;
-        return last_.accepted();
     }
     void accept(double t_next, double h) {
-        stalls_.add(last_);
         stepper_.remember(h);
         x_ = stepper_.state();
         xdot_ = stepper_.rate();
-        t_ = t_next;
-        ++outcome_.steps;
-        outcome_.last_time = t_;
-        outcome_.control.add_step(h, outcome_.steps == 1);
-        if (step_observed()) {
-            notify_step({t_, static_cast<int>(outcome_.steps), outcome_.newton_iterations,
-                         dae_.counters().jacobian_evaluations});
-        }
-    }
-    // A stage-iteration failure at the step h: true to retry with h/2, false (status set) past
-    // the cuts.
-    bool cut(double h, int cuts) {
-        if (cuts < s_.max_cuts) {
-            if (outcome_.control.step_cuts == 0) outcome_.control.first_cut_time = t_;
-            ++outcome_.control.step_cuts;
-            return true;
-        }
-        std::ostringstream m;
-        m.precision(9);
-        m << "Radau IIA stage iteration failed at t = " << t_ + h << " (step " << outcome_.steps + 1
-          << ", Δt " << h;
-        if (cuts > 0) m << " after " << cuts << " cuts to h/2";
-        m << "): " << last_.failure;
-        const std::string state = dae_.describe_state(x_);
-        if (!state.empty()) m << "; " << state;
-        outcome_.status = last_.singular ? SolveStatus::singular : SolveStatus::diverged;
-        outcome_.message = m.str();
-        return false;
+        accepted(t_next, h);
     }
     void finish() {
-        const AssemblyCounters c = dae_.counters();
-        outcome_.residual_evaluations = c.residual_evaluations;
-        outcome_.jacobian_evaluations = c.jacobian_evaluations;
         outcome_.factorizations = stepper_.factorizations();
         std::ostringstream m;
         m << "fixed-step Radau IIA (3 stages), "
           << std::lround((s_.end_time - s_.start_time) / s_.time_step) << " steps, "
           << outcome_.newton_iterations << " stage iterations";
-        if (outcome_.control.step_cuts > 0) {
-            m.precision(9);
-            m << "; " << outcome_.control.step_cuts
-              << " steps cut to h/2 after a stage-iteration failure (first from t = "
-              << outcome_.control.first_cut_time << ")";
-        }
-        outcome_.message = m.str();
-        if (stalls_.count > 0) {
-            outcome_.status = SolveStatus::stalled_at_round_off;
-            outcome_.message += "; " + stalls_.describe("steps", s_.newton.residual_tolerance);
-        }
+        DaeRun::finish(m.str(), "steps");
     }
-    void add_initial(const NewtonOutcome& ic) { stalls_.add(ic); }
 
   private:
-    DaeSystem& dae_;
-    VecX& x_;
-    VecX& xdot_;
-    const DaeSettings& s_;
-    DaeOutcome& outcome_;
     RadauStepper stepper_;
-    StallSummary stalls_;
-    NewtonOutcome last_;
-    double t_ = 0.0;
 };
 
 }  // namespace

@@ -183,25 +183,16 @@ namespace {
 // The run of the fixed-step scheme: the state, the step (one Newton workspace for all steps: the
 // LU's symbolic analysis is made once per pattern instead of once per step, where it was 9.6 % of
 // the instructions of a mixed joined-beam run, docs/performance.md) and the bookkeeping.
-class TrapezoidalRun {
+class TrapezoidalRun : public DaeRun {
   public:
     TrapezoidalRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome)
-        : dae_(dae),
-          x_(x),
-          xdot_(xdot),
-          s_(s),
-          outcome_(outcome),
+        : DaeRun(dae, x, xdot, s, outcome, "fixed-step Newton", "Newton"),
           step_(dae),
           workspace_(s.newton.dense_linear_solver ? SparseLUSolver::Kind::dense
                                                   : SparseLUSolver::Kind::sparse_lu) {}
 
-    double time() const { return t_; }
-    void start(double t) { t_ = t; }
-    const VecX& x() const { return x_; }
-    const VecX& xdot() const { return xdot_; }
     // The converged step's rate Ẋ_{n+1} (before accept).
     const VecX& rate() { return step_.rate(); }
-    int iterations() const { return last_.iterations; }
 
     // Tries the step of size h to t_next from the state at t (unchanged until accept).
     bool try_step(double t_next, double h) {
@@ -211,76 +202,21 @@ class TrapezoidalRun {
             scaled_ = true;
         }
         try {
-            last_ = solve_newton(step_, s_.newton, workspace_);
+            return attempted(solve_newton(step_, s_.newton, workspace_));
         } catch (const TimeLimitReached& e) {
             rethrow_with_context(e, "in the step to time", t_next);
         }
-        outcome_.newton_iterations += last_.iterations;
-        return last_.accepted();
     }
     void accept(double t_next, double h) {
-        stalls_.add(last_);
         x_ = step_.state();
         xdot_ = step_.rate();
-        t_ = t_next;
-        ++outcome_.steps;
-        outcome_.last_time = t_;
-        outcome_.control.add_step(h, outcome_.steps == 1);
-        if (step_observed()) {
-            notify_step({t_, static_cast<int>(outcome_.steps), outcome_.newton_iterations,
-                         dae_.counters().jacobian_evaluations});
-        }
+        accepted(t_next, h);
     }
-    // A Newton failure at the step h: true to retry with h/2, false (status set) past the cuts.
-    bool cut(double h, int cuts) {
-        if (cuts < s_.max_cuts) {
-            if (outcome_.control.step_cuts == 0) outcome_.control.first_cut_time = t_;
-            ++outcome_.control.step_cuts;
-            return true;
-        }
-        std::ostringstream m;
-        m << "fixed-step Newton failed at t = " << t_ + h << " (step " << outcome_.steps + 1
-          << ", Δt " << h;
-        if (cuts > 0) m << " after " << cuts << " cuts to h/2";
-        m << "): " << last_.failure;
-        fail(last_.singular ? SolveStatus::singular : SolveStatus::diverged, m.str());
-        return false;
-    }
-    void fail(SolveStatus status, const std::string& message) {
-        outcome_.status = status;
-        outcome_.message = message;
-    }
-    void finish(const std::string& what) {
-        const AssemblyCounters c = dae_.counters();
-        outcome_.residual_evaluations = c.residual_evaluations;
-        outcome_.jacobian_evaluations = c.jacobian_evaluations;
-        std::ostringstream m;
-        m << what;
-        if (outcome_.control.step_cuts > 0) {
-            m.precision(9);
-            m << "; " << outcome_.control.step_cuts
-              << " steps cut to h/2 after a Newton failure (first from t = "
-              << outcome_.control.first_cut_time << ")";
-        }
-        outcome_.message = m.str();
-        if (stalls_.count > 0) {
-            outcome_.status = SolveStatus::stalled_at_round_off;
-            outcome_.message += "; " + stalls_.describe("solves", s_.newton.residual_tolerance);
-        }
-    }
-    void add_initial(const NewtonOutcome& ic) { stalls_.add(ic); }
+    void finish(const std::string& what) { DaeRun::finish(what, "solves"); }
 
   private:
-    DaeSystem& dae_;
-    VecX& x_;
-    VecX& xdot_;
-    const DaeSettings& s_;
-    DaeOutcome& outcome_;
     TrapezoidalStep step_;
     NewtonWorkspace workspace_;
-    StallSummary stalls_;
-    NewtonOutcome last_;
-    double t_ = 0.0;
     bool scaled_ = false;
 };
 

@@ -11,6 +11,7 @@
 #include "core/convergence.hpp"
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
+#include "core/stage_iteration.hpp"
 #include "core/time_stepping.hpp"
 
 namespace rotbeam {
@@ -297,68 +298,26 @@ void GaussStepper::finish_step(double t, double h) {
 // The simplified Newton from the iterate Z_ with the factored matrix; Z_ ends at the last
 // iterate, best_Z_ at the one of the smallest stage residual.
 NewtonOutcome GaussStepper::iterate(double t, double h) {
-    NewtonOutcome out;
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < tableau_.stages; ++i) best_Z_[i] = Z_[i];
-    IterateMeasures m;
-    m.linear = true;
-    const ConvergenceTolerances tol{newton_.residual_tolerance, newton_.increment_tolerance};
-    int growing = 0;
-    for (int k = 1; k <= newton_.max_iterations; ++k) {
-        m.previous_residual = m.residual;
-        m.previous_correction = m.correction;
-        m.residual = stage_residuals(t, h);
-        if (!std::isfinite(m.residual)) {
-            out.failure = "non-finite stage residual at iteration " + std::to_string(k);
-            out.iterations = k;
-            return out;
+    struct Stages {
+        GaussStepper& g;
+        double t, h, best;
+        double residual() {
+            const double r = g.stage_residuals(t, h);
+            if (r < best) {
+                best = r;
+                for (int i = 0; i < g.tableau_.stages; ++i) g.best_Z_[i] = g.Z_[i];
+            }
+            return r;
         }
-        if (m.residual < best) {
-            best = m.residual;
-            for (int i = 0; i < tableau_.stages; ++i) best_Z_[i] = Z_[i];
+        double correction() { return g.correction(); }
+        void apply_correction() {
+            for (int i = 0; i < g.tableau_.stages; ++i) g.Z_[i] += g.dZ_[i];
         }
-        m.correction = correction();
-        m.last_step_full = k > 1;
-        m.round_off_floor = floor_;
-        const Convergence c = accepted(m, tol);
-        if (newton_.trace != nullptr) {
-            *newton_.trace << "  stage iteration " << k << ": residual " << m.residual
-                           << ", correction " << m.correction << "\n";
-        }
-        if (c != Convergence::exact) {
-            for (int i = 0; i < tableau_.stages; ++i) Z_[i] += dZ_[i];
-        }
-        if (c != Convergence::none) {
-            out.converged = c != Convergence::stalled_at_round_off;
-            out.criterion = c;
-            out.iterations = k;
-            out.scaled_residual = m.residual;
-            out.error_bound = c == Convergence::exact ? 0.0 : m.correction;
-            out.round_off_floor = floor_;
-            finish_step(t, h);
-            return out;
-        }
-        // The simplified Newton converges linearly; two iterations in a row in which neither the
-        // correction nor the residual shrinks mean the frozen matrix no longer describes the
-        // stage equations (step too large).
-        const bool stuck =
-            m.correction >= m.previous_correction && m.residual >= m.previous_residual;
-        growing = stuck ? growing + 1 : 0;
-        if (growing >= 2) {
-            std::ostringstream s;
-            s << "the simplified Newton iteration of the stages does not contract (iteration " << k
-              << ", scaled correction " << m.correction << ", residual " << m.residual << ")";
-            out.failure = s.str();
-            out.iterations = k;
-            return out;
-        }
-    }
-    std::ostringstream s;
-    s << "the stage equations did not converge in " << newton_.max_iterations
-      << " iterations (scaled residual " << m.residual << ", correction " << m.correction << ")";
-    out.failure = s.str();
-    out.iterations = newton_.max_iterations;
-    return out;
+        void converged(double /*rate*/) { g.finish_step(t, h); }
+    } stages{*this, t, h, best};
+    return iterate_stages(stages, newton_, floor_);
 }
 
 // The stage iteration with the matrix of the step start; when it fails (not for a singular
@@ -473,10 +432,8 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output) {
+    require_time_window(settings);
     const double h0 = settings.time_step;
-    if (!(h0 > 0.0) || !(settings.end_time > settings.start_time)) {
-        throw InputError("analysis: a dynamic analysis needs time_step > 0 and end_time > 0");
-    }
     GaussScheme scheme(problem, stages, settings, newton);
     // The right limit of t_0, as run_generalized_alpha (a load released at t_0).
     constexpr double kRightLimit = 1e-6;

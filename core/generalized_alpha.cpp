@@ -74,10 +74,8 @@ DynamicOutcome run_generalized_alpha(SecondOrderProblem& problem,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output) {
+    require_time_window(settings);
     const double h0 = settings.time_step;
-    if (!(h0 > 0.0) || !(settings.end_time > settings.start_time)) {
-        throw InputError("analysis: a dynamic analysis needs time_step > 0 and end_time > 0");
-    }
     AlphaScheme scheme(problem, settings, newton);
     // The consistent acceleration belongs to the motion on (t_0, t_1]: loads are taken at the right
     // limit t_0 + 1e-6 h. For continuous time functions this changes v˙_0 by O(1e-6 h ḟ), far below

@@ -42,6 +42,13 @@ struct StepLoopLabels {
     std::string iterations = "Newton iterations";  // what the iteration count counts
 };
 
+// InputError unless settings.time_step > 0 and settings.end_time > settings.start_time.
+inline void require_time_window(const TimeIntegrationSettings& settings) {
+    if (!(settings.time_step > 0.0) || !(settings.end_time > settings.start_time)) {
+        throw InputError("analysis: a dynamic analysis needs time_step > 0 and end_time > 0");
+    }
+}
+
 // `attempt()` with a parameterization's refusal (SingularityError) turned into a singular outcome
 // and the time limit given the step's end time. A template, not a std::function: a step allocates
 // nothing (test_displacement_allocation).

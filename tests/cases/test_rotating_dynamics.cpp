@@ -16,6 +16,7 @@
 #include "combinations/registry.hpp"
 #include "core/so3.hpp"
 #include "runs/run_case.hpp"
+#include "tests/cases/diagonal_section.hpp"
 
 using namespace rotbeam;
 
@@ -29,21 +30,8 @@ std::string beam_case(const std::string& analysis, const Vec3& Omega, const Vec3
     std::ostringstream c;
     c << std::setprecision(17);
     c << "name: spinning-beam\n"
-      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n"
-      << "sections:\n  s:\n    stiffness:\n";
-    const double k[6] = {EA, EA, EA, EI, EI, EI};
-    for (int i = 0; i < 6; ++i) {
-        c << "      - [";
-        for (int j = 0; j < 6; ++j) c << (j ? ", " : "") << (i == j ? k[i] : 0.0);
-        c << "]\n";
-    }
-    c << "    mass:\n";
-    const double m[6] = {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6};
-    for (int i = 0; i < 6; ++i) {
-        c << "      - [";
-        for (int j = 0; j < 6; ++j) c << (j ? ", " : "") << (i == j ? m[i] : 0.0);
-        c << "]\n";
-    }
+      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n";
+    test::write_diagonal_section(c, {EA, EA, EA, EI, EI, EI}, {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6});
     if (mu > 0.0)
         c << "    damping: [" << mu << ", " << mu << ", " << mu << ", " << mu << ", " << mu << ", "
           << mu << "]\n";

@@ -20,6 +20,7 @@
 #include "core/errors.hpp"
 #include "core/quadrature.hpp"
 #include "runs/run_case.hpp"
+#include "tests/cases/diagonal_section.hpp"
 
 using namespace rotbeam;
 
@@ -34,21 +35,9 @@ std::string beam_case(const std::string& analysis, double Omega, double R0, doub
     std::ostringstream c;
     c << std::setprecision(17);
     c << "name: spinning-beam\n"
-      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n"
-      << "sections:\n  s:\n    stiffness:\n";
-    const double k[6] = {EA, EA, EA, 1.0, 1.0, lag_stiffness};
-    for (int i = 0; i < 6; ++i) {
-        c << "      - [";
-        for (int j = 0; j < 6; ++j) c << (j ? ", " : "") << (i == j ? k[i] : 0.0);
-        c << "]\n";
-    }
-    c << "    mass:\n";
-    const double m[6] = {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6};
-    for (int i = 0; i < 6; ++i) {
-        c << "      - [";
-        for (int j = 0; j < 6; ++j) c << (j ? ", " : "") << (i == j ? m[i] : 0.0);
-        c << "]\n";
-    }
+      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n";
+    test::write_diagonal_section(c, {EA, EA, EA, 1.0, 1.0, lag_stiffness},
+                                 {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6});
     c << "members:\n  beam: {from: root, to: tip, section: s, elements: " << elements << "}\n"
       << "constraints: {root: clamped}\n"
       << "rotating_frame: {angular_velocity: [0, 0, " << Omega << "], center: [" << -R0

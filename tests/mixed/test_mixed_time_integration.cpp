@@ -21,6 +21,7 @@
 #include "tests/harness/type_lists.hpp"
 #include "tests/mixed/dynamic_models.hpp"
 #include "tests/mixed/initial_conditions.hpp"
+#include "tests/mixed/refusing_system.hpp"
 
 using namespace rotbeam;
 using ThreeParameterTypes = test::ParameterizationTypes<test::ThreeParameters>;
@@ -91,50 +92,7 @@ double max_difference(const std::vector<double>& a, const std::vector<double>& b
     return d;
 }
 
-// A scalar DAE ẋ − cos t = 0 whose evaluation is refused (SingularityError, as a parameterization
-// near its singular angle) or fails (another exception) the first `refusals` times it is asked
-// about a time past 0.5 — to check what the IDA trampolines make of it.
-class RefusingSystem : public DaeSystem {
-  public:
-    RefusingSystem(int refusals, bool fatal) : refusals_(refusals), fatal_(fatal) {
-        pattern_ = SparseMatrix(1, 1);
-        pattern_.insert(0, 0) = 0.0;
-        pattern_.makeCompressed();
-        ones_ = VecX::Ones(1);
-    }
-    int size() const override { return 1; }
-    void evaluate(double t, const VecX& x, const VecX& xdot, VecX& r, SparseMatrix* Jx,
-                  SparseMatrix* Jxd) override {
-        if (t > 0.5 && refused < refusals_) {
-            ++refused;
-            if (fatal_) throw std::logic_error("a fatal evaluation error");
-            throw SingularityError("toy", "evaluate", 6.28, "refused on purpose");
-        }
-        (void)x;
-        r.resize(1);
-        r[0] = xdot[0] - std::cos(t);
-        if (Jx != nullptr) {
-            *Jx = pattern_;
-            Jx->valuePtr()[0] = 0.0;
-        }
-        if (Jxd != nullptr) {
-            *Jxd = pattern_;
-            Jxd->valuePtr()[0] = 1.0;
-        }
-    }
-    const SparseMatrix& pattern() const override { return pattern_; }
-    const VecX& differential() const override { return ones_; }
-    const VecX& residual_scale() const override { return ones_; }
-    const VecX& state_scale() const override { return ones_; }
-    AssemblyCounters counters() const override { return {}; }
-    int refused = 0;
-
-  private:
-    int refusals_;
-    bool fatal_;
-    SparseMatrix pattern_;
-    VecX ones_;
-};
+using test::RefusingSystem;
 
 DaeSettings toy_settings() {
     DaeSettings s;
