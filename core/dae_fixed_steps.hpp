@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/dae_driver.hpp"
+#include "core/errors.hpp"
 #include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
 #include "core/time_limit.hpp"
@@ -79,7 +80,8 @@ class DaeRun {
         outcome_.message = m.str();
         if (stalls_.count > 0) {
             outcome_.status = SolveStatus::stalled_at_round_off;
-            outcome_.message += "; " + stalls_.describe(stalled.c_str(), s_.newton.residual_tolerance);
+            outcome_.message +=
+                "; " + stalls_.describe(stalled.c_str(), s_.newton.residual_tolerance);
         }
     }
 
@@ -115,6 +117,25 @@ class DaeRun {
     NewtonOutcome last_;
     double t_ = 0.0;
 };
+
+// The start of every DAE run: the time interval checked, consistent initial conditions at
+// s.start_time (consistent_initial_conditions), their iterations counted and the initial output.
+// False, with the outcome's status and message set, when they cannot be found.
+inline bool start_dae_run(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
+                          const DaeOutput& output, DaeOutcome& outcome, NewtonOutcome& ic) {
+    ROTBEAM_VERIFY(s.time_step > 0.0 && s.end_time > s.start_time, "bad time interval");
+    outcome.last_time = s.start_time;
+    ic = consistent_initial_conditions(dae, s.start_time, x, xdot, s.newton, s.time_step);
+    if (!ic.accepted()) {
+        outcome.status = ic.singular ? SolveStatus::singular : SolveStatus::diverged;
+        outcome.message =
+            "initial conditions at t = " + std::to_string(s.start_time) + ": " + ic.failure;
+        return false;
+    }
+    outcome.newton_iterations += ic.iterations;
+    if (output) output(s.start_time, x, xdot, ic.iterations);
+    return true;
+}
 
 template <class Run>
 bool run_fixed_steps(Run& run, const DaeSettings& s, const DaeOutput& output) {

@@ -293,19 +293,9 @@ bool run_adaptive(TrapezoidalRun& run, DaeSystem& dae, const DaeSettings& s,
 
 DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                                  const DaeOutput& output) {
-    ROTBEAM_VERIFY(s.time_step > 0.0 && s.end_time > s.start_time, "bad time interval");
     DaeOutcome outcome;
-    outcome.last_time = s.start_time;
-    const NewtonOutcome ic =
-        consistent_initial_conditions(dae, s.start_time, x, xdot, s.newton, s.time_step);
-    if (!ic.accepted()) {
-        outcome.status = ic.singular ? SolveStatus::singular : SolveStatus::diverged;
-        outcome.message =
-            "initial conditions at t = " + std::to_string(s.start_time) + ": " + ic.failure;
-        return outcome;
-    }
-    outcome.newton_iterations += ic.iterations;
-    if (output) output(s.start_time, x, xdot, ic.iterations);
+    NewtonOutcome ic;
+    if (!start_dae_run(dae, x, xdot, s, output, outcome, ic)) return outcome;
     TrapezoidalRun run(dae, x, xdot, s, outcome);
     run.add_initial(ic);
     run.start(s.start_time);

@@ -16,7 +16,7 @@
 #include "combinations/registry.hpp"
 #include "core/so3.hpp"
 #include "runs/run_case.hpp"
-#include "tests/cases/diagonal_section.hpp"
+#include "tests/cases/spinning_beam.hpp"
 
 using namespace rotbeam;
 
@@ -45,17 +45,10 @@ std::string beam_case(const std::string& analysis, const Vec3& Omega, const Vec3
     return c.str();
 }
 
-nlohmann::json run(const std::string& text, const std::vector<std::string>& overrides) {
-    RunRequest request;
-    request.model = load_case_text(text, "spinning-beam.yaml", overrides);
-    request.model.analysis.estimate = false;
-    return run_case(request);
+nlohmann::json run(const std::string& text, const std::vector<std::string>& overrides = {}) {
+    return test::run_spinning_case(text, overrides);
 }
-
-bool solved(const nlohmann::json& r) {
-    const std::string s = r["status"].get<std::string>();
-    return s == "converged" || s == "stalled-at-round-off";
-}
+using test::solved;
 
 Vec3 vec(const nlohmann::json& j) {
     return Vec3(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());

@@ -20,7 +20,7 @@
 #include "core/errors.hpp"
 #include "core/quadrature.hpp"
 #include "runs/run_case.hpp"
-#include "tests/cases/diagonal_section.hpp"
+#include "tests/cases/spinning_beam.hpp"
 
 using namespace rotbeam;
 
@@ -48,16 +48,9 @@ std::string beam_case(const std::string& analysis, double Omega, double R0, doub
 }
 
 nlohmann::json run(const std::string& text, const std::vector<std::string>& overrides = {}) {
-    RunRequest request;
-    request.model = load_case_text(text, "spinning-beam.yaml", overrides);
-    request.model.analysis.estimate = false;
-    return run_case(request);
+    return test::run_spinning_case(text, overrides);
 }
-
-bool solved(const nlohmann::json& r) {
-    const std::string s = r["status"].get<std::string>();
-    return s == "converged" || s == "stalled-at-round-off";
-}
+using test::solved;
 
 // The stretched spinning beam: u(x) = −(R0 + x) + C sin kx + R0 cos kx, k² = m Ω²/EA, with
 // u(0) = 0 and N(L) = EA u′(L) = 0.
