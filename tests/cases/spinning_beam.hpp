@@ -1,21 +1,39 @@
-// What the spinning-beam tests (test_rotating_frame, test_rotating_dynamics) share: the YAML of a
-// section `s` with diagonal 6×6 stiffness and mass matrices, a run of a case written in code
+// What the spinning-beam tests (test_rotating_frame, test_rotating_dynamics) share: the case file
+// of a uniform spinning beam, a run of a case written in code
 // (without the error estimate: the tests compare with closed forms), and what counts as solved.
 #pragma once
 
 #include <array>
+#include <iomanip>
 #include <nlohmann/json.hpp>
-#include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cases/loader/case_loader.hpp"
+#include "core/types.hpp"
 #include "runs/run_case.hpp"
 
 namespace rotbeam::test {
 
-inline void write_diagonal_section(std::ostream& c, const std::array<double, 6>& stiffness,
-                                   const std::array<double, 6>& mass) {
+// A uniform beam of length 1 along x from the origin, clamped at the root, with diagonal 6×6
+// stiffness and mass matrices (m = 1, rotary inertias 1e-6 by default), the same damping factor μ
+// on every component (none when 0), turning at Ω about the axis through `center`.
+struct SpinningBeam {
+    std::array<double, 6> stiffness{};
+    std::array<double, 6> mass{1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6};
+    double damping = 0.0;
+    Vec3 angular_velocity = Vec3::Zero();
+    Vec3 center = Vec3::Zero();
+    int elements = 1;
+    int order = 1;
+};
+
+// The case file of `beam` with `analysis` (the YAML lines under `analysis:`), displacement
+// formulation.
+inline std::string spinning_beam_case(const std::string& analysis, const SpinningBeam& beam) {
+    std::ostringstream c;
+    c << std::setprecision(17);
     const auto matrix = [&c](const std::array<double, 6>& d) {
         for (int i = 0; i < 6; ++i) {
             c << "      - [";
@@ -23,10 +41,30 @@ inline void write_diagonal_section(std::ostream& c, const std::array<double, 6>&
             c << "]\n";
         }
     };
-    c << "sections:\n  s:\n    stiffness:\n";
-    matrix(stiffness);
+    const auto vec = [&c](const Vec3& v) {
+        c << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+    };
+    c << "name: spinning-beam\n"
+      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n"
+      << "sections:\n  s:\n    stiffness:\n";
+    matrix(beam.stiffness);
     c << "    mass:\n";
-    matrix(mass);
+    matrix(beam.mass);
+    if (beam.damping > 0.0) {
+        c << "    damping: [" << beam.damping;
+        for (int i = 1; i < 6; ++i) c << ", " << beam.damping;
+        c << "]\n";
+    }
+    c << "members:\n  beam: {from: root, to: tip, section: s, elements: " << beam.elements << "}\n"
+      << "constraints: {root: clamped}\n"
+      << "rotating_frame: {angular_velocity: ";
+    vec(beam.angular_velocity);
+    c << ", center: ";
+    vec(beam.center);
+    c << "}\n"
+      << "analysis:\n"
+      << analysis << "discretization: {formulation: displacement, order: " << beam.order << "}\n";
+    return c.str();
 }
 
 inline nlohmann::json run_spinning_case(const std::string& text,

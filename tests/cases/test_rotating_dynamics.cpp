@@ -27,22 +27,13 @@ namespace {
 // Ω about the axis through `center`.
 std::string beam_case(const std::string& analysis, const Vec3& Omega, const Vec3& center, double EA,
                       double EI, double mu, int order) {
-    std::ostringstream c;
-    c << std::setprecision(17);
-    c << "name: spinning-beam\n"
-      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n";
-    test::write_diagonal_section(c, {EA, EA, EA, EI, EI, EI}, {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6});
-    if (mu > 0.0)
-        c << "    damping: [" << mu << ", " << mu << ", " << mu << ", " << mu << ", " << mu << ", "
-          << mu << "]\n";
-    c << "members:\n  beam: {from: root, to: tip, section: s, elements: 1}\n"
-      << "constraints: {root: clamped}\n"
-      << "rotating_frame: {angular_velocity: [" << Omega.x() << ", " << Omega.y() << ", "
-      << Omega.z() << "], center: [" << center.x() << ", " << center.y() << ", " << center.z()
-      << "]}\n"
-      << "analysis:\n"
-      << analysis << "discretization: {formulation: displacement, order: " << order << "}\n";
-    return c.str();
+    test::SpinningBeam b;
+    b.stiffness = {EA, EA, EA, EI, EI, EI};
+    b.damping = mu;
+    b.angular_velocity = Omega;
+    b.center = center;
+    b.order = order;
+    return test::spinning_beam_case(analysis, b);
 }
 
 nlohmann::json run(const std::string& text, const std::vector<std::string>& overrides = {}) {

@@ -32,19 +32,13 @@ namespace {
 // smaller, or the spread of the spectrum, GA/ρI, defeats the eigenpair error bound).
 std::string beam_case(const std::string& analysis, double Omega, double R0, double EA,
                       double lag_stiffness, int elements, int order) {
-    std::ostringstream c;
-    c << std::setprecision(17);
-    c << "name: spinning-beam\n"
-      << "points: {root: [0, 0, 0], tip: [1, 0, 0]}\n";
-    test::write_diagonal_section(c, {EA, EA, EA, 1.0, 1.0, lag_stiffness},
-                                 {1.0, 1.0, 1.0, 2e-6, 1e-6, 1e-6});
-    c << "members:\n  beam: {from: root, to: tip, section: s, elements: " << elements << "}\n"
-      << "constraints: {root: clamped}\n"
-      << "rotating_frame: {angular_velocity: [0, 0, " << Omega << "], center: [" << -R0
-      << ", 0, 0]}\n"
-      << "analysis:\n"
-      << analysis << "discretization: {formulation: displacement, order: " << order << "}\n";
-    return c.str();
+    test::SpinningBeam b;
+    b.stiffness = {EA, EA, EA, 1.0, 1.0, lag_stiffness};
+    b.angular_velocity = Vec3(0.0, 0.0, Omega);
+    b.center = Vec3(-R0, 0.0, 0.0);
+    b.elements = elements;
+    b.order = order;
+    return test::spinning_beam_case(analysis, b);
 }
 
 nlohmann::json run(const std::string& text, const std::vector<std::string>& overrides = {}) {
