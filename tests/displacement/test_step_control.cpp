@@ -21,19 +21,14 @@ using rotbeam::test::first_mode_at_rest;
 
 BOOST_AUTO_TEST_SUITE(step_control)
 
-// A problem that refuses every step longer than `h_fail` ending in (t_from, t_to] (as a chart
-// refuses a state near its singular angle: SingularityError), and is otherwise `inner`.
-class FailsAtFullSize : public SecondOrderProblem {
+// Forwards every call of a SecondOrderProblem (Base: it or a derived interface) to `inner`; the
+// test problems below override what they refuse.
+template <class Base>
+class Forwarding : public Base {
   public:
-    FailsAtFullSize(SecondOrderProblem& inner, double h_fail, double t_from, double t_to)
-        : inner_(inner), h_fail_(h_fail), t_from_(t_from), t_to_(t_to) {}
+    explicit Forwarding(Base& inner) : inner_(inner) {}
     int size() const override { return inner_.size(); }
-    void evaluate(VecX& r, SparseMatrix* J) override {
-        if (h_ > h_fail_ && t_ > t_from_ && t_ <= t_to_) {
-            throw SingularityError("test", "a step longer than h_fail", 0.0, std::to_string(h_));
-        }
-        inner_.evaluate(r, J);
-    }
+    void evaluate(VecX& r, SparseMatrix* J) override { inner_.evaluate(r, J); }
     void retract(const Eigen::Ref<const VecX>& dx) override { inner_.retract(dx); }
     void save_state(int slot) override { inner_.save_state(slot); }
     void restore_state(int slot) override { inner_.restore_state(slot); }
@@ -41,14 +36,33 @@ class FailsAtFullSize : public SecondOrderProblem {
     const VecX& increment_scale() const override { return inner_.increment_scale(); }
     void initialize_acceleration(double t) override { inner_.initialize_acceleration(t); }
     void begin_step(double t_next, double h, const GeneralizedAlpha& g) override {
-        t_ = t_next;
-        h_ = h;
         inner_.begin_step(t_next, h, g);
     }
     void end_step() override { inner_.end_step(); }
 
+  protected:
+    Base& inner_;
+};
+
+// A problem that refuses every step longer than `h_fail` ending in (t_from, t_to] (as a chart
+// refuses a state near its singular angle: SingularityError), and is otherwise `inner`.
+class FailsAtFullSize : public Forwarding<SecondOrderProblem> {
+  public:
+    FailsAtFullSize(SecondOrderProblem& inner, double h_fail, double t_from, double t_to)
+        : Forwarding(inner), h_fail_(h_fail), t_from_(t_from), t_to_(t_to) {}
+    void evaluate(VecX& r, SparseMatrix* J) override {
+        if (h_ > h_fail_ && t_ > t_from_ && t_ <= t_to_) {
+            throw SingularityError("test", "a step longer than h_fail", 0.0, std::to_string(h_));
+        }
+        inner_.evaluate(r, J);
+    }
+    void begin_step(double t_next, double h, const GeneralizedAlpha& g) override {
+        t_ = t_next;
+        h_ = h;
+        inner_.begin_step(t_next, h, g);
+    }
+
   private:
-    SecondOrderProblem& inner_;
     double h_fail_, t_from_, t_to_;
     double t_ = 0.0, h_ = 0.0;
 };
@@ -152,21 +166,9 @@ FirstModeStart start_in_first_mode(const Model& m,
 // Refuses (SingularityError) every stage state of a full-size step (h = 1 ms on the 1 ms grid:
 // stage times t_n + c_i h, c_i = ½ ∓ √3/6) ending in (0.1, 0.103], as a chart refuses a state near
 // its singular angle; the stages of a half step sit at other fractions of the grid and pass.
-class RefusesFullSizeStages : public CollocationProblem {
+class RefusesFullSizeStages : public Forwarding<CollocationProblem> {
   public:
-    explicit RefusesFullSizeStages(CollocationProblem& inner) : inner_(inner) {}
-    int size() const override { return inner_.size(); }
-    void evaluate(VecX& r, SparseMatrix* J) override { inner_.evaluate(r, J); }
-    void retract(const Eigen::Ref<const VecX>& dx) override { inner_.retract(dx); }
-    void save_state(int slot) override { inner_.save_state(slot); }
-    void restore_state(int slot) override { inner_.restore_state(slot); }
-    const VecX& residual_scale() const override { return inner_.residual_scale(); }
-    const VecX& increment_scale() const override { return inner_.increment_scale(); }
-    void initialize_acceleration(double t) override { inner_.initialize_acceleration(t); }
-    void begin_step(double t_next, double h, const GeneralizedAlpha& g) override {
-        inner_.begin_step(t_next, h, g);
-    }
-    void end_step() override { inner_.end_step(); }
+    explicit RefusesFullSizeStages(CollocationProblem& inner) : Forwarding(inner) {}
     bool energy_terms(EnergyTerms& terms) override { return inner_.energy_terms(terms); }
     void start_rates(VecX& v, VecX& v_dot) const override { inner_.start_rates(v, v_dot); }
     void set_start_acceleration(const Eigen::Ref<const VecX>& v_dot) override {
@@ -186,9 +188,6 @@ class RefusesFullSizeStages : public CollocationProblem {
                           Eigen::Ref<VecX> v) const override {
         inner_.velocity_of_rate(delta, w, v);
     }
-
-  private:
-    CollocationProblem& inner_;
 };
 
 }  // namespace
