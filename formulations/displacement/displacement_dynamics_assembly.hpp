@@ -289,15 +289,19 @@ BeamEnergy DisplacementDynamics<P>::energy() {
         const int nn = static_cast<int>(e.nodes.size());
         Vec6 v = Vec6::Zero();
         Vec3 x = Vec3::Zero();
+        for (int j = 0; j < nn; ++j) v += e.N(j, q) * v_[e.nodes[j]];
+        const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
+        if (!spinning_) {
+            // The frame at rest: the velocity is absolute, and the angular momentum is not
+            // reported (the energy balance weighs it by the frame's Ω = 0).
+            E.kinetic += 0.5 * e.qp[q].weight * v.dot(M * v);
+            return;
+        }
         for (int j = 0; j < nn; ++j) {
-            v += e.N(j, q) * v_[e.nodes[j]];
             x += e.N(j, q) * (mesh().nodes[e.nodes[j]].x0 + statics_.node_displacement(e.nodes[j]));
         }
-        const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
-        if (spinning_) {
-            const Vec6 v_f = absolute_velocity(Vec6::Zero(), x);
-            E.frame_kinetic += 0.5 * e.qp[q].weight * v_f.dot(M * v_f);
-        }
+        const Vec6 v_f = absolute_velocity(Vec6::Zero(), x);
+        E.frame_kinetic += 0.5 * e.qp[q].weight * v_f.dot(M * v_f);
         v = absolute_velocity(v, x);
         const Vec6 momentum = M * v;
         E.kinetic += 0.5 * e.qp[q].weight * v.dot(momentum);

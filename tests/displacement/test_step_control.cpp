@@ -23,6 +23,14 @@ BOOST_AUTO_TEST_SUITE(step_control)
 
 // Forwards every call of a SecondOrderProblem (Base: it or a derived interface) to `inner`; the
 // test problems below override what they refuse.
+// Newton tolerances 1e-14: far below the schemes' errors that the step-cut tests bound.
+NewtonSettings tight_newton() {
+    NewtonSettings newton;
+    newton.residual_tolerance = 1e-14;
+    newton.increment_tolerance = 1e-14;
+    return newton;
+}
+
 template <class Base>
 class Forwarding : public Base {
   public:
@@ -81,9 +89,7 @@ BOOST_AUTO_TEST_CASE(a_step_cut_recovers_a_step_that_fails_at_full_size) {
     Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/free-vibration.yaml");
     m.point_loads.clear();
     m.analysis.dynamics.initial_state = InitialState::rest;
-    NewtonSettings newton;
-    newton.residual_tolerance = 1e-14;
-    newton.increment_tolerance = 1e-14;
+    const NewtonSettings newton = tight_newton();
     constexpr double kDt = 1e-3;
     for (const int max_cuts : {0, kDynamicStepCuts}) {
         form::DisplacementDynamics<param::RotationVector> d(m);
@@ -202,9 +208,7 @@ class RefusesFullSizeStages : public Forwarding<CollocationProblem> {
 // put ~A ω h = 5e-2 A into the history, orders above it.
 BOOST_AUTO_TEST_CASE(a_gauss_step_cut_recovers_a_step_refused_at_full_size) {
     const Model m = unloaded_free_vibration();
-    NewtonSettings newton;
-    newton.residual_tolerance = 1e-14;
-    newton.increment_tolerance = 1e-14;
+    const NewtonSettings newton = tight_newton();
     constexpr double kDt = 1e-3;
     for (const int max_cuts : {0, kDynamicStepCuts}) {
         form::DisplacementDynamics<param::RotationVector> d(m);
@@ -257,9 +261,7 @@ BOOST_AUTO_TEST_CASE(a_gauss_step_cut_recovers_a_step_refused_at_full_size) {
 // order no longer sets the count.
 void check_adaptive(int stages, const std::vector<double>& tolerances, bool check_count) {
     const Model m = unloaded_free_vibration();
-    NewtonSettings newton;
-    newton.residual_tolerance = 1e-14;
-    newton.increment_tolerance = 1e-14;
+    const NewtonSettings newton = tight_newton();
     std::vector<int> steps;
     for (const double tau : tolerances) {
         form::DisplacementDynamics<param::RotationVector> d(m);
