@@ -130,7 +130,8 @@ bool run_fixed(Stepper& stepper, const TimeIntegrationSettings& settings,
     const double every = settings.output_interval > 0.0 ? settings.output_interval : h0;
     double next_output = settings.start_time + every;
     for (long n = 1; n <= steps; ++n) {
-        const double t_next = n == steps ? settings.end_time : settings.start_time + n * h0;
+        const double t_next =
+            n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
         const double h = t_next - stepper.time();
         check_time_limit("at time", stepper.time());
         int cuts = 0;

@@ -49,7 +49,10 @@ Probe all_unknowns(const form::MixedDynamicsOf<P>& dyn) {
     for (int e = 0; e < nb.element_count; ++e) {
         const int o = nb.element_column(e);
         auto set = [&](int from, int count, Group k) {
-            for (int i = 0; i < count; ++i) g[static_cast<std::size_t>(o + from + i)] = k;
+            for (int i = 0; i < count; ++i) {
+                const int at = o + from + i;
+                g[static_cast<std::size_t>(at)] = k;
+            }
         };
         set(nb.u(), 3, kU);
         set(nb.c(), nb.F() - nb.c(), kC);
@@ -364,18 +367,19 @@ BOOST_AUTO_TEST_CASE(joined_beam_runs_two_seconds_and_agrees_with_half_the_step)
                           },
                           {kU, kU, kU}};
         const auto start = std::chrono::steady_clock::now();
-        Run r = integrate(dyn, probe, x, integrator, dt, end, static_cast<int>(end / 0.01 + 0.5),
-                          1e-10);
+        Run r = integrate(dyn, probe, x, integrator, dt, end,
+                          static_cast<int>(std::lround(end / 0.01)), 1e-10);
         const double wall =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const DaeOutcome& o = r.outcome;
         const double n = static_cast<double>(o.steps);
+        const auto per_step = [n](long count) { return static_cast<double>(count) / n; };
         std::cout << choice_name(integrator) << " Δt = " << dt << ", 0–" << end << " s: " << o.steps
-                  << " steps, per step " << o.newton_iterations / n << " iterations, "
-                  << o.residual_evaluations / n << " residual evaluations, "
-                  << o.jacobian_evaluations / n << " Jacobian evaluations, "
-                  << (integrator == Integrator::radau_iia_3 ? o.factorizations / n
-                                                            : o.newton_iterations / n)
+                  << " steps, per step " << per_step(o.newton_iterations) << " iterations, "
+                  << per_step(o.residual_evaluations) << " residual evaluations, "
+                  << per_step(o.jacobian_evaluations) << " Jacobian evaluations, "
+                  << per_step(integrator == Integrator::radau_iia_3 ? o.factorizations
+                                                                    : o.newton_iterations)
                   << " factorizations; wall " << wall << " s (" << 1e3 * wall / n
                   << " ms per step)\n";
         return r;
