@@ -24,7 +24,7 @@ namespace rotbeam {
 // The version of the JSON contract (docs/json-schema.md), written as `schema_version` into every
 // JSON object the program writes: raised when a field is renamed, removed or changes meaning, so
 // that a downstream script can refuse a file it does not know.
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 
 // {"displacement", "rotation_matrix", "rotation_vector", "rotation_angle"} of one point;
 // rotation_angle is the norm of `continued_rotation_vector`.

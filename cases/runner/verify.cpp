@@ -5,6 +5,8 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "core/atomic_file.hpp"
+#include "core/results.hpp"
+#include "core/version.hpp"
 #include "distribution/gate.hpp"
 
 namespace rotbeam::cli {
@@ -28,7 +30,7 @@ int command_verify(const Args& args) {
     std::vector<std::string> cases = a.positional;
     if (cases.empty()) cases = catalog_cases();
     const std::vector<Row> rows = verify_rows(cases);
-    nlohmann::json table = nlohmann::json::array();
+    nlohmann::json table_rows = nlohmann::json::array();
     print_table(rows, std::cout);
     int pairs = 0, pair_misses = 0, stops = 0, stop_misses = 0, recorded = 0, not_reached = 0;
     for (const Row& r : rows) {
@@ -45,14 +47,26 @@ int command_verify(const Args& args) {
         } else {
             ++recorded;
         }
-        table.push_back(row_json(r));
+        table_rows.push_back(row_json(r));
     }
     std::cout << "\nverify: " << pairs - pair_misses << " of " << pairs
               << " gated (reference × combination) pairs passed, " << pair_misses << " missed; "
               << stops - stop_misses << " of " << stops << " expected stops held, " << stop_misses
               << " changed; " << not_reached << " pairs end at an expected stop first; " << recorded
               << " recorded only\n";
-    if (const auto file = a.value("json")) write_file_atomically(*file, table.dump(2) + "\n");
+    if (const auto file = a.value("json")) {
+        const nlohmann::json table = {{"schema_version", kSchemaVersion},
+                                      {"version", kGitDescribe},
+                                      {"rows", table_rows},
+                                      {"summary",
+                                       {{"gated_pairs", pairs},
+                                        {"gated_misses", pair_misses},
+                                        {"expected_stops", stops},
+                                        {"changed_stops", stop_misses},
+                                        {"not_reached", not_reached},
+                                        {"recorded_only", recorded}}}};
+        write_file_atomically(*file, table.dump(2) + "\n");
+    }
     return pair_misses + stop_misses > 0 ? 1 : 0;
 }
 

@@ -3,7 +3,7 @@
 # every option of every command (as the completion script offers it, generated from the same
 # tables the parser reads) is accepted by the parser and listed by the command's --help with its
 # default; the completion script completes `rotbeam r` and `rotbeam run --f`; every JSON result
-# has the schema version. Usage: cli_conventions.sh ROTBEAM COMPLETION_SCRIPT
+# has the schema version, verify's table included. Usage: cli_conventions.sh ROTBEAM COMPLETION_SCRIPT
 set -u
 rotbeam=$1
 script=$2
@@ -48,6 +48,19 @@ for command in $commands; do
 done
 [ -n "$commands" ] || fail "the completion offers no command"
 
+# Every JSON file carries the schema version --version names: a run's result and verify's table.
+schema=$(sed -n 's/.*(JSON schema_version \([0-9]*\)).*/\1/p' "$work/version")
+[ -n "$schema" ] || fail "--version names no JSON schema_version: $(head -1 "$work/version")"
 "$rotbeam" run cantilever-moment --estimate off --quiet --json "$work/r.json" || fail "run: exit $?"
-grep -q '"schema_version": 1' "$work/r.json" || fail "run --json: no schema_version 1"
+grep -q "\"schema_version\": $schema," "$work/r.json" || fail "run --json: no schema_version $schema"
+"$rotbeam" verify cantilever-moment --json "$work/v.json" >/dev/null || fail "verify: exit $?"
+/usr/bin/python3 - "$work/v.json" "$schema" <<'PY' || fail "verify --json: not a versioned table"
+import json, sys
+table = json.load(open(sys.argv[1]))
+assert table["schema_version"] == int(sys.argv[2]), table.get("schema_version")
+assert table["rows"] and all("verdict" in r for r in table["rows"]), "no rows"
+s = table["summary"]
+assert s["gated_pairs"] == sum(r["verdict"] in ("pass", "FAIL") and r["quantity"] != "stop"
+                               for r in table["rows"]), s
+PY
 exit $((failures > 0))
