@@ -233,12 +233,6 @@ void read_rotating_frame(const YamlReader& r, const YAML::Node& root, Model& mod
     f.angular_velocity = r.vec3(n["angular_velocity"], "rotating_frame.angular_velocity");
     if (n["center"]) f.center = r.vec3(n["center"], "rotating_frame.center");
     if (!f.active()) return;
-    const AnalysisKind kind = model.analysis.kind;
-    if (kind == AnalysisKind::modal && model.discretization.formulation == Formulation::mixed) {
-        r.fail(n, "rotating_frame",
-               "not modelled in the mixed formulation's modal analysis (it linearizes the mixed "
-               "dynamics, which have no rotating frame); use --formulation displacement");
-    }
 }
 
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
