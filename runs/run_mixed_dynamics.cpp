@@ -136,6 +136,12 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                           " (element momenta P, H: consistent = the element "
                           "average of the section mass, midpoint = its mid-length "
                           "value, seed 002)"}};
+    if (dyn.rotating()) {
+        result["modal"]["rotating_frame"] =
+            "modes of the mixed dynamics linearized about the steady rotating state (at rest in "
+            "the turning frame, momenta of the rigid rotation): centrifugal stiffening, spin "
+            "softening and the Coriolis (gyroscopic) coupling included (docs/rotating-frame.md)";
+    }
     result["counters"] = counters_json(dyn.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.
