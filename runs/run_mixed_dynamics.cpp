@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
 #include "core/results.hpp"
+#include "core/so3.hpp"
 #include "core/static_driver.hpp"
 #include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
@@ -135,11 +136,47 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
                           " (element momenta P, H: consistent = the element "
                           "average of the section mass, midpoint = its mid-length "
                           "value, seed 002)"}};
+    if (dyn.rotating()) {
+        result["modal"]["rotating_frame"] =
+            "modes of the mixed dynamics linearized about the steady rotating state (at rest in "
+            "the turning frame, momenta of the rigid rotation): centrifugal stiffening, spin "
+            "softening and the Coriolis (gyroscopic) coupling included (docs/rotating-frame.md)";
+    }
     result["counters"] = counters_json(dyn.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
     // A static state that stalled at round-off is carried into the modal status.
     if (result["status"] == "converged") {
         set_analysis_status(result, SolveStatus::converged, result["message"].get<std::string>());
+    }
+}
+
+// Supported points also carry their reactions (the node unknowns, the frame's axes turned by Q
+// to inertial ones): the root force and moment histories (seed 002 Fig. 11).
+template <class Dyn>
+void add_reactions(const Model& model, const Dyn& dyn, const VecX& xs, const Mat3& Q,
+                   nlohmann::json& step) {
+    for (size_t i = 0; i < model.points.size(); ++i) {
+        const int n = static_cast<int>(i);
+        if (!dyn.supported(n)) continue;
+        nlohmann::json& p = step["points"][model.points[i].name];
+        const Vec3 force = xs.segment<3>(dyn.node_column(n));
+        const Vec3 moment = xs.segment<3>(dyn.node_column(n) + 3);
+        // Without a frame the values as they are (an identity product would turn −0 into +0).
+        p["reaction_force"] = vec3(dyn.rotating() ? Vec3(Q * force) : force);
+        p["reaction_moment"] = vec3(dyn.rotating() ? Vec3(Q * moment) : moment);
+    }
+}
+
+// The named points' states relative to a frame turned to inertial axes at frame rotation Q about
+// the centre c: position c + Q (X + u − c), rotation Q R; the rotation angle is then the
+// principal angle of Q R (as the displacement formulation reports it).
+void to_inertial_axes(const Model& model, const Vec3& c, const Mat3& Q,
+                      std::vector<PointState>& states, std::vector<Vec3>& continued) {
+    for (size_t i = 0; i < states.size(); ++i) {
+        const Vec3& X = model.points[i].position;
+        states[i].displacement = c + Q * (X + states[i].displacement - c) - X;
+        states[i].rotation = Q * states[i].rotation;
+        continued[i] = so3::log_map(states[i].rotation);
     }
 }
 
@@ -238,16 +275,27 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         for (size_t i = 0; i < model.points.size(); ++i) {
             states[i] = dyn.point_state(xs, t, static_cast<int>(i));
         }
-        const std::vector<Vec3> continued = rotation_vectors_along_beam(model, stations, states);
+        std::vector<Vec3> continued = rotation_vectors_along_beam(model, stations, states);
+        // With a turning root: `points` in inertial axes, the same in the frame's axes (the
+        // motion relative to it) under `rotating_frame` (docs/rotating-frame.md).
+        const Mat3 Q = dyn.frame_rotation(t);
+        nlohmann::json relative;
+        if (dyn.rotating()) {
+            relative = step_json(model, std::nullopt, t, iterations, states, continued);
+            add_reactions(model, dyn, xs, Mat3::Identity(), relative);
+            to_inertial_axes(model, dyn.frame_center(), Q, states, continued);
+        }
         nlohmann::json step = step_json(model, std::nullopt, t, iterations, states, continued);
-        // Supported points also carry their reactions (the node unknowns, inertial components):
-        // the root force and moment histories (seed 002 Fig. 11).
-        for (size_t i = 0; i < model.points.size(); ++i) {
-            const int n = static_cast<int>(i);
-            if (!dyn.supported(n)) continue;
-            nlohmann::json& p = step["points"][model.points[i].name];
-            p["reaction_force"] = vec3(xs.segment<3>(dyn.node_column(n)));
-            p["reaction_moment"] = vec3(xs.segment<3>(dyn.node_column(n) + 3));
+        add_reactions(model, dyn, xs, Q, step);
+        if (dyn.rotating()) {
+            const form::MixedEnergy e = dyn.energy(xs);
+            step["energy"] = {{"kinetic", e.kinetic},
+                              {"strain", e.strain},
+                              {"angular_momentum", vec3(Q * e.angular_momentum)},
+                              {"jacobi_integral",
+                               e.total() - dyn.frame_angular_velocity().dot(e.angular_momentum)}};
+            step["rotating_frame"] = {{"angle", t * dyn.frame_angular_velocity().norm()},
+                                      {"points", relative["points"]}};
         }
         result["steps"].push_back(std::move(step));
         if constexpr (P::kSize == 4) track_norm_drift(dyn.norm_drift(xs, t), drift);

@@ -221,8 +221,8 @@ void check_mass_rule(const YamlReader& r, const YAML::Node& root, const Model& m
 
 // rotating_frame: {angular_velocity: [Ωx, Ωy, Ωz], center: [x, y, z]} (core/model.hpp,
 // docs/rotating-frame.md). The rotation is
-// modelled in statics (both formulations), in the displacement formulation's modal analysis and
-// dynamics (turning supports); the mixed modal analysis and dynamics refuse it here.
+// modelled in statics and dynamics (turning supports) of both formulations and in the displacement
+// formulation's modal analysis; the mixed modal analysis refuses it here.
 void read_rotating_frame(const YamlReader& r, const YAML::Node& root, Model& model) {
     const YAML::Node n = root["rotating_frame"];
     if (!n) return;
@@ -233,17 +233,6 @@ void read_rotating_frame(const YamlReader& r, const YAML::Node& root, Model& mod
     f.angular_velocity = r.vec3(n["angular_velocity"], "rotating_frame.angular_velocity");
     if (n["center"]) f.center = r.vec3(n["center"], "rotating_frame.center");
     if (!f.active()) return;
-    const AnalysisKind kind = model.analysis.kind;
-    if (kind == AnalysisKind::dynamic && model.discretization.formulation == Formulation::mixed) {
-        r.fail(n, "rotating_frame",
-               "not modelled in the mixed formulation's dynamics (the displacement formulation "
-               "turns its supports with the frame); use --formulation displacement");
-    }
-    if (kind == AnalysisKind::modal && model.discretization.formulation == Formulation::mixed) {
-        r.fail(n, "rotating_frame",
-               "not modelled in the mixed formulation's modal analysis (it linearizes the mixed "
-               "dynamics, which have no rotating frame); use --formulation displacement");
-    }
 }
 
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {

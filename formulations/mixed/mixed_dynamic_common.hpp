@@ -15,6 +15,14 @@ namespace rotbeam::form {
 // elements, and the dynamics add the distributed loads with their time functions.
 Model without_distributed_loads(Model m);
 
+// Energies and angular momentum of a mixed dynamic state (MixedDynamics<P>::energy).
+struct MixedEnergy {
+    double kinetic = 0.0;
+    double strain = 0.0;
+    Vec3 angular_momentum = Vec3::Zero();
+    double total() const { return kinetic + strain; }
+};
+
 // Throws InputError when a section carries damping: seed 002's mixed equations are undamped, and
 // refusing beats ignoring the input.
 void refuse_mixed_damping(const Model& model);

@@ -3,7 +3,8 @@
 // rates Ẋ. The static part of Eqs. 45–48 is mixed_element.hpp's; the dynamic element adds
 // these terms to it.
 //
-// The frame a of seed 002 is inertial here (ω_a = 0, v = 0: no moving reference frame). With
+// The frame a of seed 002 is inertial here (ω_a = 0, v = 0); a turning frame adds its terms
+// (mixed_frame_terms.hpp). With
 // R = R(c) the relative rotation (seed 002's Cᵀ), A = R C^ab the element's total rotation,
 // H = H_m(c) the material tangent (seed 002's Q_a, Eq. 24), h = ΔL/2, and the momenta P, H_B in
 // deformed-frame components (Eq. 18, missing from the text: {P; H} = I {V; Ω}, I the 6×6 section

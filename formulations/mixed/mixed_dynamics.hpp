@@ -26,6 +26,12 @@
 //    differential (their rates solved); afterwards complete_initial_rates() removes the radial
 //    part of ċ (which F does not see). Without a redundant parameter both are differential().
 //
+// Turning root (case key `rotating_frame`, docs/rotating-frame.md): frame a of seed 002 turns at
+// constant Ω about the axis through c, Q(t) = exp(t Ω̃); u, c are the motion relative to it (the
+// supports at rest in it), P, H the absolute momenta, and the element gains the ω_a and v_i terms
+// of Eqs. 45, 46, 49, 50 (mixed_frame_terms.hpp). Gravity turns in the frame's axes (Q(t)ᵀ g);
+// dead loads, which would turn too, are refused, as in the displacement formulation.
+//
 // Loads and prescribed motion follow their time functions; tables and ramps (which may jump) are
 // evaluated at max(t, t⁺) with t⁺ = start + 1e-6 Δt, their right limit at the start (a load
 // released at t = 0, docs/benchmarks.md §8, is off from the initial conditions on).
@@ -38,6 +44,7 @@
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamic_element.hpp"
 #include "formulations/mixed/mixed_element.hpp"
+#include "formulations/mixed/mixed_frame_terms.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/concept.hpp"
@@ -81,11 +88,22 @@ class MixedDynamics : public DaeSystem {
     int element_row(int e) const { return numbering_.element_row(e); }
     void set_load_time_floor(double t) { load_time_floor_ = t; }
 
-    // The dynamic state at rest with the statics' unknowns (MixedStatics<P>::state_vector()).
+    // The dynamic state at rest with the statics' unknowns (MixedStatics<P>::state_vector()); at
+    // rest relative to a turning frame with one (the momenta of its rigid rotation).
     VecX from_static_state(const VecX& static_state) const;
-    // Sets every element's momenta to those of a rigid translation with inertial velocity v:
-    // [P; H] = I [Aᵀ v; 0] (an initial velocity, DynamicSettings::initial_velocity).
+    // Sets every element's momenta to those of a rigid translation with velocity v relative to
+    // the frame (inertial without one): [P; H] = I [Aᵀ (v + Ω × r); Aᵀ Ω], Ω = 0 without a frame
+    // (an initial velocity, DynamicSettings::initial_velocity).
     void set_translational_momenta(VecX& x, const Vec3& v) const;
+    // The turning frame (zero angular velocity without one).
+    bool rotating() const { return spinning_; }
+    const Vec3& frame_angular_velocity() const { return omega_frame_; }
+    const Vec3& frame_center() const { return center_; }
+    Mat3 frame_rotation(double t) const;
+    // Kinetic energy ½ Σ ΔL [V; Ω]ᵀ [P; H], strain energy ½ Σ ΔL [F; M]ᵀ S [F; M] and the angular
+    // momentum Σ ΔL (r × A P + A H) about the frame's centre (the origin without one), in the
+    // unknowns' axes, of state x (element mid-point values: the element's constant momenta).
+    MixedEnergy energy(const VecX& x) const;
     // Named point displacement and rotation (relative to the reference) in state x at time t.
     PointState point_state(const VecX& x, double t, int point_index) const;
     // As MixedStatics<P>::rotation_stations, in state x at time t.
@@ -106,6 +124,7 @@ class MixedDynamics : public DaeSystem {
     void add_node_terms(int e, double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
     void add_point_loads(double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
     void build_scales(double time_scale, double mass_scale, double inertia_scale);
+    Vec3 element_position(int e, const VecX& x) const;  // x^r_i + u_i − c
 
     Model model_;
     MixedLayout layout_;  // built without distributed loads: f_dead holds gravity only
@@ -120,6 +139,10 @@ class MixedDynamics : public DaeSystem {
     AssemblyCounters counters_;
     MixedElementResult<K> static_result_;
     MixedInertiaResult<K> inertia_result_;
+    MixedFrameResult<K> frame_result_;
+    bool spinning_ = false;
+    Vec3 omega_frame_ = Vec3::Zero();
+    Vec3 center_ = Vec3::Zero();
 };
 
 }  // namespace rotbeam::form

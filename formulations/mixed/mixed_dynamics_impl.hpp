@@ -29,9 +29,20 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
       numbering_(number_mixed_unknowns(layout_, K, kConstraintRows, true, true)),
       load_time_floor_(load_time_floor) {
     if (model.rotating_frame.active()) {
-        throw InputError(
-            "rotating_frame: not modelled by the mixed dynamics (and so by the mixed modal "
-            "analysis, which linearizes them)");
+        // Dead loads are fixed in inertial axes: in the frame's axes they would turn with −Ω.
+        bool has_dead = !model.load_fields.empty();
+        for (const PointLoad& l : model.point_loads)
+            has_dead = has_dead || l.frame != LoadFrame::follower;
+        for (const DistributedLoad& l : model.distributed_loads)
+            has_dead = has_dead || l.frame != LoadFrame::follower;
+        if (has_dead) {
+            throw InputError(
+                "rotating_frame: the dynamics with a rotating frame take follower loads and "
+                "gravity only (dead loads and load fields are not turned with the frame)");
+        }
+        spinning_ = true;
+        omega_frame_ = model.rotating_frame.angular_velocity;
+        center_ = model.rotating_frame.center;
     }
     refuse_mixed_damping(model);
     // The statics' force scale ignores distributed loads when they were removed: recompute it
@@ -195,8 +206,10 @@ void MixedDynamics<P>::evaluate(double t, const VecX& x, const VecX& xdot, VecX&
 template <param::RotationParameterization P>
 void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const VecX& xdot,
                                         VecX& residual, SparseMatrix* J_x, SparseMatrix* J_xdot) {
-    const MixedElement el = mixed_loaded_element(
-        model_, layout_.elements[static_cast<std::size_t>(e)], t, load_time_floor_);
+    MixedElement el = mixed_loaded_element(model_, layout_.elements[static_cast<std::size_t>(e)], t,
+                                           load_time_floor_);
+    // Gravity (the only dead load with a turning frame) is fixed in inertial axes: Q(t)ᵀ g.
+    if (spinning_) el.f_dead = frame_rotation(t).transpose() * el.f_dead;
     const int c = element_column(e);
     const int row = element_row(e);
     MixedElementState<K> s;
@@ -216,6 +229,16 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
     mixed_element_inertia<P>(el, mass_inverse_[static_cast<std::size_t>(e)], s.c,
                              x.segment<3>(c + numbering_.P()), x.segment<3>(c + numbering_.H()),
                              rate, jac, q);
+    MixedFrameResult<K>& w = frame_result_;
+    if (spinning_) {
+        mixed_element_frame_terms<P>(el, omega_frame_, element_position(e, x), s.c,
+                                     x.segment<3>(c + numbering_.P()),
+                                     x.segment<3>(c + numbering_.H()), jac, w);
+        q.fu += w.fu;
+        q.fpsi += w.fpsi;
+        q.fP += w.fP;
+        q.fH += w.fH;
+    }
     ++counters_.elastic_terms;
     ++counters_.inertial_terms;
     const bool follower = el.f_follower.norm() + el.m_follower.norm() > 0.0;
@@ -245,6 +268,15 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
                         q.J_x.template block<6, K>(6, 0));
         add_mixed_block(J, row + numbering_.fP(), c + numbering_.P(),
                         q.J_x.template block<6, 6>(6, K));
+        if (spinning_) {
+            // Columns of w.J_x: u (3), c (K), P, H (6); F, M lie between c and P in X.
+            for (const int node : {a, b}) {
+                add_mixed_block(J, node, c + numbering_.c(), w.J_x.template block<6, K>(0, 3));
+                add_mixed_block(J, node, c + numbering_.P(), w.J_x.template block<6, 6>(0, 3 + K));
+            }
+            add_mixed_block(J, row + numbering_.fP(), c + numbering_.u(),
+                            w.J_x.template block<6, 3 + K>(6, 0));
+        }
     }
     if (J_xdot != nullptr) {
         SparseMatrix& Kd = *J_xdot;
@@ -312,6 +344,36 @@ void MixedDynamics<P>::add_point_loads(double t, const VecX& x, VecX& residual,
 }
 
 template <param::RotationParameterization P>
+Mat3 MixedDynamics<P>::frame_rotation(double t) const {
+    return so3::exp_map(t * omega_frame_);
+}
+
+template <param::RotationParameterization P>
+Vec3 MixedDynamics<P>::element_position(int e, const VecX& x) const {
+    const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+    return layout_.nodes[static_cast<std::size_t>(el.start_node)].reference + 0.5 * el.chord +
+           x.segment<3>(element_column(e) + numbering_.u()) - center_;
+}
+
+template <param::RotationParameterization P>
+MixedEnergy MixedDynamics<P>::energy(const VecX& x) const {
+    MixedEnergy E;
+    for (int e = 0; e < element_count(); ++e) {
+        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+        const int c = element_column(e);
+        const Vec6 momenta = x.segment<6>(c + numbering_.P());
+        const Vec6 forces = x.segment<6>(c + numbering_.F());
+        const Vec6 velocities = mass_inverse_[static_cast<std::size_t>(e)] * momenta;
+        E.kinetic += 0.5 * el.length * velocities.dot(momenta);
+        E.strain += 0.5 * el.length * forces.dot(el.S * forces);
+        const Mat3 A = P::matrix(x.segment<K>(c + numbering_.c())) * el.Cab;
+        E.angular_momentum += el.length * (element_position(e, x).cross(A * momenta.head<3>()) +
+                                           A * momenta.tail<3>());
+    }
+    return E;
+}
+
+template <param::RotationParameterization P>
 VecX MixedDynamics<P>::from_static_state(const VecX& static_state) const {
     const MixedNumbering statics =
         number_mixed_unknowns(layout_, K, kConstraintRows, false, numbering_.free_norm);
@@ -322,6 +384,7 @@ VecX MixedDynamics<P>::from_static_state(const VecX& static_state) const {
         x.segment<MixedElementResult<K>::kCols>(element_column(e)) =
             static_state.segment<MixedElementResult<K>::kCols>(statics.element_column(e));
     }
+    if (spinning_) set_translational_momenta(x, Vec3::Zero());
     return x;
 }
 
@@ -332,8 +395,9 @@ void MixedDynamics<P>::set_translational_momenta(VecX& x, const Vec3& v) const {
         const int c = element_column(e);
         const Mat3 A = P::matrix(x.segment<K>(c + numbering_.c())) * el.Cab;
         const Mat6 I = mass_inverse_[static_cast<std::size_t>(e)].inverse();
+        const Vec3 v_abs = v + omega_frame_.cross(element_position(e, x));
         x.segment<6>(c + numbering_.P()) =
-            I * (Vec6() << A.transpose() * v, Vec3::Zero()).finished();
+            I * (Vec6() << A.transpose() * v_abs, A.transpose() * omega_frame_).finished();
     }
 }
 

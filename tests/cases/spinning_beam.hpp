@@ -27,10 +27,10 @@ struct SpinningBeam {
     Vec3 center = Vec3::Zero();
     int elements = 1;
     int order = 1;
+    bool mixed = false;  // the mixed formulation (no element order) instead of the displacement one
 };
 
-// The case file of `beam` with `analysis` (the YAML lines under `analysis:`), displacement
-// formulation.
+// The case file of `beam` with `analysis` (the YAML lines under `analysis:`).
 inline std::string spinning_beam_case(const std::string& analysis, const SpinningBeam& beam) {
     std::ostringstream c;
     c << std::setprecision(17);
@@ -63,7 +63,12 @@ inline std::string spinning_beam_case(const std::string& analysis, const Spinnin
     vec(beam.center);
     c << "}\n"
       << "analysis:\n"
-      << analysis << "discretization: {formulation: displacement, order: " << beam.order << "}\n";
+      << analysis;
+    if (beam.mixed) {
+        c << "discretization: {formulation: mixed}\n";
+    } else {
+        c << "discretization: {formulation: displacement, order: " << beam.order << "}\n";
+    }
     return c.str();
 }
 

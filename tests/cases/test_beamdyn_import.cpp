@@ -295,7 +295,8 @@ BOOST_AUTO_TEST_CASE(every_static_deck_runs_in_every_combination) {
 // A dynamic deck with a turning root (rotating-cantilever: the cantilever deck, DynamicSolve,
 // RootVel(4) = 1 rad/s): imported as the displacement formulation's dynamics with a rotating frame
 // about the global origin (BeamDyn's driver turns the root about it), BeamDyn's step and rhoinf,
-// and run in every parameterization to a solved state; the mixed formulation refuses it by name.
+// and run in every parameterization of the displacement formulation to a solved state. The mixed
+// formulation takes the turning root but not the deck's damping (mu): refused by name for that.
 BOOST_AUTO_TEST_CASE(dynamic_deck_with_a_rotating_root_runs_in_every_parameterization) {
     const std::string text = cases::import_beamdyn(driver("rotating-cantilever"));
     for (const char* fragment :
@@ -305,10 +306,18 @@ BOOST_AUTO_TEST_CASE(dynamic_deck_with_a_rotating_root_runs_in_every_parameteriz
         BOOST_TEST_CONTEXT(fragment) { BOOST_TEST(text.find(fragment) != std::string::npos); }
     }
     for (const comb::Combination& c : comb::all_combinations(false)) {
-        const std::vector<std::string> o = combination_overrides(c, 32);
+        std::vector<std::string> o = combination_overrides(c, 32);
         BOOST_TEST_CONTEXT(c.label()) {
             if (c.formulation == Formulation::mixed) {
-                BOOST_CHECK_THROW(load_case(driver("rotating-cantilever"), o), InputError);
+                o.push_back("analysis.integrator=trapezoidal");  // it has no generalized-α
+                std::string message;
+                try {
+                    run(load_case(driver("rotating-cantilever"), o));
+                } catch (const InputError& e) {
+                    message = e.what();
+                }
+                BOOST_TEST(message.find("damping is not available in the mixed dynamics") !=
+                           std::string::npos);
                 continue;
             }
             const nlohmann::json r = run(load_case(driver("rotating-cantilever"), o));

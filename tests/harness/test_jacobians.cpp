@@ -157,6 +157,19 @@ std::vector<MixedState> mixed_states(const comb::Combination& c, bool dynamic) {
                               dynamic ? two_support_dynamic_model() : two_support_model(), 2.1});
         }
     }
+    if (dynamic) {
+        // The supports turn (rotating_frame, docs/rotating-frame.md): the ω_a and v_i terms of
+        // Eqs. 45, 46, 49, 50 at the same deformed, moving state; the dead loads (refused with a
+        // rotating frame) are dropped.
+        Model spinning = one;
+        std::erase_if(spinning.point_loads,
+                      [](const PointLoad& l) { return l.frame != LoadFrame::follower; });
+        std::erase_if(spinning.distributed_loads,
+                      [](const DistributedLoad& l) { return l.frame != LoadFrame::follower; });
+        spinning.rotating_frame.angular_velocity = Vec3(0.7, -1.1, 2.3);
+        spinning.rotating_frame.center = Vec3(0.3, -0.2, 0.1);
+        states.push_back({"one support, rotating frame", spinning, states.front().base});
+    }
     for (MixedState& s : states) apply(c, s.model);
     return states;
 }
