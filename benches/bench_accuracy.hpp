@@ -2,9 +2,9 @@
 // formulation (quaternion) on the roll-up to λ = 2 and the 45° bend at TOL = 1e-6. For each: the
 // best hand-picked discretization (the fastest of a grid of elements × orders whose true error,
 // against the exact roll-up or the continuum bend, is ≤ TOL in the measure of the accuracy
-// control), timed with the estimate off; the whole `--accuracy` run from the case's discretization
-// and from a coarse start (one element, order 2), estimate included; in-process medians; the
-// ratios; and whether each controlled run's true error is ≤ TOL.
+// control), timed with the estimate off; the whole `--accuracy` run (which starts coarse,
+// estimate::coarse_start), estimate included; in-process medians; the ratio; and whether the
+// controlled run's true error is ≤ TOL.
 #pragma once
 
 #include <nlohmann/json.hpp>

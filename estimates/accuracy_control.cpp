@@ -195,12 +195,25 @@ json attempt_json(const Model& model, const Attempt& a, const json& result, doub
 
 }  // namespace
 
+Model coarse_start(const Model& model) {
+    Model start = model;
+    if (model.discretization.formulation != Formulation::displacement) return start;
+    for (Member& m : start.members) m.elements = 1;
+    start.discretization.order = std::max(model.discretization.order, kMinSpectralOrder);
+    return start;
+}
+
 nlohmann::json control_accuracy(const Model& model, double tolerance, const AccuracyBudget& budget,
-                                const EstimatedRun& run) {
+                                const EstimatedRun& run, const std::optional<Model>& start_from) {
     const double target = tolerance / 2.0;
     const Clock::time_point start = Clock::now();
     const bool mixed = model.discretization.formulation == Formulation::mixed;
-    Model current = model;
+    Model current = start_from.value_or(model);
+    // From a coarse start, a run that does not solve or cannot be estimated moves to the case's
+    // own discretization (once) instead of stopping: one element may not resolve the solution
+    // or may put a node at a chart's singular angle where the case's mesh does not.
+    bool on_coarse_path = elements_of(current) != elements_of(model) ||
+                          current.discretization.order != model.discretization.order;
     std::vector<Attempt> history;
     json attempts = json::array();
     json result;
@@ -243,19 +256,17 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
                 stop = "the solve fails at the same load step with twice the sub-steps (" +
                        std::to_string(s) + "): not a load-stepping problem (" +
                        result.value("message", std::string()) + ")";
-                break;
-            }
-            if (s * 2 > model.analysis.statics.substeps * budget.substeps_factor) {
+            } else if (s * 2 > model.analysis.statics.substeps * budget.substeps_factor) {
                 stop = "the solve diverges with " + std::to_string(s) +
                        " sub-steps per load step, the budget's largest (" +
                        result.value("message", std::string()) + ")";
-                break;
+            } else {
+                next.model = current;
+                next.model->analysis.statics.substeps = 2 * s;
+                next.decision = "sub-steps " + std::to_string(s) + " -> " + std::to_string(2 * s) +
+                                " (Newton failed: " + result.value("message", std::string()) + ")";
+                refined = false;
             }
-            next.model = current;
-            next.model->analysis.statics.substeps = 2 * s;
-            next.decision = "sub-steps " + std::to_string(s) + " -> " + std::to_string(2 * s) +
-                            " (Newton failed: " + result.value("message", std::string()) + ")";
-            refined = false;
         } else if (a.status == "kinematics-unresolved") {
             next = split(current, 2.0, budget, "the elements do not resolve the rotation");
             refined = true;
@@ -263,20 +274,27 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
             stop = (a.status == "singular" ? "singular chart: "
                                            : "the run's status is " + a.status + ": ") +
                    result.value("message", std::string());
-            break;
         } else if (m->missing > 0 || m->quantities == 0) {
             stop = "no complete estimate: " + m->first_problem;
-            break;
         } else if (stagnated(history)) {
             stop = "round-off floor: the estimates stagnate near " + number(m->worst) +
                    " of their scale over the last refinements, above TOL/10 = " +
                    number(tolerance / 10.0);
-            break;
         } else {
             next = mixed ? refine_mixed(current, a, m->worst_order, target, budget)
                          : refine_displacement(current, history, target, budget);
             refined = true;
         }
+        if (on_coarse_path && (!stop.empty() || a.status == "diverged")) {
+            const std::string why =
+                stop.empty() ? "Newton failed: " + result.value("message", std::string()) : stop;
+            stop.clear();
+            on_coarse_path = false;
+            next.model = model;
+            next.decision = "the case's discretization (the coarse start failed: " + why + ")";
+            refined = false;
+        }
+        if (!stop.empty()) break;
         if (!next.model) {
             stop = next.stop + "; " + (m ? m->first_problem : std::string());
             break;

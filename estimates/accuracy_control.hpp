@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/model.hpp"
 
@@ -45,7 +46,18 @@ using EstimatedRun = std::function<nlohmann::json(const Model&)>;
 // Refines `model` until its estimates meet tolerance / 2 or it says why not. Returns the last
 // attempt's result with `accuracy` added (docs/accuracy-control.md, "Fields"); its status is the
 // run's own when the target is met, else `accuracy-not-reached` with the reason as message.
+//
+// `start`, when given, is the first discretization tried instead of the case's (coarse_start);
+// a run from it that does not solve or cannot be estimated moves once to the case's own
+// discretization, said in that attempt's `next`, instead of stopping.
 nlohmann::json control_accuracy(const Model& model, double tolerance, const AccuracyBudget& budget,
-                                const EstimatedRun& run);
+                                const EstimatedRun& run,
+                                const std::optional<Model>& start = std::nullopt);
+
+// The start of the displacement formulation's controlled run (docs/accuracy-control.md, "Cost"):
+// one element per member at order max(the case's, 6), whatever the case's mesh. Below order 6
+// the control raises p regardless (a coarse p-sequence is not yet spectral), so a lower start
+// only adds attempts. The mixed formulation starts from the case's mesh (returned unchanged).
+Model coarse_start(const Model& model);
 
 }  // namespace rotbeam::estimate

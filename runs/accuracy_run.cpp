@@ -132,7 +132,8 @@ nlohmann::json run_to_accuracy(const RunRequest& request) {
     if (request.time_limit_seconds > 0.0) budget.seconds = request.time_limit_seconds;
     RunCache cache(request);
     return estimate::control_accuracy(
-        request.model, request.model.analysis.accuracy, budget, [&](const Model& model) {
+        request.model, request.model.analysis.accuracy, budget,
+        [&](const Model& model) {
             bool reused = false;
             nlohmann::json result = cache.run(model, reused);
             // The estimate as add_run_estimate makes it, its companions through the cache.
@@ -147,7 +148,8 @@ nlohmann::json run_to_accuracy(const RunRequest& request) {
                 });
             result["reused"] = reused;
             return result;
-        });
+        },
+        estimate::coarse_start(request.model));
 }
 
 }  // namespace rotbeam

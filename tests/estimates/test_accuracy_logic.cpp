@@ -113,6 +113,40 @@ BOOST_AUTO_TEST_CASE(the_budget_stops_it) {
     BOOST_TEST(r["accuracy"]["chosen"]["elements"] == 64);
 }
 
+BOOST_AUTO_TEST_CASE(the_displacement_formulation_starts_coarse) {
+    // The case's 16 elements at order 2; e_p = 10^−p whatever the mesh: from one element at
+    // order 6 the decay is seen (6, 7) and order 7 already meets 5e-7.
+    const Model model = unit_model(Formulation::displacement, 16, 2);
+    const Model start = coarse_start(model);
+    BOOST_TEST(start.members[0].elements == 1);
+    BOOST_TEST(start.discretization.order == 6);
+    const json r = control_accuracy(
+        model, 1e-6, {},
+        synthetic([](const Model& m) { return std::pow(10.0, -m.discretization.order); }), start);
+    BOOST_TEST(r["accuracy"]["status"] == "reached");
+    BOOST_TEST(r["accuracy"]["chosen"]["elements"] == 1);
+    BOOST_TEST(r["accuracy"]["chosen"]["order"] == 7);
+    // The mixed formulation keeps the case's mesh.
+    BOOST_TEST(coarse_start(unit_model(Formulation::mixed, 16, 1)).members[0].elements == 16);
+}
+
+BOOST_AUTO_TEST_CASE(a_coarse_start_that_fails_moves_to_the_case_mesh) {
+    // One element is singular (a node at the chart's singular angle); the case's 16 elements at
+    // order 4 solve with e = 1e-8: the control says why it left the coarse start and reaches.
+    const Model model = unit_model(Formulation::displacement, 16, 4);
+    const EstimatedRun good = synthetic([](const Model&) { return 1e-8; });
+    const EstimatedRun singular = synthetic([](const Model&) { return 1.0; }, 0.0, "singular");
+    const json r = control_accuracy(
+        model, 1e-6, {},
+        [&](const Model& m) { return m.members[0].elements == 1 ? singular(m) : good(m); },
+        coarse_start(model));
+    BOOST_TEST(r["accuracy"]["status"] == "reached");
+    BOOST_TEST(r["accuracy"]["chosen"]["elements"] == 16);
+    BOOST_TEST(r["accuracy"]["attempts"].size() == 2u);
+    BOOST_TEST(r["accuracy"]["attempts"][0]["next"].get<std::string>().find("coarse start") !=
+               std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace rotbeam::estimate
