@@ -14,6 +14,7 @@
 
 #include "cases/loader/case_loader.hpp"
 #include "estimates/history_estimate.hpp"
+#include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
 #include "tests/cases/spinning_beam.hpp"
 
@@ -84,6 +85,12 @@ BOOST_AUTO_TEST_CASE(a_coarse_turning_run_is_inaccurate) {
     BOOST_TEST(h["amplitude"].get<double>() == amplitude);
     // The true relative error is one a user must be warned of: above 10 % of the amplitude.
     BOOST_TEST(error > 0.1 * amplitude);
+    // The CSV history carries the relative motion the estimate columns refer to.
+    const std::string csv = history_csv(r);
+    const std::string header = csv.substr(0, csv.find('\n'));
+    BOOST_TEST(header.find(",tip_angle,") != std::string::npos);
+    BOOST_TEST(header.find(",tip_rel_ux,tip_rel_uy,tip_rel_uz,tip_rel_rx,tip_rel_ry,tip_rel_rz,"
+                           "tip_rel_angle,") != std::string::npos);
 }
 
 // Orders 2, 3, 4: true errors 3.1e-4, 2.4e-8, 2.0e-10 (each under half the one before: the
