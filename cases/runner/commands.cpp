@@ -138,6 +138,10 @@ void print_point_estimate(const nlohmann::json& e, const std::string& method, st
 // criterion and the cost ratios.
 void print_history_estimate(const nlohmann::json& e, std::ostream& os) {
     os << std::setprecision(2);
+    if (e.contains("motion")) {
+        os << "  histories measured " << e["motion"].get<std::string>()
+           << " (rotating_frame.points)\n";
+    }
     for (const auto& [name, point] : e["history"].items()) {
         for (const auto& [quantity, h] : point.items()) {
             if (!h.contains("relative")) continue;
