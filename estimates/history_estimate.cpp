@@ -50,6 +50,17 @@ std::vector<long> match_times(const json& steps, const json& companion, double t
 
 double component(const PointDifference& d, int q) { return q == 0 ? d.displacement : d.rotation; }
 
+// The named points whose motion the estimate measures: with turning supports, the motion relative
+// to the turning frame, in its axes (`rotating_frame.points`: displacement and rotation relative
+// to the rigidly turning undeformed beam), so that the amplitude is the elastic motion's and not
+// the rigid turn's; otherwise the inertial `points`. A difference of two states at the same time is
+// the same in both (Q(t) is one rigid rotation: ‖Q a − Q b‖ = ‖a − b‖, (Q R_a)ᵀ Q R_b = R_aᵀ R_b),
+// so only the amplitudes, the relative errors and the phase criterion see the choice.
+const json& measured_points(const json& step) {
+    if (step.contains("rotating_frame")) return step["rotating_frame"]["points"];
+    return step["points"];
+}
+
 struct Context {
     const DynamicPlan& plan;
     std::vector<Ran> space;  // p+1: one; h/2, h/4: two
@@ -61,7 +72,7 @@ struct Context {
 const json* at(const Ran& c, std::size_t i, const std::string& name) {
     const long j = c.index[i];
     if (j < 0) return nullptr;
-    const json& s = c.result["steps"][static_cast<std::size_t>(j)]["points"];
+    const json& s = measured_points(c.result["steps"][static_cast<std::size_t>(j)]);
     return s.contains(name) ? &s[name] : nullptr;
 }
 
@@ -107,7 +118,7 @@ std::string key(const std::string& name, int q) { return name + " " + kQuantitie
 Histories survey(const Context& cx, const json& steps) {
     Histories h;
     for (std::size_t i = 0; i < steps.size(); ++i) {
-        for (const auto& [name, point] : steps[i]["points"].items()) {
+        for (const auto& [name, point] : measured_points(steps[i]).items()) {
             for (int q = 0; q < 2; ++q) {
                 History& x = h[key(name, q)];
                 double size = 0.0;
@@ -174,7 +185,7 @@ json step_entry(const Context& cx, std::size_t i, const json& step,
                 const QuantityEstimate& time_verdict, Histories& h, Tally& tally) {
     json out = json::object();
     int unreliable = 0;
-    for (const auto& [name, point] : step["points"].items()) {
+    for (const auto& [name, point] : measured_points(step).items()) {
         for (int q = 0; q < 2; ++q) {
             std::optional<json> e =
                 quantity_entry(cx, i, name, point, q, time_verdict, h[key(name, q)]);
@@ -363,6 +374,9 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
                                         : "not-estimated";
     if (tally.missing > 0) e["reason"] = "some output times have no estimate (see each)";
     if (!verdict.reliable) e["time_reason"] = verdict.reason;
+    if (!steps.empty() && steps[0].contains("rotating_frame")) {
+        e["motion"] = "relative to the turning frame";
+    }
     result["estimate"] = e;
     judge(h, phase, plan.time_method, result);
 }

@@ -7,6 +7,19 @@
 
 namespace rotbeam {
 
+namespace {
+
+// Per named point: the displacement, the rotation vector and the rotation angle.
+void write_points(const nlohmann::json& points, std::ostream& os) {
+    for (const auto& [name, point] : points.items()) {
+        for (int i = 0; i < 3; ++i) os << "," << point["displacement"][i].get<double>();
+        for (int i = 0; i < 3; ++i) os << "," << point["rotation_vector"][i].get<double>();
+        os << "," << point["rotation_angle"].get<double>();
+    }
+}
+
+}  // namespace
+
 bool has_time_history(const nlohmann::json& result) {
     const nlohmann::json& steps = result["steps"];
     return !steps.empty() && steps[0].contains("time");
@@ -24,6 +37,15 @@ std::string history_csv(const nlohmann::json& result) {
                 os << "," << name << "_" << c;
             }
         }
+        // With turning supports, the motion relative to the turning frame, in its axes: what the
+        // estimate columns measure.
+        if (steps[0].contains("rotating_frame")) {
+            for (const auto& [name, point] : steps[0]["rotating_frame"]["points"].items()) {
+                for (const char* c : {"ux", "uy", "uz", "rx", "ry", "rz", "angle"}) {
+                    os << "," << name << "_rel_" << c;
+                }
+            }
+        }
         // Support reactions (force and moment on the beam) where the formulation provides them.
         if (steps[0].contains("reactions")) {
             for (const auto& [name, r] : steps[0]["reactions"].items()) {
@@ -38,11 +60,8 @@ std::string history_csv(const nlohmann::json& result) {
     os << "\n";
     for (const nlohmann::json& step : steps) {
         os << step["time"].get<double>();
-        for (const auto& [name, point] : step["points"].items()) {
-            for (int i = 0; i < 3; ++i) os << "," << point["displacement"][i].get<double>();
-            for (int i = 0; i < 3; ++i) os << "," << point["rotation_vector"][i].get<double>();
-            os << "," << point["rotation_angle"].get<double>();
-        }
+        write_points(step["points"], os);
+        if (step.contains("rotating_frame")) write_points(step["rotating_frame"]["points"], os);
         if (step.contains("reactions")) {
             for (const auto& [name, r] : step["reactions"].items()) {
                 for (int i = 0; i < 3; ++i) os << "," << r["force"][i].get<double>();

@@ -1,6 +1,7 @@
 // A dynamic run's CSV time history (docs/architecture.md, The program and its results), built from
 // the result JSON's `steps`: one row per output time; per named point the displacement, the
-// principal rotation vector and the unwrapped rotation angle; then, when the steps carry them,
+// principal rotation vector and the unwrapped rotation angle; with turning supports the same
+// relative to the turning frame (`<point>_rel_ux` … `_rel_angle`); then, when the steps carry them,
 // each support's reaction (force and moment on the beam) and the kinetic and strain energy; last,
 // when the run was estimated, the estimate columns in space, in time and combined
 // (estimate_columns.hpp).

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "arguments.hpp"
+#include "cases/loader/beamdyn_deck.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/yaml_reader.hpp"
 #include "core/errors.hpp"
@@ -19,6 +20,7 @@
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
+#include "runs/beamdyn_frame.hpp"
 #include "runs/continuum_json.hpp"
 #include "runs/frame_recorder.hpp"
 #include "runs/history_csv.hpp"
@@ -138,6 +140,10 @@ void print_point_estimate(const nlohmann::json& e, const std::string& method, st
 // criterion and the cost ratios.
 void print_history_estimate(const nlohmann::json& e, std::ostream& os) {
     os << std::setprecision(2);
+    if (e.contains("motion")) {
+        os << "  histories measured " << e["motion"].get<std::string>()
+           << " (rotating_frame.points)\n";
+    }
     for (const auto& [name, point] : e["history"].items()) {
         for (const auto& [quantity, h] : point.items()) {
             if (!h.contains("relative")) continue;
@@ -265,6 +271,27 @@ void write_outputs(const ParsedArguments& a, const nlohmann::json& r) {
     }
 }
 
+// --frame: for `beamdyn`, the driver's GlbDCM (global → root frame), read again from the deck.
+std::optional<Mat3> beamdyn_frame_request(const ParsedArguments& a, const std::string& path) {
+    const std::string frame = a.value("frame").value_or("rotbeam");
+    if (frame == "rotbeam") return std::nullopt;
+    if (frame != "beamdyn") {
+        throw InputError("run: --frame: expected rotbeam or beamdyn, got '" + frame + "'");
+    }
+    if (!cases::is_beamdyn_driver_path(path)) {
+        throw InputError("run: --frame beamdyn: only for a BeamDyn driver file (.inp), got '" +
+                         path + "'");
+    }
+    const cases::BeamDynDeck deck = cases::read_beamdyn_deck(path);
+    Mat3 dcm;
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) {
+            dcm(r, c) = deck.root_dcm[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+        }
+    }
+    return dcm;
+}
+
 // What --vtk cannot write, refused before the run.
 void check_vtk_request(const ParsedArguments& a, const Model& model) {
     if (!a.has("vtk")) return;
@@ -362,6 +389,10 @@ int command_run(const Args& args) {
          {"estimate", "on|off",
           "estimate the discretization error with companion runs (default: the case's "
           "analysis.estimate, on; docs/error-estimates.md)"},
+         {"frame", "rotbeam|beamdyn",
+          "beamdyn (a BeamDyn driver file only): each step also gives its points and reactions in "
+          "BeamDyn's root frame, as BeamDyn writes them (docs/beamdyn-import.md; default: "
+          "rotbeam)"},
          {"accuracy", "TOL",
           "refine the discretization until every estimate is <= TOL/2 of its scale, 1e-12 <= "
           "TOL < 1 (static and modal; dynamic: adaptive time steps to TOL/2, the mesh as given; "
@@ -389,6 +420,7 @@ int command_run(const Args& args) {
             "error estimate");
     }
     check_vtk_request(a, model);
+    const std::optional<Mat3> beamdyn_dcm = beamdyn_frame_request(a, path);
     const RunRequest request{path, model, a.has("trace-newton"), limit};
     nlohmann::json result;
     FrameRecorder frames;
@@ -407,6 +439,7 @@ int command_run(const Args& args) {
             result["estimate"] = estimate_off();
         }
     }
+    if (beamdyn_dcm) add_beamdyn_frame(*beamdyn_dcm, result);
     write_outputs(a, result);
     if (const auto dir = a.value("vtk")) write_vtk_files(*dir, model, result, frames.snapshots);
     if (!a.has("quiet")) print_run_summary(result, std::cout);

@@ -154,6 +154,12 @@ for f in "$src"/cases/bad/*.yaml; do
 done
 [ $count -ge 20 ] || fail "only $count bad case files (need at least 20)"
 
+# --frame beamdyn needs a BeamDyn driver file.
+expect_input_error "run --frame beamdyn on a yaml" run cantilever-moment --frame beamdyn \
+    --json "$work/bad.json"
+grep -q -- "--frame beamdyn" "$work/err" || fail "--frame beamdyn: message does not name it"
+[ ! -e "$work/bad.json" ] || fail "--frame beamdyn: partial result written"
+
 # list names every parameterization and formulation.
 "$rotbeam" list >"$work/list" || fail "list failed"
 for name in quaternion wiener-milenkovic rodrigues rotation-vector euler-angles displacement mixed \
