@@ -163,6 +163,14 @@ ReferenceGeometry::ReferenceGeometry(const Model& model, int member) {
     start_ = x0;
     twist_start_ = m.twist_start;
     twist_end_ = m.twist_end;
+    if (m.twist_values.size() > 2) {
+        const size_t n = m.twist_values.size();
+        std::vector<double> nodes(n);
+        for (size_t i = 0; i < n; ++i)
+            nodes[i] = static_cast<double>(i) / static_cast<double>(n - 1);
+        twist_basis_ = std::make_shared<const LagrangeBasis>(std::move(nodes));
+        twist_values_ = m.twist_values;
+    }
     if (m.line.e2_hint) {
         has_hint_ = true;
         hint_ = *m.line.e2_hint;
@@ -265,7 +273,17 @@ Vec3 ReferenceGeometry::tangent(double s) const {
 
 double ReferenceGeometry::twist(double s) const {
     const double a = std::clamp(s, 0.0, length_) / length_;
-    return (1.0 - a) * twist_start_ + a * twist_end_;
+    if (!twist_basis_) return (1.0 - a) * twist_start_ + a * twist_end_;
+    VecX n(twist_basis_->size());
+    twist_basis_->values(a, n);
+    return n.dot(Eigen::Map<const VecX>(twist_values_.data(), n.size()));
+}
+
+double ReferenceGeometry::twist_rate(double s) const {
+    if (!twist_basis_) return (twist_end_ - twist_start_) / length_;
+    VecX dn(twist_basis_->size());
+    twist_basis_->derivatives(std::clamp(s, 0.0, length_) / length_, dn);
+    return dn.dot(Eigen::Map<const VecX>(twist_values_.data(), dn.size())) / length_;
 }
 
 void ReferenceGeometry::frame_and_derivative(double s, Mat3& R, Mat3& dR_ds) const {
@@ -304,7 +322,7 @@ void ReferenceGeometry::frame_and_derivative(double s, Mat3& R, Mat3& dR_ds) con
     dRb << de1, de2, de3;
     // Twist: R = R_base exp(θ ẽ1), dR/ds = dR_base exp(θ ẽ1) + R_base exp(θ ẽ1) ẽ1 θ′.
     const double theta = twist(s);
-    const double dtheta = (twist_end_ - twist_start_) / length_;
+    const double dtheta = twist_rate(s);
     const Mat3 Rt = so3::exp_map(theta * Vec3::UnitX());
     R = Rb * Rt;
     dR_ds = dRb * Rt + R * so3::skew(Vec3::UnitX()) * dtheta;

@@ -10,7 +10,8 @@
 //   e1 ∥ ẑ), e3 = e1 × e2; a beam along +x has R^r = I;
 // - circular arc: e3 = the plane normal, e2 points toward the centre;
 // - `e2_hint` (any line kind): e2 = the hint projected onto the plane normal to e1;
-// - twist θ(s) (linear from twist_start to twist_end) rotates e2, e3 about e1:
+// - twist θ(s) (linear from twist_start to twist_end, or the polynomial through the member's
+//   twist_values at equally spaced s/L) rotates e2, e3 about e1:
 //   R^r = R_base · exp(θ ẽ1), hence k = exp(−θ ẽ1) k_base + θ′ e1.
 //
 // Line kinds: straight; exact circular arc about a centre (short way round, or right-handed
@@ -26,6 +27,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/lagrange.hpp"
 #include "core/model.hpp"
 #include "core/types.hpp"
 
@@ -40,9 +42,10 @@ class ReferenceGeometry {
     double length() const { return length_; }
     Vec3 position(double s) const;
     Vec3 tangent(double s) const;
-    Mat3 frame(double s) const;      // R^r(s) = [e1 e2 e3]
-    Vec3 curvature(double s) const;  // k(s) = axial(R^rᵀ R^r′), material axes
-    double twist(double s) const;    // θ(s), radians
+    Mat3 frame(double s) const;         // R^r(s) = [e1 e2 e3]
+    Vec3 curvature(double s) const;     // k(s) = axial(R^rᵀ R^r′), material axes
+    double twist(double s) const;       // θ(s), radians
+    double twist_rate(double s) const;  // θ′(s), radians per unit length
 
     // R^r(s) and its derivative with respect to s (used by curvature and by tests).
     void frame_and_derivative(double s, Mat3& R, Mat3& dR_ds) const;
@@ -65,6 +68,8 @@ class ReferenceGeometry {
     Vec3 hint_ = Vec3::Zero();
     double twist_start_ = 0.0;
     double twist_end_ = 0.0;
+    std::shared_ptr<const LagrangeBasis> twist_basis_;  // on s/L ∈ [0, 1]; null: linear twist
+    std::vector<double> twist_values_;
     double length_ = 0.0;
     std::shared_ptr<const KeypointSpline> spline_;
 };

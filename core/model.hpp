@@ -67,9 +67,12 @@ struct Member {
     int start_point = -1;  // index into Model::points
     int end_point = -1;
     ReferenceLine line;
-    // Twist of the material axes about e1, radians, linear from start to end.
+    // Twist of the material axes about e1, radians, linear from start to end; or, when
+    // twist_values holds n > 2 angles, the polynomial of degree n − 1 through them at equally
+    // spaced s/L = i/(n − 1) (twist_start and twist_end are then its first and last value).
     double twist_start = 0.0;
     double twist_end = 0.0;
+    std::vector<double> twist_values;
     // One station = constant section; several = linear interpolation in s/L.
     std::vector<SectionStation> sections;
     int elements = 1;

@@ -192,22 +192,37 @@ MemberText Importer::member(size_t m, int first, const BeamDynMemberLine& line, 
         // The projection of x̂ onto the normal plane is normalize(ŷ × t) when t_y = 0, t_z > 0.
         os << "    e2: " << vec(frame_.to_global * Vec3::UnitX()) << "\n";
     }
-    // Twist: linear in arc length (rotbeam's member twist). A straight member's ξ is
-    // proportional to arc length; a curved one's is not, so there it must be constant.
+    // Twist: BeamDyn's fitted polynomial of degree q − 1 in ξ. A straight member's ξ is
+    // proportional to arc length, so the polynomial through its values at q equally spaced
+    // s/L is the same polynomial (rotbeam's member twist list); a linear one is written as
+    // [start, end]. A curved member's ξ is not proportional to arc length, so there the twist
+    // must be constant.
     const double tw0 = line.twist_rad(-1.0);
     const double tw1 = line.twist_rad(1.0);
+    bool linear_twist = true;
     for (int i = 0; i <= 64; ++i) {
         const double xi = -1.0 + i / 32.0;
         const double linear = tw0 + (tw1 - tw0) * (xi + 1.0) / 2.0;
         const double expected = straight ? linear : tw0;
         if (std::abs(line.twist_rad(xi) - expected) >
             1e-10 * (1.0 + std::abs(tw0) + std::abs(tw1))) {
-            fail_member(m, "initial_twist",
-                        straight ? "a twist that is not linear along the member is not modelled"
-                                 : "a twist that varies along a curved member is not modelled");
+            if (!straight) {
+                fail_member(m, "initial_twist",
+                            "a twist that varies along a curved member is not modelled");
+            }
+            linear_twist = false;
         }
     }
-    if (tw0 != 0.0 || tw1 != 0.0) os << "    twist: [" << num(tw0) << ", " << num(tw1) << "]\n";
+    if (!linear_twist) {
+        const int q = line.fit_points();
+        os << "    twist: [";
+        for (int i = 0; i < q; ++i) {
+            os << (i > 0 ? ", " : "") << num(line.twist_rad(-1.0 + 2.0 * i / (q - 1)));
+        }
+        os << "]\n";
+    } else if (tw0 != 0.0 || tw1 != 0.0) {
+        os << "    twist: [" << num(tw0) << ", " << num(tw1) << "]\n";
+    }
     // Sections: the blade stations inside [eta0, eta1] and the properties at its ends.
     MemberText out;
     std::vector<std::pair<double, std::string>> at;

@@ -60,6 +60,9 @@ void describe_members(const Model& model, std::ostream& os) {
            << ", " << m.elements << " element(s)";
         if (m.twist_start != 0.0 || m.twist_end != 0.0) {
             os << ", twist " << m.twist_start << " → " << m.twist_end << " rad";
+            if (m.twist_values.size() > 2) {
+                os << " (degree-" << m.twist_values.size() - 1 << " polynomial)";
+            }
         }
         os << "\n";
         for (const SectionStation& st : m.sections) {

@@ -34,6 +34,10 @@ inline constexpr int kMaxElementsPerMember = 100000;
 // past twice that the element's dense (6(p+1))² blocks and p+1 quadrature points cost p³ per
 // element with nothing left to gain.
 inline constexpr int kMaxOrder = 24;
+// members.NAME.twist: angles at equally spaced s/L, interpolated by one polynomial. BeamDyn's
+// twist is a polynomial of degree ≤ 6 (seven values); a degree much past that through equally
+// spaced values oscillates between them (Runge).
+inline constexpr std::size_t kMaxTwistValues = 8;
 // discretization.quadrature_points: twice the Gauss points the highest order needs (p + 1).
 inline constexpr int kMaxQuadraturePoints = 50;
 // analysis.load_factors entries, analysis.substeps, and their product (the sub-steps a static

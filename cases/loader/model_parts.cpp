@@ -231,10 +231,13 @@ Member read_member(const YamlReader& r, const YAML::Node& n, const std::string& 
     if (n["e2"]) m.line.e2_hint = r.vec3(n["e2"], key + ".e2");
     if (const YAML::Node t = n["twist"]) {
         const std::vector<double> tw = r.numbers(t, key + ".twist");
-        if (tw.size() > 2)
-            r.fail(t, key + ".twist", "expected one angle or [start, end] (radians)");
+        if (tw.size() > kMaxTwistValues)
+            r.fail(t, key + ".twist",
+                   "expected one angle, [start, end] or at most " +
+                       std::to_string(kMaxTwistValues) + " angles at equally spaced s/L (radians)");
         m.twist_start = tw.front();
         m.twist_end = tw.back();
+        if (tw.size() > 2) m.twist_values = tw;
     }
     read_member_sections(r, n, key, sections, m);
     m.elements = r.positive_integer(r.required(n, key, "elements"), key + ".elements",

@@ -39,6 +39,10 @@ RodGeometry::RodGeometry(const Model& model, const Member& member)
     const Vec3 end = model.points.at(member.end_point).position;
     if (kind_ == LineKind::keypoints)
         throw InputError("continuum solver: key-point reference lines are not supported");
+    if (member.twist_values.size() > 2)
+        throw InputError(
+            "continuum solver: a twist that is not linear along a member is not "
+            "supported");
     if (kind_ == LineKind::straight) {
         length_ = (end - start_).norm();
         if (!(length_ > 0.0)) throw InputError("continuum solver: member ends coincide");

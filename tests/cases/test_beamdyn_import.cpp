@@ -153,6 +153,67 @@ BOOST_AUTO_TEST_CASE(curved_line_reproduces_the_beamdyn_fit) {
     BOOST_TEST(worst < 1e-12 * fit.length());
 }
 
+// A twist that is not linear (quadratic-twist: key points at z = 0, 3, 10 m with twist 0, 20,
+// 30°). With three key points BeamDyn's least-squares fit has three unknowns, two of them fixed
+// by the end key points and the third by the middle normal equation, whose weight N₁(ξ) vanishes
+// at the end key points: the fit interpolates the middle key point. The twist is therefore the
+// quadratic through (ξ_k, −twist_k) with ξ_k = 2 z_k / 10 − 1, written here in closed form and
+// compared with rotbeam's twist and twist rate (the curvature k₁ of a straight line) at the
+// nodes of the order-5 element (GLL points of ξ, s = 5 (ξ + 1)).
+BOOST_AUTO_TEST_CASE(quadratic_twist_is_beamdyns_fit_at_the_nodes) {
+    const Model model = load_case(driver("quadratic-twist"));
+    const ReferenceGeometry g(model, 0);
+    BOOST_REQUIRE(std::abs(g.length() - 10.0) < 1e-12);
+    const double deg = std::numbers::pi / 180.0;
+    const double x0 = -1.0, x1 = -0.4, x2 = 1.0;
+    const double y0 = 0.0, y1 = -20.0 * deg, y2 = -30.0 * deg;
+    auto theta = [&](double x) {
+        return y0 * (x - x1) * (x - x2) / ((x0 - x1) * (x0 - x2)) +
+               y1 * (x - x0) * (x - x2) / ((x1 - x0) * (x1 - x2)) +
+               y2 * (x - x0) * (x - x1) / ((x2 - x0) * (x2 - x1));
+    };
+    auto dtheta_dxi = [&](double x) {
+        return y0 * (2.0 * x - x1 - x2) / ((x0 - x1) * (x0 - x2)) +
+               y1 * (2.0 * x - x0 - x2) / ((x1 - x0) * (x1 - x2)) +
+               y2 * (2.0 * x - x0 - x1) / ((x2 - x0) * (x2 - x1));
+    };
+    // GLL points of order 5: ±1, ±√(1/3 + 2√7/21), ±√(1/3 − 2√7/21).
+    const double a = std::sqrt(1.0 / 3.0 + 2.0 * std::sqrt(7.0) / 21.0);
+    const double b = std::sqrt(1.0 / 3.0 - 2.0 * std::sqrt(7.0) / 21.0);
+    for (const double xi : {-1.0, -a, -b, b, a, 1.0}) {
+        const double s = 5.0 * (xi + 1.0);
+        BOOST_TEST_CONTEXT("xi = " << xi) {
+            // Tolerances: a degree-2 polynomial through a least-squares solve and a barycentric
+            // Lagrange evaluation of order ≤ 7: round-off, 1e-13 rad (rad/m).
+            BOOST_TEST(std::abs(g.twist(s) - theta(xi)) < 1e-13);
+            BOOST_TEST(std::abs(g.curvature(s)(0) - dtheta_dxi(xi) / 5.0) < 1e-13);
+            // BeamDyn's frame: x̂ turned about the axis z by the fitted twist.
+            const Vec3 e2 = g.frame(s).col(1);
+            BOOST_TEST((e2 - Vec3(std::cos(theta(xi)), std::sin(theta(xi)), 0.0)).norm() < 1e-13);
+        }
+    }
+}
+
+// Twist turns the section about the beam axis; the cantilever's section is isotropic about it
+// (EI₂ = EI₃, k₂GA = k₃GA, M₂₂ = M₃₃), so the twisted deck under the same gravity must bend as
+// the untwisted cantilever deck: the twist then only relabels the section axes.
+BOOST_AUTO_TEST_CASE(twist_leaves_an_isotropic_cantilever_unchanged) {
+    for (const comb::Combination& c : comb::all_combinations(false)) {
+        const std::vector<std::string> o = combination_overrides(c, 32);
+        const Tip twisted = tip_of(run(load_case(driver("quadratic-twist"), o)));
+        const Tip plain = tip_of(run(load_case(driver("bd_static_cantilever_beam"), o)));
+        BOOST_TEST_CONTEXT(c.label() << " twisted " << twisted.u.transpose() << " plain "
+                                     << plain.u.transpose()) {
+            BOOST_TEST(solved(twisted.status));
+            // Tolerance: the section stiffness and mass, rotated into the global frame, are the
+            // same at every point with or without the twist, so the discrete equations agree to
+            // round-off; each solve stops at corrections of 1e-12 (docs/solver-convergence.md).
+            // Measured: 4e-16 of |u| (displacement and mixed).
+            BOOST_TEST((twisted.u - plain.u).norm() < 1e-11 * plain.u.norm());
+        }
+    }
+}
+
 // `rotbeam import beamdyn` writes the text that `rotbeam run DRIVER.inp` loads: the written case,
 // loaded as a file of its own, describes the same model.
 BOOST_AUTO_TEST_CASE(imported_text_is_the_case_that_runs) {
