@@ -16,7 +16,7 @@ endif()
 set(text "// Generated at build time by cmake/GitDescribe.cmake: the commit this build was made from.
 #include \"core/version.hpp\"
 namespace rotbeam {
-const char kGitDescribe[] = \"${describe}\";
+const char* const kGitDescribe = \"${describe}\";
 }  // namespace rotbeam
 ")
 set(old "")
