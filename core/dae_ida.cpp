@@ -204,7 +204,8 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     const long outputs = std::lround((s.end_time - s.start_time) / interval);
     long iterations_before = 0;
     for (long k = 1; k <= outputs; ++k) {
-        const double tout = k == outputs ? s.end_time : s.start_time + k * interval;
+        const double tout =
+            k == outputs ? s.end_time : s.start_time + static_cast<double>(k) * interval;
         double tret = outcome.last_time;
         check_time_limit("at time", tret);
         const int flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);

@@ -14,6 +14,10 @@ checks="-*,bugprone-*,$(grep -o -E -- '-bugprone-[a-z-]+' .clang-tidy | paste -s
 if [ ! -f build/release/compile_commands.json ]; then
   cmake --preset release >/dev/null
 fi
+# One compile command per source file, also when the tree is a unity build (CI's: a unity source
+# stands for several files there): build/release/tidy/compile_commands.json.
+python3 scripts/tidy_compile_db.py build/release
+db=build/release/tidy
 
 files=()
 if [ $# -ge 1 ]; then
@@ -36,7 +40,7 @@ if [ $# -ge 1 ]; then
   # flags and reports missing definitions. The fuzz targets (tests/fuzz) are built only by the
   # clang trees (asan, fuzz), so they are left out here, by name.
   mapfile -t known < <(python3 -c 'import json
-for e in json.load(open("build/release/compile_commands.json")): print(e["file"])' | sort -u)
+for e in json.load(open("build/release/tidy/compile_commands.json")): print(e["file"])' | sort -u)
   mapfile -t skipped < <(comm -23 <(printf '%s\n' "${files[@]}") <(printf '%s\n' "${known[@]}"))
   mapfile -t files < <(comm -12 <(printf '%s\n' "${files[@]}") <(printf '%s\n' "${known[@]}"))
   for f in "${skipped[@]}"; do echo "tidy: not in the Release build, left out: ${f#"$root"/}"; done
@@ -46,7 +50,7 @@ for e in json.load(open("build/release/compile_commands.json")): print(e["file"]
   fi
 else
   mapfile -t files < <(python3 -c 'import json,sys
-for e in json.load(open("build/release/compile_commands.json")): print(e["file"])' | sort -u)
+for e in json.load(open("build/release/tidy/compile_commands.json")): print(e["file"])' | sort -u)
 fi
 
 echo "tidy: ${#files[@]} files, checks $checks"
@@ -55,7 +59,7 @@ start=$(date +%s)
 # -warnings-as-errors); --warnings-as-errors makes a finding fail it, and xargs then exits 123.
 set +e
 printf '%s\n' "${files[@]}" |
-  xargs -P "$(nproc)" -n 1 clang-tidy -p build/release --quiet -checks="$checks" \
+  xargs -P "$(nproc)" -n 1 clang-tidy -p "$db" --quiet -checks="$checks" \
     --warnings-as-errors='*' \
     --header-filter="^$root/(core|parameterizations|formulations|combinations|cases|estimates|runs|studies|benches|reports|tests)/" 2>&1 |
   grep -v -E '^[0-9]+ warnings? (and [0-9]+ errors? )?generated\.$|^Suppressed [0-9]+ warnings|^Use -header-filter'

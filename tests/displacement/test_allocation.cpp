@@ -16,10 +16,11 @@
 #include "tests/harness/type_lists.hpp"
 
 // Eigen allocates with std::malloc, not operator new, so malloc itself is interposed (the
-// executable's definition wins over glibc's; __libc_malloc is glibc's implementation).
-extern "C" void* __libc_malloc(std::size_t);
-extern "C" void* __libc_calloc(std::size_t, std::size_t);
-extern "C" void* __libc_realloc(void*, std::size_t);
+// executable's definition wins over glibc's; __libc_malloc is glibc's implementation). The
+// reserved names are glibc's own exported symbols, declared here because no header declares them.
+extern "C" void* __libc_malloc(std::size_t);               // NOLINT(bugprone-reserved-identifier)
+extern "C" void* __libc_calloc(std::size_t, std::size_t);  // NOLINT(bugprone-reserved-identifier)
+extern "C" void* __libc_realloc(void*, std::size_t);       // NOLINT(bugprone-reserved-identifier)
 namespace {
 long g_allocations = 0;
 }

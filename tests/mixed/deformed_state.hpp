@@ -17,7 +17,8 @@ namespace rotbeam::test {
 template <class P>
 VecX deformed_mixed_state(const form::MixedNumbering& nb, double base = 2.1) {
     VecX x(nb.size());
-    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = 0.5 * std::sin(0.37 * i + 0.2);
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+        x[i] = 0.5 * std::sin(0.37 * static_cast<double>(i) + 0.2);
     auto set_rotation = [&](int column, int k) {
         const Vec3 axis = Vec3(std::cos(0.9 * k), std::sin(0.9 * k), 0.5).normalized();
         typename P::P p = P::from_rotation_vector((base + 0.5 * std::sin(1.3 * k)) * axis);
@@ -34,7 +35,8 @@ VecX deformed_mixed_state(const form::MixedNumbering& nb, double base = 2.1) {
 
 inline VecX mixed_rates(Eigen::Index size) {
     VecX xdot(size);
-    for (Eigen::Index i = 0; i < size; ++i) xdot[i] = 0.7 * std::cos(0.53 * i + 0.1);
+    for (Eigen::Index i = 0; i < size; ++i)
+        xdot[i] = 0.7 * std::cos(0.53 * static_cast<double>(i) + 0.1);
     return xdot;
 }
 
