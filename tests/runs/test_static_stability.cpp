@@ -145,4 +145,28 @@ BOOST_AUTO_TEST_CASE(displacement_tangent_loses_definiteness_at_the_euler_load) 
     }
 }
 
+// An imperfect column: P = 1000 N with a lateral 1 N along +z, followed in ten load steps. The
+// discrete path goes through the imperfect column's near-straight equilibria, w ≈ f L³/(3 EI) /
+// (1 − P/P_E) (the amplification of the lateral deflection), which changes sign past P_E: the
+// state reached at 1000 N bends against the lateral force, the unstable branch (the stable
+// post-buckled state bends with it, far from straight). The run reports it `converged`; its
+// tangent must have a negative eigenvalue (the straight state at 1000 N has two; this one is a
+// small perturbation of it, so at least the z direction's stays negative).
+BOOST_AUTO_TEST_CASE(imperfect_column_past_the_euler_load_lands_on_the_unstable_branch) {
+    const Model m =
+        load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/tip-load-cantilever.yaml",
+                  {"loads.tip-force.force=[-1000,0,1]", "discretization.quadrature=reduced",
+                   "analysis.load_factors=[0.1,0.2,0.3,0.4,0.5,0.6,0.7,0.8,0.9,1.0]"},
+                  CaseParts::case_file);
+    std::unique_ptr<StaticProblem> p = make_static_problem(m);
+    const StaticOutcome out = run_static(*p, m.analysis.statics.load_factors, NewtonSettings{}, {});
+    BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
+    const double w = p->point_state(1).displacement.z();
+    const Inertia in = tangent_inertia(*p);
+    std::printf("imperfect column at 1000 N: tip w = %.6e m, %d negative eigenvalues\n", w,
+                in.negative);
+    BOOST_TEST(w < 0.0);
+    BOOST_TEST(in.negative >= 1);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
