@@ -10,7 +10,8 @@
 //    order `max_order` (2 by default: BDF3–5 are not A-stable, their stability regions miss a
 //    part of the left half-plane next to the imaginary axis where the undamped structure's modes
 //    ±iω lie; BDF2 is A-stable, at the price of damping high frequencies);
-//  - the 3-stage Radau IIA method (core/dae_radau.hpp), fixed steps, order 5 on the differential
+//  - the 3-stage Radau IIA method (core/dae_radau.hpp), fixed or adaptive steps, order 5 on the
+//  differential
 //    unknowns of an index-1 system.
 // All three start from consistent initial conditions: given the differential unknowns of X, the
 // algebraic unknowns of X and the differential unknowns of Ẋ are solved from F(t₀, X, Ẋ) = 0 (an
@@ -110,7 +111,8 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
 DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                          const DaeOutput& output);
 
-// The 3-stage Radau IIA method, fixed steps with the step cut (core/dae_radau.hpp).
+// The 3-stage Radau IIA method, fixed or adaptive (s.time_tolerance > 0) steps with the step cut
+// (core/dae_radau.hpp).
 DaeOutcome integrate_radau_iia(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                                const DaeOutput& output);
 

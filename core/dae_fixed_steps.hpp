@@ -4,8 +4,11 @@
 // and the output times do not change. `Run` offers time(), x(), xdot(), iterations(),
 // try_step(t_next, h) (the state unchanged until accept), accept(t_next, h) and cut(h, cuts)
 // (true: retry with h/2; false: the status is set). DaeRun holds what every scheme's run shares.
+// The adaptive loop (run_adaptive_steps) drives the same interface and the run's local error
+// estimate.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -14,6 +17,7 @@
 #include "core/errors.hpp"
 #include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
+#include "core/step_size_control.hpp"
 #include "core/time_limit.hpp"
 
 namespace rotbeam {
@@ -161,6 +165,62 @@ bool run_fixed_steps(Run& run, const DaeSettings& s, const DaeOutput& output) {
         }
         if (output && (n % every == 0 || n == steps))
             output(t, run.x(), run.xdot(), run.iterations());
+    }
+    return true;
+}
+
+// Adaptive steps (core/step_size_control.hpp) shared by the DAE schemes: from `first_step`, each
+// converged attempt's `run.local_error(h)` (scaled; negative when the scheme has no estimate yet:
+// the step is accepted and the next may grow by kMaxGrowth) accepts or rejects it; a Newton
+// failure retries with h/2 (run.cut); steps are shortened to land on the output times. False,
+// with the status set, when the run stops (the cuts exhausted, or a step-size underflow).
+template <class Run>
+bool run_adaptive_steps(Run& run, const DaeSettings& s, const StepSizeControl& control,
+                        double first_step, const DaeOutput& output, DaeOutcome& outcome) {
+    const double every = s.output_interval > 0.0 ? s.output_interval : s.time_step;
+    double next_output = std::min(s.start_time + every, s.end_time);
+    double h = first_step;
+    int cuts = 0;
+    while (run.time() < s.end_time) {
+        check_time_limit("at time", run.time());
+        const double t = run.time();
+        const bool lands = t + h >= next_output - 1e-9 * h;
+        const double hs = lands ? next_output - t : h;
+        const double to = lands ? next_output : t + hs;
+        if (control.underflow(hs)) {
+            std::ostringstream m;
+            m << "step size underflow at t = " << t << ": step " << hs << " below "
+              << StepSizeControl::kMinStep << " of the window (" << outcome.control.rejected_steps
+              << " steps rejected by the error test)";
+            run.fail(SolveStatus::diverged, m.str());
+            return false;
+        }
+        if (!run.try_step(to, hs)) {
+            if (!run.cut(hs, cuts)) return false;
+            ++cuts;
+            h = 0.5 * hs;
+            continue;
+        }
+        cuts = 0;
+        const double error = run.local_error(hs);
+        double grown = StepSizeControl::kMaxGrowth * hs;  // no estimate yet
+        if (error >= 0.0) {
+            const double r = control.ratio(error, hs);
+            if (r > 1.0) {
+                ++outcome.control.rejected_steps;
+                h = control.next(hs, r);
+                continue;
+            }
+            grown = control.next(hs, r);
+        }
+        // A step shortened to land on an output says nothing against the step before it.
+        h = lands && grown >= hs ? std::max(h, grown) : grown;
+        run.accept(to, hs);
+        if (lands) {
+            if (output) output(run.time(), run.x(), run.xdot(), run.iterations());
+            next_output = std::min(next_output + every, s.end_time);
+            if (s.end_time - run.time() <= 1e-9 * every) break;
+        }
     }
     return true;
 }

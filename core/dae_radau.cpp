@@ -39,7 +39,28 @@ struct RadauTableau {
     Eigen::Matrix3cd S, S_inv;
     double gamma = 0.0;  // the real eigenvalue of W
     Complex mu;          // the pair's representative α + iβ
+    Eigen::Vector3d d;   // the embedded error estimate's weights on Z_i (radau_error_weights)
 };
+
+// The embedded estimate (HW II §IV.8, Eq. (8.19)–(8.20)): with γ0 = 1/γ, the method
+// ŷ1 = y0 + h (γ0 f(y0) + Σ b̂_i f(Y_i)) of order 3 on the nodes (0, c) has
+// ŷ1 − y1 = γ0 h f(y0) + Σ e_i Z_i with e = Wᵀ (b̂ − b), since h f(Y_i) = Σ_j w_ij Z_j. Returned
+// as d = γ e, the weights of the estimate divided by γ0 h (HW's code RADAU5 writes them
+// −(13 + 7√6)/3, (−13 + 7√6)/3, −1/3; checked against these).
+Eigen::Vector3d radau_error_weights(const RadauTableau& t) {
+    Eigen::Matrix3d V;
+    V.row(0).setOnes();
+    V.row(1) = t.c.transpose();
+    V.row(2) = t.c.cwiseAbs2().transpose();
+    const Eigen::Vector3d b_hat =
+        V.partialPivLu().solve(Eigen::Vector3d(1.0 - 1.0 / t.gamma, 0.5, 1.0 / 3.0));
+    const Eigen::Vector3d d = t.gamma * (t.W.transpose() * (b_hat - t.A.row(2).transpose()));
+    const double r = std::sqrt(6.0);
+    const Eigen::Vector3d closed(-(13.0 + 7.0 * r) / 3.0, (-13.0 + 7.0 * r) / 3.0, -1.0 / 3.0);
+    ROTBEAM_VERIFY((d - closed).cwiseAbs().maxCoeff() <= 1e-12 * closed.cwiseAbs().maxCoeff(),
+                   "Radau IIA tableau: embedded error weights differ from their closed form");
+    return d;
+}
 
 RadauTableau radau_tableau() {
     RadauTableau t;
@@ -67,6 +88,7 @@ RadauTableau radau_tableau() {
     const double defect =
         (t.S * lambda.asDiagonal() * t.S_inv - t.W.cast<Complex>()).cwiseAbs().maxCoeff();
     ROTBEAM_VERIFY(defect <= 1e-12 * t.W.cwiseAbs().maxCoeff(), "Radau IIA tableau: W ≠ S Λ S⁻¹");
+    t.d = radau_error_weights(t);
     return t;
 }
 
@@ -97,6 +119,11 @@ class RadauStepper {
     const VecX& state() const { return x1_; }
     const VecX& rate() const { return xd1_; }
     long factorizations() const { return factorizations_; }
+    // After a converged step h from (x_n, ẋ_n) at t: the embedded local error estimate, scaled max
+    // norm with `weight`; filtered a second time when the first exceeds `allowed`
+    // (core/dae_radau.hpp "Adaptive steps").
+    double local_error(double t, double h, const VecX& xn, const VecX& xdn, const VecX& weight,
+                       double allowed);
 
   private:
     NewtonOutcome iterate(double t, double h, const VecX& xn, const VecX& xdn, bool fresh);
@@ -219,6 +246,24 @@ double RadauStepper::correction() {
     return eta;
 }
 
+// err = E_γ⁻¹ ∂F/∂Ẋ (Ẋ_n + Σ_i d_i Z_i / h) (core/dae_radau.hpp "Adaptive steps"), with the
+// step's factored E_γ and its ∂F/∂Ẋ; past `allowed`, err = E_γ⁻¹ (that right side − F(t_n, X_n +
+// err, Ẋ_n)).
+double RadauStepper::local_error(double t, double h, const VecX& xn, const VecX& xdn,
+                                 const VecX& weight, double allowed) {
+    y_ = xdn;
+    for (int i = 0; i < kStages; ++i) y_ += (T_.d(i) / h) * Z_[i];
+    gr_.noalias() = Jxd_ * y_;
+    real_lu_.solve(gr_, xr_);
+    const double first = xr_.cwiseProduct(weight).lpNorm<Eigen::Infinity>();
+    if (first <= allowed) return first;
+    y_ = xn + xr_;
+    dae_.evaluate(t, y_, xdn, r_, nullptr, nullptr);
+    gr_ -= r_;
+    real_lu_.solve(gr_, xr_);
+    return xr_.cwiseProduct(weight).lpNorm<Eigen::Infinity>();
+}
+
 NewtonOutcome RadauStepper::step(double t, double h, const VecX& xn, const VecX& xdn) {
     const bool reuse = h == factored_h_ && rate_ <= kReuseRate;
     NewtonOutcome out = iterate(t, h, xn, xdn, !reuse);
@@ -273,7 +318,8 @@ class RadauRun : public DaeRun {
   public:
     RadauRun(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s, DaeOutcome& outcome)
         : DaeRun(dae, x, xdot, s, outcome, "Radau IIA stage iteration", "stage-iteration"),
-          stepper_(dae, s.newton) {}
+          stepper_(dae, s.newton),
+          weight_(dae.configuration().cwiseQuotient(dae.state_scale())) {}
 
     bool try_step(double t_next, double h) {
         try {
@@ -281,6 +327,10 @@ class RadauRun : public DaeRun {
         } catch (const TimeLimitReached& e) {
             rethrow_with_context(e, "in the step to time", t_next);
         }
+    }
+    double local_error(double h) {
+        return stepper_.local_error(time(), h, x_, xdot_, weight_,
+                                    s_.time_tolerance * h / (s_.end_time - s_.start_time));
     }
     void accept(double t_next, double h) {
         stepper_.remember(h);
@@ -291,14 +341,23 @@ class RadauRun : public DaeRun {
     void finish() {
         outcome_.factorizations = stepper_.factorizations();
         std::ostringstream m;
-        m << "fixed-step Radau IIA (3 stages), "
-          << std::lround((s_.end_time - s_.start_time) / s_.time_step) << " steps, "
-          << outcome_.newton_iterations << " stage iterations";
+        if (s_.time_tolerance > 0.0) {
+            m.precision(3);
+            m << "adaptive Radau IIA (3 stages), " << outcome_.steps << " steps, tolerance "
+              << s_.time_tolerance << ", steps " << outcome_.control.smallest_step << " … "
+              << outcome_.control.largest_step << ", " << outcome_.control.rejected_steps
+              << " rejected, ";
+        } else {
+            m << "fixed-step Radau IIA (3 stages), "
+              << std::lround((s_.end_time - s_.start_time) / s_.time_step) << " steps, ";
+        }
+        m << outcome_.newton_iterations << " stage iterations";
         DaeRun::finish(m.str(), "steps");
     }
 
   private:
     RadauStepper stepper_;
+    VecX weight_;  // the configuration unknowns over their state scales; 0 on the others
 };
 
 }  // namespace
@@ -311,7 +370,13 @@ DaeOutcome integrate_radau_iia(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSet
     RadauRun run(dae, x, xdot, s, outcome);
     run.add_initial(ic);
     run.start(s.start_time);
-    if (!run_fixed_steps(run, s, output)) return outcome;
+    if (s.time_tolerance > 0.0) {
+        // The embedded estimate is O(h^4) (order 3): the local error exponent q = 4.
+        const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time, 4};
+        if (!run_adaptive_steps(run, s, control, s.time_step, output, outcome)) return outcome;
+    } else if (!run_fixed_steps(run, s, output)) {
+        return outcome;
+    }
     run.finish();
     return outcome;
 }

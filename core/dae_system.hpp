@@ -35,6 +35,10 @@ class DaeSystem {
     // After consistent initial conditions: sets the rates of directions F does not see (the
     // quaternion's radial rate) to their natural value. Nothing for most systems.
     virtual void complete_initial_rates(const VecX& /*x*/, VecX& /*xdot*/) const {}
+    // 1 on the unknowns that describe the configuration (positions and rotation parameters), 0
+    // elsewhere: what an error tolerance on the configuration measures. All differential unknowns
+    // unless the system says otherwise.
+    virtual const VecX& configuration() const { return differential(); }
     // Characteristic magnitudes of the residual rows and of the unknowns (O(1) after division).
     virtual const VecX& residual_scale() const = 0;
     virtual const VecX& state_scale() const = 0;

@@ -211,83 +211,42 @@ class TrapezoidalRun : public DaeRun {
         x_ = step_.state();
         xdot_ = step_.rate();
         accepted(t_next, h);
+        if (adaptive_) {
+            accel_before_ = accel_;
+            h_before_ = h;
+        }
     }
     void finish(const std::string& what) { DaeRun::finish(what, "solves"); }
+
+    // Adaptive steps (core/step_size_control.hpp). The trapezoidal rule's local error is
+    // −h³/12 X⃛ (Hairer, Nørsett & Wanner I, §II.7); X⃛ is estimated on the differential unknowns
+    // from the rates of three consecutive states, X¨_{n+1/2} = (Ẋ_{n+1} − Ẋ_n)/h_n and
+    // X⃛ ≈ 2 (X¨_{n+1/2} − X¨_{n−1/2}) / (h_n + h_{n−1}), each unknown divided by its state scale.
+    // The first step has no X¨_{n−1/2} (returns −1: no estimate); it is taken at kFirstStep of the
+    // case's Δt (its error, ∝ h³, is then 1e-9 of a full step's) and the control grows the step
+    // from there (at most 2× per step).
+    static constexpr double kFirstStep = 1e-3;
+    double local_error(double h) {
+        if (!adaptive_) {
+            weight_ = dae_.differential().cwiseQuotient(dae_.state_scale());
+            adaptive_ = true;
+        }
+        accel_ = (step_.rate() - xdot_) / h;
+        if (accel_before_.size() == 0) return -1.0;
+        return h * h * h / 12.0 *
+               (2.0 * (accel_ - accel_before_) / (h + h_before_))
+                   .cwiseProduct(weight_)
+                   .lpNorm<Eigen::Infinity>();
+    }
 
   private:
     TrapezoidalStep step_;
     NewtonWorkspace workspace_;
     bool scaled_ = false;
+    bool adaptive_ = false;
+    VecX weight_, accel_, accel_before_;  // X¨_{n−1/2}: empty before the first step
+    double h_before_ = 0.0;
 };
-
-}  // namespace
-
-namespace {
-
-// Adaptive steps (core/step_size_control.hpp). The trapezoidal rule's local error is
-// −h³/12 X⃛ (Hairer, Nørsett & Wanner I, §II.7); X⃛ is estimated on the differential unknowns from
-// the rates of three consecutive states, X¨_{n+1/2} = (Ẋ_{n+1} − Ẋ_n)/h_n and
-// X⃛ ≈ 2 (X¨_{n+1/2} − X¨_{n−1/2}) / (h_n + h_{n−1}), each unknown divided by its state scale. The
-// first step has no X¨_{n−1/2}: it is taken at 1e-3 of the case's Δt (its error, ∝ h³, is then
-// 1e-9 of a full step's) and the control grows the step from there (at most 2× per step).
-bool run_adaptive(TrapezoidalRun& run, DaeSystem& dae, const DaeSettings& s,
-                  const DaeOutput& output, DaeOutcome& outcome) {
-    constexpr double kFirstStep = 1e-3;
-    const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time};
-    const double every = s.output_interval > 0.0 ? s.output_interval : s.time_step;
-    const VecX weight = dae.differential().cwiseQuotient(dae.state_scale());
-    double next_output = std::min(s.start_time + every, s.end_time);
-    double h = kFirstStep * s.time_step;
-    VecX accel_before;  // X¨_{n−1/2}, empty before the first step
-    double h_before = 0.0;
-    int cuts = 0;
-    while (run.time() < s.end_time) {
-        check_time_limit("at time", run.time());
-        const double t = run.time();
-        const bool lands = t + h >= next_output - 1e-9 * h;
-        const double hs = lands ? next_output - t : h;
-        const double to = lands ? next_output : t + hs;
-        if (control.underflow(hs)) {
-            std::ostringstream m;
-            m << "step size underflow at t = " << t << ": step " << hs << " below "
-              << StepSizeControl::kMinStep << " of the window (" << outcome.control.rejected_steps
-              << " steps rejected by the error test)";
-            run.fail(SolveStatus::diverged, m.str());
-            return false;
-        }
-        if (!run.try_step(to, hs)) {
-            if (!run.cut(hs, cuts)) return false;
-            ++cuts;
-            h = 0.5 * hs;
-            continue;
-        }
-        cuts = 0;
-        const VecX accel = (run.rate() - run.xdot()) / hs;
-        double grown = StepSizeControl::kMaxGrowth * hs;  // the first step: no estimate yet
-        if (accel_before.size() > 0) {
-            const double third = (2.0 * (accel - accel_before) / (hs + h_before))
-                                     .cwiseProduct(weight)
-                                     .lpNorm<Eigen::Infinity>();
-            const double r = control.ratio(hs * hs * hs / 12.0 * third, hs);
-            if (r > 1.0) {
-                ++outcome.control.rejected_steps;
-                h = control.next(hs, r);
-                continue;
-            }
-            grown = control.next(hs, r);
-        }
-        h = lands && grown >= hs ? std::max(h, grown) : grown;
-        accel_before = accel;
-        h_before = hs;
-        run.accept(to, hs);
-        if (lands) {
-            if (output) output(run.time(), run.x(), run.xdot(), run.iterations());
-            next_output = std::min(next_output + every, s.end_time);
-            if (s.end_time - run.time() <= 1e-9 * every) break;
-        }
-    }
-    return true;
-}
 
 }  // namespace
 
@@ -300,7 +259,11 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     run.add_initial(ic);
     run.start(s.start_time);
     if (s.time_tolerance > 0.0) {
-        if (!run_adaptive(run, dae, s, output, outcome)) return outcome;
+        const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time};
+        if (!run_adaptive_steps(run, s, control, TrapezoidalRun::kFirstStep * s.time_step, output,
+                                outcome)) {
+            return outcome;
+        }
         std::ostringstream m;
         m.precision(3);
         m << "adaptive trapezoidal, " << outcome.steps << " steps, tolerance " << s.time_tolerance

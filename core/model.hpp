@@ -178,11 +178,16 @@ struct DynamicSettings {
     // state scale (IDASVtolerances, docs/mixed-dynamics.md).
     double relative_tolerance = 1e-6;
     double absolute_tolerance = 1e-6;
-    // Adaptive time steps when > 0 (analysis.time_tolerance; not yet verified, see
-    // docs/displacement-dynamics.md "Time step control"): the
-    // tolerance on the global time error of the configuration over the window, translations
-    // relative to the model's reference length, rotations in rad (core/step_size_control.hpp);
-    // IDA takes it as its relative and absolute tolerance. time_step is then the first step.
+    // Adaptive time steps when > 0 (analysis.time_tolerance): the tolerance on the global time
+    // error of the configuration over the window, translations relative to the model's reference
+    // length, rotations in rad (core/step_size_control.hpp). What holds per integrator: the
+    // Gauss-Legendre step doubling is checked against the global error (docs/displacement-
+    // dynamics.md "Time step control"); generalized-alpha's estimate is dominated by unresolved
+    // high modes where the motion excites them (same section, "Measured"); the mixed trapezoidal
+    // scheme has the same caveat; Radau IIA's embedded estimate (core/dae_radau.hpp) gave a
+    // global error below the tolerance on the free vibration at 1e-4 but at a large cost
+    // (docs/mixed-dynamics.md "Radau IIA"); IDA takes it as its relative and absolute tolerance.
+    // time_step is then the first step.
     double time_tolerance = 0.0;
     // A time step whose Newton fails is retried with h/2, at most this many times in a row
     // (analysis.max_step_cuts; 0: off). On by default: a result whose step was cut says so.

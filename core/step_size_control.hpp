@@ -1,6 +1,6 @@
 // Step-size control shared by the adaptive time integrators (generalized-α,
-// core/generalized_alpha.hpp; the trapezoidal DAE scheme, core/dae_driver.hpp), and the step cut
-// on a Newton failure that every fixed-step run has too.
+// core/generalized_alpha.hpp; the trapezoidal DAE scheme, core/dae_driver.hpp; Radau IIA,
+// core/dae_radau.hpp), and the step cut on a Newton failure that every fixed-step run has too.
 //
 // Error per unit step (Hairer, Nørsett & Wanner, "Solving ODEs I", §II.4, and Shampine's
 // "error per unit step"): a step of size h is accepted when its local error estimate e (scaled:

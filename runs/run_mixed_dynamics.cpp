@@ -187,8 +187,8 @@ void track_norm_drift(const form::QuaternionNormDrift& now, form::QuaternionNorm
 
 // The integrator named by analysis.integrator: `trapezoidal` (default; GEBT's fixed-step scheme),
 // `ida` (SUNDIALS IDA, BDF of order ≤ 2, analysis.relative_tolerance and absolute_tolerance,
-// 1e-6 by default, the latter × the state scales) or `radau-iia-3` (fixed steps, order 5 on an
-// index-1 system, core/dae_radau.hpp).
+// 1e-6 by default, the latter × the state scales) or `radau-iia-3` (fixed or adaptive steps, order
+// 5 on an index-1 system, core/dae_radau.hpp).
 Integrator mixed_integrator(const DynamicSettings& d) {
     if (!comb::takes_integrator(Formulation::mixed, d.integrator)) {
         throw InputError("analysis.integrator: unknown integrator '" +

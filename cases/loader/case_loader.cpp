@@ -189,15 +189,6 @@ void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& 
                "the " + std::string(choice_name(f)) + " formulation integrates with " +
                    comb::integrator_names(f) + ", not '" + std::string(choice_name(asked)) + "'");
     }
-    // Adaptive steps exist for generalized-alpha, the Gauss-Legendre schemes, the trapezoidal
-    // scheme and IDA (core/step_size_control.hpp); Radau IIA takes fixed steps only.
-    if (asked == Integrator::radau_iia_3 && model.analysis.dynamics.time_tolerance > 0.0) {
-        const bool from_accuracy = !root["analysis"]["time_tolerance"];
-        const char* key = from_accuracy ? "accuracy" : "time_tolerance";
-        r.fail(root["analysis"][key], std::string("analysis.") + key,
-               "not available with analysis.integrator: " + std::string(choice_name(asked)) +
-                   " (fixed steps only)");
-    }
 }
 
 // The displacement formulation's `midpoint` mass rule samples the inertia at one point per

@@ -70,6 +70,7 @@ class MixedDynamics : public DaeSystem {
                   SparseMatrix* J_xdot) override;
     const SparseMatrix& pattern() const override { return pattern_; }
     const VecX& differential() const override { return differential_; }
+    const VecX& configuration() const override { return configuration_; }
     VecX initial_condition_differential(const VecX& x) const override;
     void complete_initial_rates(const VecX& x, VecX& xdot) const override;
     const VecX& residual_scale() const override { return residual_scale_; }
@@ -132,6 +133,7 @@ class MixedDynamics : public DaeSystem {
     std::vector<Mat6> mass_inverse_;
     SparseMatrix pattern_;
     VecX differential_;
+    VecX configuration_;  // u, c of every element
     VecX residual_scale_;
     VecX state_scale_;
     VecX increment_scale_;

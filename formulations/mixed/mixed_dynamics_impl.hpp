@@ -58,6 +58,10 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
         differential_.segment<3 + K>(c + numbering_.u()).setOnes();  // u, c (all K components)
         differential_.segment<6>(c + numbering_.P()).setOnes();      // P, H
     }
+    configuration_ = differential_;
+    for (int e = 0; e < element_count(); ++e) {
+        configuration_.segment<6>(element_column(e) + numbering_.P()).setZero();
+    }
     build_scales(time_scale, masses.mass_scale, masses.inertia_scale);
 }
 
