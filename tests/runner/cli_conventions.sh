@@ -2,7 +2,7 @@
 # The conventions a user expects of the command line: --version names the dependencies' versions;
 # every option of every command (as the completion script offers it, generated from the same
 # tables the parser reads) is accepted by the parser and listed by the command's --help with its
-# default; the completion script completes `rotbeam r` and `rotbeam run --f`; every JSON result
+# default; the completion script completes `rotbeam r` and `rotbeam run --fo`; every JSON result
 # has the schema version, verify's table included. Usage: cli_conventions.sh ROTBEAM COMPLETION_SCRIPT
 set -u
 rotbeam=$1
@@ -27,8 +27,8 @@ complete_words() {
 }
 [ "$(complete_words rotbeam r)" = "reference run" ] ||
     fail "rotbeam r completes to '$(complete_words rotbeam r)'"
-[ "$(complete_words rotbeam run --f)" = "--formulation" ] ||
-    fail "rotbeam run --f completes to '$(complete_words rotbeam run --f)'"
+[ "$(complete_words rotbeam run --fo)" = "--formulation" ] ||
+    fail "rotbeam run --fo completes to '$(complete_words rotbeam run --fo)'"
 
 commands=$(complete_words rotbeam "")
 for command in $commands; do
@@ -58,9 +58,9 @@ grep -q "\"schema_version\": $schema," "$work/r.json" || fail "run --json: no sc
 import json, sys
 table = json.load(open(sys.argv[1]))
 assert table["schema_version"] == int(sys.argv[2]), table.get("schema_version")
-assert table["rows"] and all("verdict" in r for r in table["rows"]), "no rows"
+assert table["rows"] and all("result" in r for r in table["rows"]), "no rows"
 s = table["summary"]
-assert s["gated_pairs"] == sum(r["verdict"] in ("pass", "FAIL") and r["quantity"] != "stop"
+assert s["gated_pairs"] == sum(r["result"] in ("pass", "FAIL") and r["quantity"] != "stop"
                                for r in table["rows"]), s
 PY
 exit $((failures > 0))
