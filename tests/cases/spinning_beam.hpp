@@ -3,7 +3,9 @@
 // (without the error estimate: the tests compare with closed forms), and what counts as solved.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "cases/loader/case_loader.hpp"
+#include "core/so3.hpp"
 #include "core/types.hpp"
 #include "runs/run_case.hpp"
 
@@ -83,6 +86,33 @@ inline nlohmann::json run_spinning_case(const std::string& text,
 inline bool solved(const nlohmann::json& r) {
     const std::string s = r["status"].get<std::string>();
     return s == "converged" || s == "stalled-at-round-off";
+}
+
+inline Vec3 json_vec3(const nlohmann::json& j) {
+    return Vec3(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+}
+
+// How far a run of the beam turning at Ω about z through (−R0, 0, 0) departs from a steady
+// spinning state whose tip displacement relative to the frame is `steady`: the largest distance
+// of the relative tip displacement from it, and of the inertial tip displacement from that state
+// turned by exp(t Ω ẑ) about the centre (the tip of the unit beam is at X = (1, 0, 0)).
+struct SpinningDeparture {
+    double relative = 0.0;
+    double inertial = 0.0;
+};
+inline SpinningDeparture departure_from_steady_spin(const nlohmann::json& r, const Vec3& steady,
+                                                    double Omega, double R0) {
+    SpinningDeparture d;
+    const Vec3 X(1, 0, 0), c(-R0, 0, 0);
+    for (const nlohmann::json& step : r["steps"]) {
+        const double t = step["time"].get<double>();
+        const Vec3 u = json_vec3(step["rotating_frame"]["points"]["tip"]["displacement"]);
+        d.relative = std::max(d.relative, (u - steady).norm());
+        const Vec3 expected = c + so3::exp_map(Vec3(0, 0, Omega * t)) * (X + steady - c) - X;
+        const Vec3 ui = json_vec3(step["points"]["tip"]["displacement"]);
+        d.inertial = std::max(d.inertial, (ui - expected).norm());
+    }
+    return d;
 }
 
 }  // namespace rotbeam::test

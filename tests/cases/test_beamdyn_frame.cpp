@@ -13,6 +13,7 @@
 #include "cases/loader/case_loader.hpp"
 #include "runs/beamdyn_frame.hpp"
 #include "runs/run_case.hpp"
+#include "tests/cases/beamdyn_output.hpp"
 
 using namespace rotbeam;
 
@@ -20,30 +21,6 @@ namespace {
 
 const std::string kDeck =
     std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/beamdyn/bd_isotropic_rollup/";
-
-// The last row of BeamDyn's output, by channel name.
-std::map<std::string, double> last_row(const std::string& file) {
-    std::ifstream in(file);
-    BOOST_REQUIRE(in.good());
-    std::vector<std::string> names;
-    std::vector<double> values;
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream s(line);
-        std::vector<std::string> tokens;
-        for (std::string t; s >> t;) tokens.push_back(t);
-        if (tokens.empty()) continue;
-        if (tokens[0] == "Time") {
-            names = tokens;
-        } else if (!names.empty() && tokens.size() == names.size() && tokens[0] != "(s)") {
-            values.clear();
-            for (const std::string& t : tokens) values.push_back(std::stod(t));
-        }
-    }
-    BOOST_REQUIRE(!values.empty());
-    std::map<std::string, double> row;
-    for (std::size_t i = 0; i < names.size(); ++i) row[names[i]] = values[i];
-    return row;
-}
 
 Mat3 root_dcm(const cases::BeamDynDeck& deck) {
     Mat3 m;
@@ -78,7 +55,7 @@ BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
     request.model = load_case(driver);
     nlohmann::json r = run_case(request);
     add_beamdyn_frame(root_dcm(cases::read_beamdyn_deck(driver)), r);
-    const auto bd = last_row(kDeck + "bd_driver.out");
+    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
     const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
     const char* axes[] = {"xr", "yr", "zr"};
     for (int i = 0; i < 3; ++i) {

@@ -20,6 +20,7 @@
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "runs/run_case.hpp"
+#include "tests/cases/beamdyn_output.hpp"
 
 using namespace rotbeam;
 
@@ -30,30 +31,6 @@ const char* const kStaticDecks[] = {"bd_static_cantilever_beam", "bd_static_twis
                                     "bd_isotropic_rollup", "bd_curved_beam"};
 
 std::string driver(const std::string& deck) { return kDecks + deck + "/bd_driver.inp"; }
-
-// The last row of a BeamDyn output file, by channel name.
-std::map<std::string, double> last_output_row(const std::string& deck) {
-    std::ifstream in(kDecks + deck + "/bd_driver.out");
-    BOOST_REQUIRE(in.good());
-    std::vector<std::string> names;
-    std::vector<double> values;
-    for (std::string line; std::getline(in, line);) {
-        std::istringstream s(line);
-        std::vector<std::string> tokens;
-        for (std::string t; s >> t;) tokens.push_back(t);
-        if (tokens.empty()) continue;
-        if (tokens[0] == "Time") {
-            names = tokens;
-        } else if (!names.empty() && tokens.size() == names.size() && tokens[0] != "(s)") {
-            values.clear();
-            for (const std::string& t : tokens) values.push_back(std::stod(t));
-        }
-    }
-    BOOST_REQUIRE(!values.empty());
-    std::map<std::string, double> row;
-    for (size_t i = 0; i < names.size(); ++i) row[names[i]] = values[i];
-    return row;
-}
 
 struct Tip {
     Vec3 u = Vec3::Zero();
@@ -273,7 +250,7 @@ BOOST_AUTO_TEST_CASE(rollup_equals_the_exact_arc_in_every_combination) {
 // rounding, half a unit of the last digit (5e-9), is the whole tolerance. rotbeam runs BeamDyn's
 // discretization; its own discretization and algebraic errors are below 1e-12 (previous test).
 BOOST_AUTO_TEST_CASE(rollup_agrees_with_beamdyn_to_its_printed_digits) {
-    const auto bd = last_output_row("bd_isotropic_rollup");
+    const auto bd = test::last_output_row(kDecks + "bd_isotropic_rollup/bd_driver.out");
     const Tip t = tip_of(run(load_case(driver("bd_isotropic_rollup"))));
     const Vec3 bd_u(bd.at("TipTDxr"), bd.at("TipTDyr"), bd.at("TipTDzr"));
     const Vec3 bd_wm(bd.at("TipRDxr"), bd.at("TipRDyr"), bd.at("TipRDzr"));
@@ -296,7 +273,7 @@ BOOST_AUTO_TEST_CASE(rollup_agrees_with_beamdyn_to_its_printed_digits) {
 // - the current construction's answer is printed next to it with its estimate: it differs from
 //   the 2019 output by about 0.26 m in x (2 %), the change of geometry (the fit is 0.03 % longer).
 BOOST_AUTO_TEST_CASE(curved_beam_against_the_beamdyn_output) {
-    const auto bd = last_output_row("bd_curved_beam");
+    const auto bd = test::last_output_row(kDecks + "bd_curved_beam/bd_driver.out");
     const Vec3 bd_u(bd.at("TipTDxr"), bd.at("TipTDyr"), bd.at("TipTDzr"));
     // The 2019 reference line: natural cubic spline x(z) through the key points (z, x):
     // (0, 0), (38.2683, 7.61205), (70.7107, 29.2893); second derivative M at the middle.

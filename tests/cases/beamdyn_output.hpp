@@ -1,0 +1,40 @@
+// Reading BeamDyn's driver output (bd_driver.out, shipped with the decks in tests/data/beamdyn):
+// the tests compare rotbeam with the last row BeamDyn printed.
+#pragma once
+
+#include <boost/test/unit_test.hpp>
+#include <cstddef>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace rotbeam::test {
+
+// The last row of a BeamDyn output file, by channel name (the header row starts with "Time", the
+// units row with "(s)").
+inline std::map<std::string, double> last_output_row(const std::string& file) {
+    std::ifstream in(file);
+    BOOST_REQUIRE_MESSAGE(in.good(), "cannot read " << file);
+    std::vector<std::string> names;
+    std::vector<double> values;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream s(line);
+        std::vector<std::string> tokens;
+        for (std::string t; s >> t;) tokens.push_back(t);
+        if (tokens.empty()) continue;
+        if (tokens[0] == "Time") {
+            names = tokens;
+        } else if (!names.empty() && tokens.size() == names.size() && tokens[0] != "(s)") {
+            values.clear();
+            for (const std::string& t : tokens) values.push_back(std::stod(t));
+        }
+    }
+    BOOST_REQUIRE(!values.empty());
+    std::map<std::string, double> row;
+    for (std::size_t i = 0; i < names.size(); ++i) row[names[i]] = values[i];
+    return row;
+}
+
+}  // namespace rotbeam::test
