@@ -115,4 +115,30 @@ inline SpinningDeparture departure_from_steady_spin(const nlohmann::json& r, con
     return d;
 }
 
+// How far a run departs from the rigid rotation about the axis Ω through `center` (the tip of the
+// unit beam, X = (1, 0, 0), at center + exp(t Ω̃)(X − center), its section turned by exp(t Ω̃)):
+// the largest tip position error and the largest |R − exp(t Ω̃)| (Frobenius) over the outputs.
+struct RigidRotationDeparture {
+    double position = 0.0;
+    double rotation = 0.0;
+};
+inline RigidRotationDeparture departure_from_rigid_rotation(const nlohmann::json& r,
+                                                            const Vec3& Omega, const Vec3& center) {
+    RigidRotationDeparture d;
+    const Vec3 X(1, 0, 0);
+    for (const nlohmann::json& step : r["steps"]) {
+        const Mat3 Q = so3::exp_map(step["time"].get<double>() * Omega);
+        const Vec3 u = json_vec3(step["points"]["tip"]["displacement"]);
+        d.position = std::max(d.position, (u - (center + Q * (X - center) - X)).norm());
+        Mat3 R;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                R(i, j) = step["points"]["tip"]["rotation_matrix"][i][j].get<double>();
+            }
+        }
+        d.rotation = std::max(d.rotation, (R - Q).norm());
+    }
+    return d;
+}
+
 }  // namespace rotbeam::test

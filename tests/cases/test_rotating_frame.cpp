@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "cases/loader/case_loader.hpp"
 #include "combinations/registry.hpp"
@@ -97,6 +98,19 @@ double ritz_first(double EI, double Omega, double R0, bool in_plane, int n) {
     }
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
     return std::sqrt(es.eigenvalues()[0]);
+}
+
+// The lowest flap (out of plane: tip z) and lag (in plane: tip y) angular frequencies of a modal
+// result, each mode sorted by its larger tip component.
+std::pair<double, double> lowest_flap_and_lag(const nlohmann::json& r) {
+    double flap = 0.0, lag = 0.0;
+    for (const auto& m : r["modes"]) {
+        const auto& d = m["points"]["tip"]["displacement"];
+        const double w = 2.0 * std::numbers::pi * m["frequency_hz"].get<double>();
+        double& slot = std::abs(d[2].get<double>()) > std::abs(d[1].get<double>()) ? flap : lag;
+        if (slot == 0.0) slot = w;  // the lowest of each family
+    }
+    return {flap, lag};
 }
 
 }  // namespace
@@ -192,15 +206,7 @@ BOOST_AUTO_TEST_CASE(flap_and_lag_frequencies_match_the_rotating_beam_reference)
                 BOOST_REQUIRE(solved(r));
                 const double flap = ritz_first(1.0, Omega, R0, false, 14);
                 const double lag = ritz_first(4.0, Omega, R0, true, 14);
-                double got_flap = 0.0, got_lag = 0.0;
-                for (const auto& m : r["modes"]) {
-                    const auto& d = m["points"]["tip"]["displacement"];
-                    const double w = 2.0 * std::numbers::pi * m["frequency_hz"].get<double>();
-                    const bool is_flap =
-                        std::abs(d[2].get<double>()) > std::abs(d[1].get<double>());
-                    double& slot = is_flap ? got_flap : got_lag;
-                    if (slot == 0.0) slot = w;  // the lowest of each family
-                }
+                const auto [got_flap, got_lag] = lowest_flap_and_lag(r);
                 BOOST_TEST_MESSAGE("Omega " << Omega << " R0 " << R0 << ": flap "
                                             << std::setprecision(10) << got_flap << " (Ritz "
                                             << flap << "), lag " << got_lag << " (Ritz " << lag
@@ -242,15 +248,7 @@ BOOST_AUTO_TEST_CASE(mixed_flap_and_lag_frequencies_match_the_rotating_beam_refe
                     BOOST_REQUIRE(solved(r));
                     const double flap = ritz_first(1.0, Omega, R0, false, 14);
                     const double lag = ritz_first(4.0, Omega, R0, true, 14);
-                    double got_flap = 0.0, got_lag = 0.0;
-                    for (const auto& m : r["modes"]) {
-                        const auto& d = m["points"]["tip"]["displacement"];
-                        const double w = 2.0 * std::numbers::pi * m["frequency_hz"].get<double>();
-                        const bool is_flap =
-                            std::abs(d[2].get<double>()) > std::abs(d[1].get<double>());
-                        double& slot = is_flap ? got_flap : got_lag;
-                        if (slot == 0.0) slot = w;  // the lowest of each family
-                    }
+                    const auto [got_flap, got_lag] = lowest_flap_and_lag(r);
                     BOOST_TEST_MESSAGE(c.label()
                                        << " Omega " << Omega << " R0 " << R0 << ": flap "
                                        << std::setprecision(10) << got_flap << " (Ritz " << flap
