@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -139,6 +140,16 @@ inline RigidRotationDeparture departure_from_rigid_rotation(const nlohmann::json
         d.rotation = std::max(d.rotation, (R - Q).norm());
     }
     return d;
+}
+
+// The `analysis:` lines of a dynamic run over one turn of the frame turning at Ω, in `steps` time
+// steps with `outputs` output times.
+inline std::string one_turn_analysis(const Vec3& Omega, int steps = 100, int outputs = 10) {
+    const double turn = 2.0 * std::acos(-1.0) / Omega.norm();
+    std::ostringstream a;
+    a << std::setprecision(17) << "  type: dynamic\n  time_step: " << turn / steps
+      << "\n  end_time: " << turn << "\n  output_interval: " << turn / outputs << "\n";
+    return a.str();
 }
 
 }  // namespace rotbeam::test

@@ -111,11 +111,7 @@ BOOST_AUTO_TEST_CASE(released_at_the_spinning_equilibrium_the_beam_stays_there) 
 // missing centrifugal or Coriolis term errs by far more (the tip moves by 2π|X − c| per turn).
 BOOST_AUTO_TEST_CASE(a_stiff_beam_started_in_rigid_rotation_stays_in_it) {
     const Vec3 Omega = Vec3(3, 4, 12) * (6.0 / 13.0), c(0.2, -0.3, 0.1);
-    const double turn = 2.0 * std::acos(-1.0) / Omega.norm();
-    std::ostringstream a;
-    a << std::setprecision(17) << "  type: dynamic\n  time_step: " << turn / 100
-      << "\n  end_time: " << turn << "\n  output_interval: " << turn / 10 << "\n";
-    const std::string text = beam_case(a.str(), Omega, c, 1e9, 1e9, 0.0, 6);
+    const std::string text = beam_case(test::one_turn_analysis(Omega), Omega, c, 1e9, 1e9, 0.0, 6);
     const nlohmann::json s =
         run(beam_case("  type: static\n  load_factors: [1]\n", Omega, c, 1e9, 1e9, 0.0, 6), {});
     BOOST_REQUIRE(solved(s));
