@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cases/loader/case_loader.hpp"
+#include "combinations/registry.hpp"
 #include "core/so3.hpp"
 #include "core/types.hpp"
 #include "runs/run_case.hpp"
@@ -151,5 +152,30 @@ inline std::string one_turn_analysis(const Vec3& Omega, int steps = 100, int out
       << "\n  end_time: " << turn << "\n  output_interval: " << turn / outputs << "\n";
     return a.str();
 }
+
+// The tip of the spinning beam stretched by its centrifugal load, in closed form:
+// EA u″ + m Ω² (R0 + x + u) = 0, u(0) = 0, N(1) = 0 (m = 1, length 1, hub radius R0):
+// u(1) = −(R0 + 1) + C sin k + R0 cos k, k = Ω/√EA.
+inline double stretch_tip(double Omega, double R0, double EA) {
+    const double k = Omega / std::sqrt(EA);
+    const double C = (1.0 + R0 * k * std::sin(k)) / (k * std::cos(k));
+    return -(R0 + 1.0) + C * std::sin(k) + R0 * std::cos(k);
+}
+
+// Every parameterization of `formulation` with each of `integrators`, as --set overrides
+// {discretization.rotation=…, analysis.integrator=…}; `override_label` names one.
+inline std::vector<std::vector<std::string>> dynamic_overrides(
+    Formulation formulation, const std::vector<std::string>& integrators) {
+    std::vector<std::vector<std::string>> out;
+    for (const comb::Combination& c : comb::all_combinations(false)) {
+        if (c.formulation != formulation) continue;
+        for (const std::string& integrator : integrators) {
+            out.push_back({"discretization.rotation=" + c.rotation_name(),
+                           "analysis.integrator=" + integrator});
+        }
+    }
+    return out;
+}
+inline std::string override_label(const std::vector<std::string>& o) { return o[0] + " " + o[1]; }
 
 }  // namespace rotbeam::test

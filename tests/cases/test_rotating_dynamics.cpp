@@ -45,27 +45,13 @@ Vec3 vec(const nlohmann::json& j) { return test::json_vec3(j); }
 
 // Every parameterization of the displacement formulation with each of its integrators.
 std::vector<std::vector<std::string>> every_dynamic_combination() {
-    std::vector<std::vector<std::string>> out;
-    for (const comb::Combination& c : comb::all_combinations(false)) {
-        if (c.formulation != Formulation::displacement) continue;
-        for (const char* integrator :
-             {"generalized-alpha", "gauss-legendre-2", "gauss-legendre-3"}) {
-            out.push_back({"discretization.rotation=" + c.rotation_name(),
-                           std::string("analysis.integrator=") + integrator});
-        }
-    }
-    return out;
+    return test::dynamic_overrides(Formulation::displacement,
+                                   {"generalized-alpha", "gauss-legendre-2", "gauss-legendre-3"});
 }
 
-std::string label(const std::vector<std::string>& o) { return o[0] + " " + o[1]; }
+std::string label(const std::vector<std::string>& o) { return test::override_label(o); }
 
-// The stretched spinning beam of test_rotating_frame.cpp: EA u″ + m Ω² (R0 + x + u) = 0,
-// u(0) = 0, N(1) = 0: u(1) = −(R0 + 1) + C sin k + R0 cos k, k = Ω/√EA.
-double stretch_tip(double Omega, double R0, double EA) {
-    const double k = Omega / std::sqrt(EA);
-    const double C = (1.0 + R0 * k * std::sin(k)) / (k * std::cos(k));
-    return -(R0 + 1.0) + C * std::sin(k) + R0 * std::cos(k);
-}
+using test::stretch_tip;
 
 }  // namespace
 
