@@ -178,4 +178,16 @@ inline std::vector<std::vector<std::string>> dynamic_overrides(
 }
 inline std::string override_label(const std::vector<std::string>& o) { return o[0] + " " + o[1]; }
 
+// The largest departure of a run's Jacobi integral (the energy in the turning frame, conserved
+// without damping) from its first value, relative to the largest strain energy the run reaches.
+inline double jacobi_integral_drift(const nlohmann::json& r) {
+    const double J0 = r["steps"][0]["energy"]["jacobi_integral"].get<double>();
+    double moved = 0.0, drift = 0.0;
+    for (const nlohmann::json& step : r["steps"]) {
+        moved = std::max(moved, step["energy"]["strain"].get<double>());
+        drift = std::max(drift, std::abs(step["energy"]["jacobi_integral"].get<double>() - J0));
+    }
+    return drift / moved;
+}
+
 }  // namespace rotbeam::test
