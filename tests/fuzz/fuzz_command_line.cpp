@@ -59,6 +59,7 @@ const std::map<std::string, CommandSpec>& specs() {
            {"time-limit", "SECONDS", ""},
            {"vtk", "DIR", ""},
            {"estimate", "on|off", ""},
+           {"frame", "rotbeam|beamdyn", ""},
            {"accuracy", "TOL", ""}}}},
         {"reference",
          {"reference",
