@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "core/so3.hpp"
+#include "core/turning_frame_loads.hpp"
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "parameterizations/rotation_vector.hpp"
@@ -17,17 +18,7 @@ template <param::RotationParameterization P>
 DisplacementDynamics<P>::DisplacementDynamics(const Model& model)
     : model_(model), statics_(model), mass_mesh_(build_mass_mesh(model)) {
     if (model.rotating_frame.active()) {
-        // Dead loads are fixed in inertial axes: in the frame's axes they would turn with −Ω.
-        const auto dead = [](LoadFrame f) { return f != LoadFrame::follower; };
-        bool has_dead = !model.load_fields.empty();
-        for (const PointLoad& l : model.point_loads) has_dead = has_dead || dead(l.frame);
-        for (const DistributedLoad& l : model.distributed_loads)
-            has_dead = has_dead || dead(l.frame);
-        if (has_dead) {
-            throw InputError(
-                "rotating_frame: the dynamics with a rotating frame take follower loads and "
-                "gravity only (dead loads and load fields are not turned with the frame)");
-        }
+        refuse_dead_loads_with_turning_root(model);
         spinning_ = true;
         omega_frame_ = model.rotating_frame.angular_velocity;
         center_ = model.rotating_frame.center;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/turning_frame_loads.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_load_fields.hpp"
@@ -29,17 +30,7 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
       numbering_(number_mixed_unknowns(layout_, K, kConstraintRows, true, true)),
       load_time_floor_(load_time_floor) {
     if (model.rotating_frame.active()) {
-        // Dead loads are fixed in inertial axes: in the frame's axes they would turn with −Ω.
-        bool has_dead = !model.load_fields.empty();
-        for (const PointLoad& l : model.point_loads)
-            has_dead = has_dead || l.frame != LoadFrame::follower;
-        for (const DistributedLoad& l : model.distributed_loads)
-            has_dead = has_dead || l.frame != LoadFrame::follower;
-        if (has_dead) {
-            throw InputError(
-                "rotating_frame: the dynamics with a rotating frame take follower loads and "
-                "gravity only (dead loads and load fields are not turned with the frame)");
-        }
+        refuse_dead_loads_with_turning_root(model);
         spinning_ = true;
         omega_frame_ = model.rotating_frame.angular_velocity;
         center_ = model.rotating_frame.center;
