@@ -191,4 +191,27 @@ BOOST_AUTO_TEST_CASE(the_jacobi_integral_is_conserved_without_damping) {
     }
 }
 
+// A dead load is fixed in inertial axes and would turn with −Ω in the frame's axes: with a turning
+// root both formulations refuse it by name (an InputError, exit 2 in the program) rather than
+// turning it silently.
+BOOST_AUTO_TEST_CASE(a_dead_load_with_a_turning_root_is_refused_in_both_formulations) {
+    for (const bool mixed : {false, true}) {
+        test::SpinningBeam b;
+        b.stiffness = {1e6, 1e6, 1e6, 1.0, 1.0, 1.0};
+        b.angular_velocity = Vec3(0, 0, 1);
+        b.order = 2;
+        b.mixed = mixed;
+        const std::string text =
+            test::spinning_beam_case("  type: dynamic\n  time_step: 0.01\n  end_time: 0.02\n", b) +
+            "loads:\n  push: {point: tip, force: [0, 0, 1], frame: dead}\n";
+        BOOST_TEST_CONTEXT((mixed ? "mixed" : "displacement")) {
+            BOOST_CHECK_EXCEPTION(
+                test::run_spinning_case(text), InputError, [](const InputError& e) {
+                    return std::string(e.what()).find("take follower loads and gravity only") !=
+                           std::string::npos;
+                });
+        }
+    }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
