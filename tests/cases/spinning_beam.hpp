@@ -190,4 +190,12 @@ inline double jacobi_integral_drift(const nlohmann::json& r) {
     return drift / moved;
 }
 
+// The `analysis:` lines of a dynamic run with fixed time step h from 0 to `end_time`.
+inline std::string fixed_step_analysis(double h, double end_time) {
+    std::ostringstream a;
+    a << std::setprecision(17) << "  type: dynamic\n  time_step: " << h
+      << "\n  end_time: " << end_time << "\n";
+    return a.str();
+}
+
 }  // namespace rotbeam::test

@@ -225,12 +225,10 @@ BOOST_AUTO_TEST_CASE(the_jacobi_integral_drift_per_integrator) {
         BOOST_TEST_CONTEXT(label(o)) {
             double drift[2] = {0.0, 0.0};
             for (int k = 0; k < 2; ++k) {
-                std::ostringstream a;
-                a << "  type: dynamic\n  time_step: " << (k == 0 ? 0.004 : 0.002)
-                  << "\n  end_time: 1\n";
+                const std::string a = test::fixed_step_analysis(k == 0 ? 0.004 : 0.002, 1.0);
                 const nlohmann::json r = test::run_spinning_case(
                     test::spinning_beam_case(
-                        a.str(), beam(Vec3(0, 0, Omega), Vec3(-R0, 0, 0), EA, 1.0, 16, true)),
+                        a, beam(Vec3(0, 0, Omega), Vec3(-R0, 0, 0), EA, 1.0, 16, true)),
                     o);
                 BOOST_REQUIRE(solved(r));
                 drift[k] = test::jacobi_integral_drift(r);
