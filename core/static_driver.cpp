@@ -319,12 +319,31 @@ std::string failure_message(const char* what, size_t step, double target, double
     return s.str();
 }
 
+// A reported step's one Newton solve at its load factor `target` from the guess the problem holds.
+NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& settings,
+                               const StepSolver& solver, NewtonWorkspace& workspace,
+                               double target) {
+    check_time_limit("before the load step from its initial guess to load factor", target);
+    problem.set_load_factor(target);
+    if (settings.trace) *settings.trace << "load factor " << target << " from its initial guess\n";
+    NewtonOutcome out;
+    try {
+        out = solver ? solver(problem, settings) : solve_newton(problem, settings, workspace);
+    } catch (const TimeLimitReached& e) {
+        rethrow_with_context(e, "in the load step from its initial guess to load factor", target);
+    }
+    if (settings.trace && !out.accepted()) {
+        *settings.trace << "  initial guess refused: " << out.failure << "\n";
+    }
+    return out;
+}
+
 }  // namespace
 
 StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
                          const std::function<void(const StepRecord&)>& on_step,
-                         const StepSolver& solver) {
+                         const StepSolver& solver, const StepGuess& guess) {
     StaticOutcome outcome;
     // One workspace for every load step: the sparse LU's symbolic analysis (and the vectors) are
     // made once per pattern, not once per sub-step.
@@ -345,6 +364,21 @@ StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_
         int successes_since_cut = 0;
         NewtonOutcome last;
         problem.save_state(NonlinearSystem::kStepSlot);
+        if (guess && guess(step)) {
+            last = solve_from_guess(problem, settings, solver, workspace, target);
+            if (last.accepted()) {
+                lambda = target;
+                record.newton_iterations = last.iterations;
+                record.substeps = 1;
+                record.criterion = last.criterion;
+                record.scaled_residual = last.scaled_residual;
+                record.error_bound = last.error_bound;
+                record.round_off_floor = last.round_off_floor;
+            } else {
+                problem.restore_state(NonlinearSystem::kStepSlot);
+                problem.set_load_factor(lambda);
+            }
+        }
         // Relative to the load factors themselves: a tiny load (1e-14 of the case's) is a load.
         while (std::abs(target - lambda) > 1e-14 * std::max(std::abs(target), std::abs(lambda))) {
             const double trial =

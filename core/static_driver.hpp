@@ -13,6 +13,7 @@
 // halvings: the step fails when the sub-step would fall below (initial sub-step) / 2^max_step_cuts.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <iosfwd>
 #include <limits>
@@ -126,11 +127,20 @@ struct StaticOutcome {
     double last_converged_load_factor = 0.0;  // the state the problem is left in
 };
 
+// An initial guess for reported step `step` (a warm start): sets the problem's state to an
+// approximation of the solution at load_factors[step] and returns true, or returns false and
+// leaves the state as it is.
+using StepGuess = std::function<bool(std::size_t step)>;
+
 // Follow the load factors; after each reported step converges, `on_step` is called (the problem is
-// at that state).
+// at that state). With `guess`, a step that has one is first solved by one Newton solve at its
+// load factor from the guess, without sub-steps; the accepted state meets the same tolerances as
+// one reached by load stepping. When that solve fails the step starts again from the last
+// converged state and is stepped as without a guess (its iterations are not counted, as those of
+// a cut sub-step are not).
 StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_factors,
                          const NewtonSettings& settings,
                          const std::function<void(const StepRecord&)>& on_step,
-                         const StepSolver& solver = {});
+                         const StepSolver& solver = {}, const StepGuess& guess = {});
 
 }  // namespace rotbeam

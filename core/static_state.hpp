@@ -4,8 +4,10 @@
 // reports from them, after each reported step.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "core/nodal_field.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/types.hpp"
 
@@ -78,6 +80,17 @@ class StaticState {
 
 // A formulation set up for a static analysis of a model: solved as a StaticSystem, observed as a
 // StaticState.
-class StaticProblem : public StaticSystem, public StaticState {};
+// The warm start (core/nodal_field.hpp) is optional: a formulation without it returns nullopt and
+// false, and its runs start every load step from the last converged state.
+class StaticProblem : public StaticSystem, public StaticState {
+  public:
+    // The current state as a field along the members.
+    virtual std::optional<NodalField> nodal_field() const { return std::nullopt; }
+    // Sets the free nodes' state to `field` (another discretization's solution of the same model)
+    // evaluated at this discretization's nodes; false, the state unchanged, when the field does
+    // not fit (another parameterization or interpolation, a member it does not cover). The
+    // constrained nodes keep their state (set_load_factor sets them).
+    virtual bool start_from(const NodalField& /*field*/) { return false; }
+};
 
 }  // namespace rotbeam

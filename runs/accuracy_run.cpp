@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <tuple>
 #include <vector>
@@ -35,6 +36,10 @@ std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
 // Every run of the controlled case, companions included, by discretization: a refinement that
 // lands on a companion's mesh (the p+1 order, the h/2 or h/4 mesh) takes its result instead of
 // solving it again. Runs that threw (a model the formulation refuses) are not kept.
+//
+// Warm start (docs/accuracy-control.md, "Warm start"): each new static run starts every load step
+// from the state of the last run that solved all of its steps, at the same load factor, evaluated
+// on the new discretization (RunRequest::start). The first run starts from the undeformed beam.
 class RunCache {
   public:
     explicit RunCache(const RunRequest& request) : request_(request) {}
@@ -46,8 +51,16 @@ class RunCache {
             return it->second;
         }
         reused = false;
-        nlohmann::json r = run_case(RunRequest{request_.case_path, model, request_.trace_newton,
-                                               request_.time_limit_seconds});
+        RunRequest request{request_.case_path, model, request_.trace_newton,
+                           request_.time_limit_seconds};
+        auto path = std::make_unique<SolvedPath>();
+        request.start = warm_.get();
+        request.path = path.get();
+        nlohmann::json r = run_case(request);
+        if (has_solution(r.value("status", std::string())) && !path->states.empty() &&
+            path->states.size() == model.analysis.statics.load_factors.size()) {
+            warm_ = std::move(path);
+        }
         runs_[key] = r;
         return r;
     }
@@ -55,6 +68,7 @@ class RunCache {
   private:
     const RunRequest& request_;
     std::map<Key, nlohmann::json> runs_;
+    std::unique_ptr<SolvedPath> warm_;  // the last run that solved every load step
 };
 
 // Accuracy control of a dynamic run, in time only (docs/accuracy-control.md, Dynamics): the loader

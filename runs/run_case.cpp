@@ -88,13 +88,17 @@ std::string kinematics_message(const Model& model, const KinematicStop& stop) {
     return s.str();
 }
 
-void run_static_case(const Model& model, bool trace, nlohmann::json& result) {
+void run_static_case(const RunRequest& request, nlohmann::json& result) {
+    const Model& model = request.model;
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
     result["dofs"] = problem->size();
-    const StaticRecording recording{
-        .steps = true, .convergence = true, .kinematic_check = true, .frames = true};
+    const StaticRecording recording{.steps = true,
+                                    .convergence = true,
+                                    .kinematic_check = true,
+                                    .frames = true,
+                                    .path = request.path};
     const StaticSolve solve = solve_static(model, *problem, model.analysis.statics.load_factors,
-                                           recording, trace, result);
+                                           recording, request.trace_newton, result, request.start);
     result["counters"] = counters_json(problem->counters());
     if (solve.unresolved) {
         result["status"] = kKinematicsUnresolved;
@@ -179,7 +183,7 @@ nlohmann::json run_case(const RunRequest& request) {
         const ScopedTimeLimit limit(request.time_limit_seconds);
         switch (model.analysis.kind) {
             case AnalysisKind::static_:
-                run_static_case(model, request.trace_newton, result);
+                run_static_case(request, result);
                 break;
             case AnalysisKind::dynamic:
                 if (!comb::traits(model.discretization.formulation).dynamics) {

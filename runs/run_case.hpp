@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/model.hpp"
+#include "core/nodal_field.hpp"
 
 namespace rotbeam {
 
@@ -16,6 +17,11 @@ struct RunRequest {
     // Wall-clock limit in seconds (core/time_limit.hpp), 0 = none: past it the run stops with
     // the status `time-limit`.
     double time_limit_seconds = 0.0;
+    // Warm start of a static analysis (core/nodal_field.hpp): `start`, another discretization's
+    // solved path of the same model, gives each load step it holds its initial state; `path`,
+    // when set, receives this run's solved states (the formulations that provide them).
+    const SolvedPath* start = nullptr;
+    SolvedPath* path = nullptr;
 };
 
 // Runs the analysis. Never throws for numerical failure: the status says it (`converged`,

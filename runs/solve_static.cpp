@@ -41,7 +41,7 @@ struct KinematicsUnresolved {
 
 StaticSolve solve_static(const Model& model, StaticProblem& problem,
                          const std::vector<double>& load_factors, const StaticRecording& recording,
-                         bool trace, nlohmann::json& result) {
+                         bool trace, nlohmann::json& result, const SolvedPath* start) {
     NewtonSettings settings = newton_settings_from(model.solver, model.analysis.statics);
     if (trace) settings.trace = &std::cerr;
     StepSolver solver;
@@ -63,6 +63,12 @@ StaticSolve solve_static(const Model& model, StaticProblem& problem,
                 throw KinematicsUnresolved{{index, step.load_factor, *defect}};
             }
         }
+        if (recording.path) {
+            if (std::optional<NodalField> field = problem.nodal_field()) {
+                recording.path->load_factors.push_back(step.load_factor);
+                recording.path->states.push_back(std::move(*field));
+            }
+        }
         if (!recording.steps) return;
         nlohmann::json entry = observe_points(model, problem, step);
         if (recording.convergence) {
@@ -74,8 +80,15 @@ StaticSolve solve_static(const Model& model, StaticProblem& problem,
         result["steps"].push_back(std::move(entry));
         if (recording.frames) record_frames(problem);
     };
+    StepGuess guess;
+    if (start) {
+        guess = [&](std::size_t step) {
+            return step < start->states.size() && start->load_factors[step] == load_factors[step] &&
+                   problem.start_from(start->states[step]);
+        };
+    }
     try {
-        solve.outcome = run_static(problem, load_factors, settings, on_step, solver);
+        solve.outcome = run_static(problem, load_factors, settings, on_step, solver, guess);
     } catch (const KinematicsUnresolved& e) {
         solve.unresolved = e.stop;
     }

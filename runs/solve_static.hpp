@@ -12,6 +12,7 @@
 
 #include "core/kinematic_check.hpp"
 #include "core/model.hpp"
+#include "core/nodal_field.hpp"
 #include "core/static_driver.hpp"
 #include "core/static_state.hpp"
 
@@ -29,6 +30,10 @@ struct StaticRecording {
     // A snapshot of the node frames for the ParaView output, when a recorder is installed
     // (frame_recorder.hpp).
     bool frames = false;
+    // The state as a field along the members (core/nodal_field.hpp), appended to path->states
+    // with its load factor, when set and the formulation provides it: the warm start of another
+    // discretization's run.
+    SolvedPath* path = nullptr;
 };
 
 // The reported step that failed the kinematic check.
@@ -47,8 +52,11 @@ struct StaticSolve {
 // Solves `problem` (built from `model`) along `load_factors` with the model's solver settings
 // (`trace`: one line per Newton iteration on stderr) and appends what `recording` asks for to
 // result["steps"]. Throws InputError for solver.driver: kinsol with a non-additive update.
+// `start`, when given, is another discretization's solved path of the same model: each step whose
+// load factor it holds starts from its state there (StaticProblem::start_from; the driver's
+// StepGuess), the others from the last converged state.
 StaticSolve solve_static(const Model& model, StaticProblem& problem,
                          const std::vector<double>& load_factors, const StaticRecording& recording,
-                         bool trace, nlohmann::json& result);
+                         bool trace, nlohmann::json& result, const SolvedPath* start = nullptr);
 
 }  // namespace rotbeam

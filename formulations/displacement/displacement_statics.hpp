@@ -19,6 +19,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "core/model.hpp"
@@ -47,6 +48,9 @@ class DisplacementStatics : public StaticProblem {
     const VecX& residual_scale() const override { return residual_scale_; }
     const VecX& increment_scale() const override { return increment_scale_; }
     std::string describe_state() const override;
+    // The warm start (displacement_statics_warm_start.hpp).
+    std::optional<NodalField> nodal_field() const override;
+    bool start_from(const NodalField& field) override;
 
     void set_load_factor(double lambda) override;
     // Dynamics: every load multiplied by its own time function at t (gravity by 1), λ = 1; the

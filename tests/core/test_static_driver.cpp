@@ -5,6 +5,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
@@ -99,6 +100,57 @@ BOOST_AUTO_TEST_CASE(step_cutting_rescues_a_step_newton_cannot_take_at_once) {
     BOOST_TEST(calls == 1);
     BOOST_TEST(o.steps.at(0).substeps > 1);
     BOOST_TEST(std::abs(p.x_[0] - 10.0) < 1e-10);
+}
+
+// The atan problem of the test above, whose cold step needs sub-steps (root x = 10, y = 100).
+ToyProblem atan_problem() {
+    return ToyProblem([](double x) { return std::atan(x - 5.0) + std::atan(5.0); },
+                      [](double x) { return 1.0 / (1.0 + (x - 5.0) * (x - 5.0)); });
+}
+
+BOOST_AUTO_TEST_CASE(a_step_with_a_good_guess_is_one_solve_without_sub_steps) {
+    // From (9.9, 98), where the tangent is steep (1/25), Newton converges in a few iterations
+    // at the full load; the cold step needs sub-steps (the test above).
+    ToyProblem p = atan_problem();
+    NewtonSettings s = tight();
+    s.line_search = false;
+    s.max_iterations = 30;
+    std::vector<std::size_t> asked;
+    const StepGuess guess = [&](std::size_t step) {
+        asked.push_back(step);
+        p.x_ << 9.9, 98.0;
+        return true;
+    };
+    const StaticOutcome o = run_static(p, {2.0 * std::atan(5.0)}, s, nullptr, {}, guess);
+    BOOST_TEST(o.status == SolveStatus::converged, o.message);
+    BOOST_TEST((asked == std::vector<std::size_t>{0}));
+    BOOST_TEST(o.steps.at(0).substeps == 1);
+    BOOST_TEST(o.steps.at(0).newton_iterations <= 8);
+    BOOST_TEST(std::abs(p.x_[0] - 10.0) < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(a_refused_guess_leaves_the_step_to_the_sub_steps_from_the_last_state) {
+    // From x = −20 the tangent is flat (1/626): the full Newton step overshoots and fails, so the
+    // step is stepped from the unloaded state exactly as without a guess (same sub-steps, same
+    // iterations counted, same root).
+    NewtonSettings s = tight();
+    s.line_search = false;
+    s.max_iterations = 30;
+    const double target = 2.0 * std::atan(5.0);
+    ToyProblem cold = atan_problem();
+    const StaticOutcome c = run_static(cold, {target}, s, nullptr);
+    ToyProblem p = atan_problem();
+    std::ostringstream trace;
+    s.trace = &trace;
+    const StaticOutcome o = run_static(p, {target}, s, nullptr, {}, [&](std::size_t) {
+        p.x_ << -20.0, 400.0;
+        return true;
+    });
+    BOOST_TEST(trace.str().find("initial guess refused") != std::string::npos);
+    BOOST_TEST(o.status == SolveStatus::converged, o.message);
+    BOOST_TEST(o.steps.at(0).substeps == c.steps.at(0).substeps);
+    BOOST_TEST(o.steps.at(0).newton_iterations == c.steps.at(0).newton_iterations);
+    BOOST_TEST(p.x_[0] == cold.x_[0]);
 }
 
 BOOST_AUTO_TEST_CASE(the_cut_budget_bounds_consecutive_halvings_not_their_sum) {
