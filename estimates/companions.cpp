@@ -27,6 +27,15 @@ CompanionPlan p_plan(const Model& model) {
     return plan;
 }
 
+// The order p + 2 companion that checks the p-sequence's decay, below kSpectralOrder.
+void add_decay_companion(const Model& model, CompanionPlan& plan) {
+    const int p = model.discretization.order;
+    if (p >= kSpectralOrder || p + 2 > cases::kMaxOrder) return;
+    Model companion = model;
+    companion.discretization.order = p + 2;
+    plan.companions.push_back({"order " + std::to_string(p + 2), std::move(companion)});
+}
+
 CompanionPlan h_plan(const Model& model) {
     CompanionPlan plan;
     plan.method = "h/2,h/4";
@@ -62,7 +71,9 @@ CompanionPlan plan_companions(const Model& model) {
         plan.companions.clear();
         plan.refusal =
             "a dynamic analysis is estimated by add_dynamic_estimate (history_estimate.hpp)";
+        return plan;
     }
+    if (plan.method == "p+1" && plan.refusal.empty()) add_decay_companion(model, plan);
     return plan;
 }
 

@@ -101,10 +101,24 @@ json step_estimate(const Comparison& cmp, std::size_t i, const json& step, Tally
     }
     json out = json::object();
     for (const auto& [name, point] : step["points"].items()) {
-        if (cmp.method == "p+1") {
+        if (cmp.method == "p+1" && at.size() == 1) {
             const PointDifference d = difference(point, (*at[0])["points"][name]);
             out[name] = {{"displacement", tally.add(p_refinement(d.displacement))},
                          {"rotation", tally.add(p_refinement(d.rotation))}};
+            continue;
+        }
+        if (cmp.method == "p+1") {
+            // With the p+2 companion: d₁ = |q_p − q_{p+1}|, d₂ = |q_{p+1} − q_{p+2}|, d₀₂.
+            const json& next = (*at[0])["points"][name];
+            const json& after = (*at[1])["points"][name];
+            const PointDifference d1 = difference(point, next);
+            const PointDifference d2 = difference(next, after);
+            const PointDifference d02 = difference(point, after);
+            out[name] = {
+                {"displacement", tally.add(p_refinement(d1.displacement, d2.displacement,
+                                                        d02.displacement, cmp.floor_displacement))},
+                {"rotation",
+                 tally.add(p_refinement(d1.rotation, d2.rotation, d02.rotation, kRoundOffFloor))}};
             continue;
         }
         const json& half = (*at[0])["points"][name];
@@ -150,10 +164,13 @@ void mode_estimates(const Comparison& cmp, const ModePairing& pair_modes, json& 
             continue;
         }
         const double f0 = mode["frequency_hz"].get<double>();
+        const double floor = kRoundOffFloor * std::abs(f0);
+        const double d1 = std::abs(f0 - f[0]);
         const QuantityEstimate e =
-            cmp.method == "p+1" ? p_refinement(std::abs(f0 - f[0]))
-                                : h_refinement(std::abs(f0 - f[0]), std::abs(f[0] - f[1]),
-                                               cmp.order_frequency, kRoundOffFloor * std::abs(f0));
+            cmp.method != "p+1"
+                ? h_refinement(d1, std::abs(f[0] - f[1]), cmp.order_frequency, floor)
+            : f.size() == 1 ? p_refinement(d1)
+                            : p_refinement(d1, std::abs(f[0] - f[1]), std::abs(f0 - f[1]), floor);
         mode["estimate"] = {{"frequency", tally.add(e)}};
     }
 }

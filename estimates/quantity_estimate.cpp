@@ -19,6 +19,27 @@ QuantityEstimate p_refinement(double difference) {
             "companion"};
 }
 
+QuantityEstimate p_refinement(double d1, double d2, double d02, double floor) {
+    QuantityEstimate e;
+    if (d1 <= floor && d2 <= floor) {
+        e.error = std::max(d1, d2);
+        e.reason = "unchanged under refinement to within the round-off floor";
+        return e;
+    }
+    if (d2 < kDecayRatio * d1) {
+        e.error = d1;
+        return e;
+    }
+    e.error = std::max(d1, d02);
+    e.reliable = false;
+    std::ostringstream why;
+    why.precision(3);
+    why << "no p-decay: |q_p+1 - q_p+2| / |q_p - q_p+1| = " << d2 / d1 << ", not below "
+        << kDecayRatio << " (value: the larger of the p+1 and p+2 differences)";
+    e.reason = why.str();
+    return e;
+}
+
 QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor) {
     QuantityEstimate e;
     if (e1 <= floor && e2 <= floor) {

@@ -21,8 +21,9 @@
 #include "core/version.hpp"
 #include "parameterizations/registry.hpp"
 #include "report_dynamics.hpp"
-#include "report_summary.hpp"
+#include "report_estimator_failures.hpp"
 #include "report_ribbon.hpp"
+#include "report_summary.hpp"
 #include "report_table_one.hpp"
 #include "studies/gnuplot.hpp"
 #include "studies/study_common.hpp"
@@ -260,8 +261,9 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
            << true_error_cell(r, published_checks) << " |\n";
     }
     md << "\n"
-       << table_one_section("cantilever-moment", runs) << table_three_section(runs)
-       << joined_beam_histories_section(out_dir, runs) << blade_histories_section(out_dir, runs);
+       << estimator_failures_section(runs) << table_one_section("cantilever-moment", runs)
+       << table_three_section(runs) << joined_beam_histories_section(out_dir, runs)
+       << blade_histories_section(out_dir, runs);
     {
         std::ifstream published(fs::path(out_dir) / "published.md");
         if (published) md << published.rdbuf();

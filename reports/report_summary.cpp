@@ -292,29 +292,41 @@ std::optional<double> largest_difference(
 
 }  // namespace
 
-std::string true_error_cell(const nlohmann::json& run, const nlohmann::json& published_checks) {
-    const std::string case_name = run.value("case", "");
+std::optional<PointReference> point_reference(const std::string& case_name) {
     const Model* model = model_of(case_name);
-    if (model && case_name == "cantilever-moment") {
+    if (!model) return std::nullopt;
+    if (case_name == "cantilever-moment") {
         // The exact roll-up (core/oracles/rollup.hpp) at the tip, every load factor.
         const double l = (model->points[1].position - model->points[0].position).norm();
-        const auto exact = [&](size_t i, double lambda) -> std::optional<Vec3> {
-            if (i != 1) return std::nullopt;
-            return oracle::rollup_tip(l, lambda).displacement;
-        };
-        if (const std::optional<double> d = largest_difference(run, *model, exact))
-            return scientific(*d) + " (exact, ‖Δu‖/L)";
-    } else if (const ContinuumOutcome* c = model ? continuum_of(case_name) : nullptr) {
-        // The continuum reference at every named point of every load step it reports.
-        const auto reference = [&](size_t i, double lambda) -> std::optional<Vec3> {
+        return PointReference{"exact", model,
+                              [l](size_t i, double lambda) -> std::optional<PointState> {
+                                  if (i != 1) return std::nullopt;
+                                  const oracle::RollupState s = oracle::rollup_tip(l, lambda);
+                                  return PointState{s.displacement, s.rotation};
+                              }};
+    }
+    const ContinuumOutcome* c = continuum_of(case_name);
+    if (!c) return std::nullopt;
+    // The continuum reference at every named point of every load step it reports.
+    return PointReference{
+        "continuum", model, [c](size_t i, double lambda) -> std::optional<PointState> {
             for (const ContinuumStep& step : c->steps) {
                 if (std::abs(step.load_factor - lambda) <= 1e-12 * std::abs(lambda))
-                    return step.points[i].displacement;
+                    return step.points[i];
             }
             return std::nullopt;
+        }};
+}
+
+std::string true_error_cell(const nlohmann::json& run, const nlohmann::json& published_checks) {
+    if (const std::optional<PointReference> ref = point_reference(run.value("case", ""))) {
+        const auto displacement = [&](size_t i, double lambda) -> std::optional<Vec3> {
+            const std::optional<PointState> s = ref->state(i, lambda);
+            if (!s) return std::nullopt;
+            return s->displacement;
         };
-        if (const std::optional<double> d = largest_difference(run, *model, reference))
-            return scientific(*d) + " (continuum, ‖Δu‖/L)";
+        if (const std::optional<double> d = largest_difference(run, *ref->model, displacement))
+            return scientific(*d) + " (" + ref->name + ", ‖Δu‖/L)";
     }
     std::string worst;
     double largest = -1.0;

@@ -10,9 +10,14 @@
 // accuracy for the formulation) is "unchecked": the report does not claim an accuracy.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/model.hpp"
+#include "core/static_state.hpp"
 
 namespace rotbeam::cli {
 
@@ -26,6 +31,16 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
 // The run's worst estimated error relative to its scale (estimates/accuracy_scale.hpp), or why
 // there is none.
 std::string estimate_cell(const nlohmann::json& run);
+
+// The independent reference of a static case's named points: the exact roll-up's tip
+// (cantilever-moment), else the continuum reference (core/continuum) where the solver covers the
+// case. `state(point index, load factor)`: nullopt where there is none.
+struct PointReference {
+    std::string name;    // "exact" | "continuum"
+    const Model* model;  // the case's model (its points; loaded once per case)
+    std::function<std::optional<PointState>(size_t, double)> state;
+};
+std::optional<PointReference> point_reference(const std::string& case_name);
 
 // The run's true error where a reference exists: the largest ‖u − u_ref‖/L over the load steps
 // (L the estimates' reference length), against the exact roll-up, or for another static case

@@ -102,12 +102,49 @@ BOOST_AUTO_TEST_CASE(p_refinement_is_the_difference_and_states_its_assumption) {
     BOOST_TEST(e.reason.find("spectral") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(p_refinement_with_decaying_differences_is_reliable) {
+    // e_k = 0.3^k: d₂ / d₁ = 0.3, and d₁ = 0.7 e_p, inside [1 − r, 1 + r].
+    const double e2 = 0.09, e3 = 0.027, e4 = 0.0081;
+    const QuantityEstimate e = p_refinement(e2 - e3, e3 - e4, e2 - e4, 1e-12);
+    BOOST_TEST(e.reliable);
+    BOOST_TEST(e.error == e2 - e3);
+    BOOST_TEST(e.error / e2 >= 0.5);
+}
+
+BOOST_AUTO_TEST_CASE(p_refinement_without_decay_is_not_reliable_and_stays_on_the_safe_side) {
+    // Errors of orders p and p+1 equal in size (the crossing of two h-rates), order p+2 ahead:
+    // d₁ alone would be 0.17 e_p; the value is the larger difference, d₀₂ ≈ e_p.
+    const double ep = 1.0e-8, ep1 = 0.83e-8, ep2 = 1e-10;
+    const QuantityEstimate e = p_refinement(ep - ep1, ep1 - ep2, ep - ep2, 1e-12);
+    BOOST_TEST(!e.reliable);
+    BOOST_TEST(e.error == ep - ep2);
+    BOOST_TEST(e.reason.find("no p-decay") != std::string::npos);
+    // Order p+1 worse than p: d₁ is the larger.
+    const QuantityEstimate w = p_refinement(4.0, 5.0, 1.0, 1e-12);
+    BOOST_TEST(!w.reliable);
+    BOOST_TEST(w.error == 4.0);
+}
+
+BOOST_AUTO_TEST_CASE(p_refinement_at_round_off_is_reliable) {
+    const QuantityEstimate e = p_refinement(3e-13, 5e-13, 4e-13, 1e-12);
+    BOOST_TEST(e.reliable);
+    BOOST_TEST(e.error == 5e-13);
+}
+
 BOOST_AUTO_TEST_CASE(the_plan_chooses_the_method_per_formulation) {
     const CompanionPlan p = plan_companions(two_point_model(Formulation::displacement));
     BOOST_TEST(p.method == "p+1");
-    BOOST_TEST_REQUIRE(p.companions.size() == 1u);
+    // Order 3 < kSpectralOrder: the p+1 companion and the p+2 one of the decay check.
+    BOOST_TEST_REQUIRE(p.companions.size() == 2u);
     BOOST_TEST(p.companions[0].model.discretization.order == 4);
     BOOST_TEST(p.companions[0].model.members[0].elements == 4);
+    BOOST_TEST(p.companions[1].model.discretization.order == 5);
+    Model high = two_point_model(Formulation::displacement);
+    high.discretization.order = kSpectralOrder;
+    BOOST_TEST(plan_companions(high).companions.size() == 1u);
+    // The dynamic estimate's space companions have no decay check.
+    BOOST_TEST(
+        plan_space_companions(two_point_model(Formulation::displacement)).companions.size() == 1u);
     const CompanionPlan h = plan_companions(two_point_model(Formulation::mixed));
     BOOST_TEST(h.method == "h/2,h/4");
     BOOST_TEST_REQUIRE(h.companions.size() == 2u);
@@ -143,8 +180,8 @@ BOOST_AUTO_TEST_CASE(a_companion_that_stops_early_leaves_the_later_steps_without
                                           static_result("diverged", {1.01})};
     std::size_t next = 0;
     add_estimate(
-        two_point_model(Formulation::mixed), result, [&](const Model&) { return companions.at(next++); },
-        kNoModes);
+        two_point_model(Formulation::mixed), result,
+        [&](const Model&) { return companions.at(next++); }, kNoModes);
     BOOST_TEST(next == 2u);
     const json& first = result["steps"][0]["estimate"]["tip"]["displacement"];
     BOOST_TEST(first["reliable"].get<bool>());

@@ -12,6 +12,7 @@
 #include "cases/loader/case_loader.hpp"
 #include "core/continuum/continuum.hpp"
 #include "reports/report.hpp"
+#include "reports/report_estimator_failures.hpp"
 #include "reports/report_summary.hpp"
 #include "runs/catalog.hpp"
 #include "studies/study_common.hpp"
@@ -206,4 +207,47 @@ BOOST_AUTO_TEST_CASE(the_bend_true_error_is_against_the_continuum_reference_at_e
     }
     BOOST_TEST(run["steps"].size() == 3u);
     BOOST_TEST(true_error_cell(run, nlohmann::json::array()) == "1.0e-05 (continuum, ‖Δu‖/L)");
+}
+
+// An estimator failure (docs/error-estimates.md) is listed where the true error against the
+// continuum reference exceeds 3 × the estimate, and only there: the bend's tip 1e-6 L off the
+// reference at P = 450 (L the root–tip chord, the estimates' scale; 1000 × the floor) with a
+// reliable estimate of a fifth of that (listed) or of a half (not).
+BOOST_AUTO_TEST_CASE(an_estimate_below_a_third_of_the_true_error_is_an_estimator_failure) {
+    const rotbeam::Model model = rotbeam::load_case(resolve_case_path("bend-45"), {});
+    const rotbeam::ContinuumOutcome reference = rotbeam::solve_continuum(model);
+    BOOST_TEST_REQUIRE(reference.status == "converged");
+    const double chord = (model.points[1].position - model.points[0].position).norm();
+    const auto run_with = [&](double estimate) {
+        nlohmann::json run = {{"case", "bend-45"},
+                              {"rotation", "quaternion"},
+                              {"formulation", "displacement"},
+                              {"status", "converged"},
+                              {"estimate", {{"status", "estimated"}}},
+                              {"steps", nlohmann::json::array()}};
+        for (const rotbeam::ContinuumStep& step : reference.steps) {
+            rotbeam::Vec3 u = step.points[1].displacement;
+            const bool off = step.load_factor == 450.0;
+            if (off) u.z() += 1e-6 * chord;
+            const nlohmann::json q = {{"error", off ? estimate : 1e-12}, {"reliable", true}};
+            run["steps"].push_back(
+                {{"load_factor", step.load_factor},
+                 {"points", {{"tip", {{"displacement", {u.x(), u.y(), u.z()}}}}}},
+                 {"estimate", {{"tip", {{"displacement", q}}}}}});
+        }
+        return run;
+    };
+    const std::vector<std::string> missed = estimator_failures(run_with(0.2e-6 * chord));
+    BOOST_TEST_REQUIRE(missed.size() == 1u);
+    BOOST_TEST(missed[0].find("tip displacement at load factor 450") != std::string::npos,
+               missed[0]);
+    BOOST_TEST(missed[0].find("(reliable)") != std::string::npos, missed[0]);
+    BOOST_TEST(estimator_failures(run_with(0.5e-6 * chord)).empty());
+    const std::string listed = estimator_failures_section({run_with(0.2e-6 * chord)});
+    BOOST_TEST(listed.find("Runs checked: 1.") != std::string::npos, listed);
+    BOOST_TEST(
+        listed.find("- bend-45 displacement/quaternion, tip displacement") != std::string::npos,
+        listed);
+    BOOST_TEST(estimator_failures_section({run_with(0.5e-6 * chord)}).find("None.") !=
+               std::string::npos);
 }
