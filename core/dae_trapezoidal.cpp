@@ -259,7 +259,7 @@ DaeOutcome integrate_trapezoidal(DaeSystem& dae, VecX& x, VecX& xdot, const DaeS
     run.add_initial(ic);
     run.start(s.start_time);
     if (s.time_tolerance > 0.0) {
-        const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time};
+        StepSizeControl control{s.time_tolerance, s.end_time - s.start_time};
         if (!run_adaptive_steps(run, s, control, TrapezoidalRun::kFirstStep * s.time_step, output,
                                 outcome)) {
             return outcome;
