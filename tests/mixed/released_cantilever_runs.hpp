@@ -2,9 +2,10 @@
 // cantilever of docs/benchmarks.md §8 (cases/free-vibration.yaml) in the mixed formulation: 8
 // elements, the rotation vector, undamped, released at rest either from the static deflection
 // under the 1 N tip force (tip u_z = 1.9e-3 m: every mode of the mesh excited, the highest with
-// amplitudes of 1e-8–1e-7 m) or from its first bending mode (8.4 Hz) scaled to a given tip u_z
-// (one mode; docs/mixed-dynamics.md "Radau IIA", orders measured). Shared by the adaptive-step test
-// and its measurement program (test_mixed_radau_adaptive.cpp, bench_radau_adaptive.cpp).
+// amplitudes of 1e-8–1e-7 m, inferred in docs/mixed-dynamics.md "Radau IIA") or from its first
+// bending mode (8.4 Hz) scaled to a given tip u_z (one mode; docs/mixed-dynamics.md "Radau IIA",
+// orders measured). Shared by the adaptive-step test and its measurement program
+// (test_mixed_radau_adaptive.cpp, bench_radau_adaptive.cpp).
 #pragma once
 
 #include <algorithm>
