@@ -58,8 +58,9 @@ struct DaeSettings {
     double absolute_tolerance = 1e-6;  // IDA, times state_scale_i
     int max_order = 2;                 // IDA
     long max_steps = 1000000;          // IDA, per output interval
-    // Adaptive steps of the trapezoidal scheme when > 0 (core/step_size_control.hpp): the
-    // tolerance on the global error of the differential unknowns over their state scales; the
+    // Adaptive steps of the trapezoidal and Radau schemes when > 0 (core/step_size_control.hpp):
+    // the tolerance on the global error of the configuration unknowns (DaeSystem::configuration)
+    // over their state scales; the
     // runner gives IDA the same number as its relative and absolute tolerance.
     double time_tolerance = 0.0;
     // Fixed step: a step whose Newton fails is retried with h/2, at most this many times in a row.

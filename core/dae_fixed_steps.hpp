@@ -174,9 +174,9 @@ bool run_fixed_steps(Run& run, const DaeSettings& s, const DaeOutput& output) {
 // the step is accepted and the next may grow by kMaxGrowth) accepts or rejects it; a Newton
 // failure retries with h/2 (run.cut); steps are shortened to land on the output times. False,
 // with the status set, when the run stops (the cuts exhausted, or a step-size underflow).
-template <class Run>
-bool run_adaptive_steps(Run& run, const DaeSettings& s, const StepSizeControl& control,
-                        double first_step, const DaeOutput& output, DaeOutcome& outcome) {
+template <class Run, class Control>
+bool run_adaptive_steps(Run& run, const DaeSettings& s, Control& control, double first_step,
+                        const DaeOutput& output, DaeOutcome& outcome) {
     const double every = s.output_interval > 0.0 ? s.output_interval : s.time_step;
     double next_output = std::min(s.start_time + every, s.end_time);
     double h = first_step;
@@ -190,7 +190,7 @@ bool run_adaptive_steps(Run& run, const DaeSettings& s, const StepSizeControl& c
         if (control.underflow(hs)) {
             std::ostringstream m;
             m << "step size underflow at t = " << t << ": step " << hs << " below "
-              << StepSizeControl::kMinStep << " of the window (" << outcome.control.rejected_steps
+              << Control::kMinStep << " of the window (" << outcome.control.rejected_steps
               << " steps rejected by the error test)";
             run.fail(SolveStatus::diverged, m.str());
             return false;
@@ -203,15 +203,15 @@ bool run_adaptive_steps(Run& run, const DaeSettings& s, const StepSizeControl& c
         }
         cuts = 0;
         const double error = run.local_error(hs);
-        double grown = StepSizeControl::kMaxGrowth * hs;  // no estimate yet
+        double grown = Control::kMaxGrowth * hs;  // no estimate yet
         if (error >= 0.0) {
-            const double r = control.ratio(error, hs);
-            if (r > 1.0) {
+            const auto d = control.decide(control.ratio(error, hs), hs, run.iterations());
+            if (!d.accept) {
                 ++outcome.control.rejected_steps;
-                h = control.next(hs, r);
+                h = d.next;
                 continue;
             }
-            grown = control.next(hs, r);
+            grown = d.next;
         }
         // A step shortened to land on an output says nothing against the step before it.
         h = lands && grown >= hs ? std::max(h, grown) : grown;

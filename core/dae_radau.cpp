@@ -372,7 +372,7 @@ DaeOutcome integrate_radau_iia(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSet
     run.start(s.start_time);
     if (s.time_tolerance > 0.0) {
         // The embedded estimate is O(h^4) (order 3): the local error exponent q = 4.
-        const StepSizeControl control{s.time_tolerance, s.end_time - s.start_time, 4};
+        RadauStepControl control{s.time_tolerance, s.end_time - s.start_time, 4};
         if (!run_adaptive_steps(run, s, control, s.time_step, output, outcome)) return outcome;
     } else if (!run_fixed_steps(run, s, output)) {
         return outcome;
