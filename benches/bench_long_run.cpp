@@ -346,7 +346,7 @@ std::string mb(long kb) {
     return s.str();
 }
 
-void print_row(const nlohmann::json& r) {
+void print_long_run_row(const nlohmann::json& r) {
     auto d = [&](const char* key) { return r[key].is_null() ? kNoValue : r[key].get<double>(); };
     auto fixed = [](double x, int digits) {
         std::ostringstream s;
@@ -393,7 +393,7 @@ nlohmann::json bench_long_run(bool quick) {
     nlohmann::json rows = nlohmann::json::array();
     for (const Variant& v : variants(quick)) {
         rows.push_back(run_variant(v));
-        print_row(rows.back());
+        print_long_run_row(rows.back());
         std::cout << std::flush;
     }
     std::cout << "  first/last µs: median CPU cost of one step in the first/last tenth of the run "

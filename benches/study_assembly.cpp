@@ -91,7 +91,7 @@ std::string counters_text(const nlohmann::json& r) {
     return s.str();
 }
 
-std::string ms(double seconds) {
+std::string ms_3_digits(double seconds) {
     std::ostringstream s;
     s.precision(3);
     s << seconds * 1e3;
@@ -215,9 +215,9 @@ nlohmann::json assembly_savings(const StudyOptions& o, std::ostringstream& md) {
             const bool same = difference <= kSameResult && status == r_all.value("status", "");
             md << "| " << c.analysis << " | " << c.case_name << " | " << comb.label() << " | "
                << status << " | " << counters_text(r_needed) << " | " << counters_text(r_all)
-               << " | " << ms(tn) << " | " << ms(ta) << " | " << fixed_ratio(ta / tn) << " | "
-               << percent(1.0 - tn / ta) << " | " << sci(difference, 1)
-               << (same ? "" : " **DIFFERENT (" + status + ")**") << " |\n";
+               << " | " << ms_3_digits(tn) << " | " << ms_3_digits(ta) << " | "
+               << fixed_ratio(ta / tn) << " | " << percent(1.0 - tn / ta) << " | "
+               << sci(difference, 1) << (same ? "" : " **DIFFERENT (" + status + ")**") << " |\n";
             out.push_back({{"analysis", c.analysis},
                            {"case", c.case_name},
                            {"combination", comb.label()},

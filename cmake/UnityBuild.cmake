@@ -1,7 +1,7 @@
 # Unity builds (-DCMAKE_UNITY_BUILD=ON, CMake's default batches of 8 files per target) parse the
 # headers that every file includes (Eigen, SUNDIALS, nlohmann/json, Boost.Test, the project's own)
-# once per batch instead of once per file: meant for CI's cold builds (docs/quality-checks.md,
-# Time, has the measured gain and what remains before CI uses them). Developers' trees are not
+# once per batch instead of once per file: CI's cold builds are unity builds (.ci/run configures
+# both trees so; docs/quality-checks.md, Time, has the measured gain). Developers' trees are not
 # unity builds unless configured so: an edit there recompiles one file, not its batch.
 #
 # A file that cannot share a unity source with the other files of its target (a name in an

@@ -26,7 +26,7 @@ const std::vector<std::string> kQuantities = {
     "u2",    "u3",        "angle",         "frequency_hz",
     "u_err", "angle_err", "frequency_err", "estimate_reliable"};
 
-using Row = std::map<std::string, nlohmann::json>;  // column → number, string, bool or null
+using SweepRow = std::map<std::string, nlohmann::json>;  // column → number, string, bool or null
 
 // The value at `path` in `j`, null when absent.
 nlohmann::json at(const nlohmann::json& j, std::initializer_list<const char*> path) {
@@ -45,12 +45,12 @@ nlohmann::json reliable(const nlohmann::json& a, const nlohmann::json& b) {
 }
 
 // The rows of one step: one per named point.
-void point_rows(const Row& base, const nlohmann::json& step, const char* kind,
-                std::vector<Row>& rows) {
+void point_rows(const SweepRow& base, const nlohmann::json& step, const char* kind,
+                std::vector<SweepRow>& rows) {
     const nlohmann::json points = at(step, {"points"});
     if (!points.is_object()) return;
     for (const auto& [name, p] : points.items()) {
-        Row row = base;
+        SweepRow row = base;
         row["step"] = kind;
         row["value"] = step[kind];
         row["point"] = name;
@@ -69,13 +69,13 @@ void point_rows(const Row& base, const nlohmann::json& step, const char* kind,
 }
 
 // Every row of one run; `last_only`: a static run's last load step alone.
-std::vector<Row> run_rows(const Row& base, const nlohmann::json& result, bool last_only) {
-    std::vector<Row> rows;
+std::vector<SweepRow> run_rows(const SweepRow& base, const nlohmann::json& result, bool last_only) {
+    std::vector<SweepRow> rows;
     const nlohmann::json modes = at(result, {"modes"});
     const nlohmann::json steps = at(result, {"steps"});
     if (modes.is_array() && !modes.empty()) {
         for (size_t i = 0; i < modes.size(); ++i) {
-            Row row = base;
+            SweepRow row = base;
             row["step"] = "mode";
             row["value"] = i + 1;
             row["frequency_hz"] = at(modes[i], {"frequency_hz"});
@@ -141,27 +141,27 @@ void write_sweep_report(const std::string& out, const Sweep& sweep,
     columns.insert(columns.end(), sweep.keys.begin(), sweep.keys.end());
     columns.push_back("status");
     columns.insert(columns.end(), kQuantities.begin(), kQuantities.end());
-    std::vector<Row> all, shown;
+    std::vector<SweepRow> all, shown;
     std::map<std::string, int> statuses;
     for (size_t i = 0; i < runs.size(); ++i) {
         const SweepRun& s = sweep.runs[i];
         const nlohmann::json result = nlohmann::json::parse(read_text_file(runs[i].output));
-        Row base = {{"run", fs::path(runs[i].output).stem().string()},
-                    {"case", s.case_name},
-                    {"formulation", s.formulation},
-                    {"rotation", s.rotation},
-                    {"status", result.value("status", "")}};
+        SweepRow base = {{"run", fs::path(runs[i].output).stem().string()},
+                         {"case", s.case_name},
+                         {"formulation", s.formulation},
+                         {"rotation", s.rotation},
+                         {"status", result.value("status", "")}};
         if (interpolation) base["interpolation"] = s.interpolation;
         if (wm_map) base["wm_map"] = s.wm_map;
         for (size_t k = 0; k < sweep.keys.size(); ++k) base[sweep.keys[k]] = s.values[k];
         ++statuses[result.value("status", "")];
-        for (Row& r : run_rows(base, result, false)) all.push_back(std::move(r));
-        for (Row& r : run_rows(base, result, !sweep.all_steps)) shown.push_back(std::move(r));
+        for (SweepRow& r : run_rows(base, result, false)) all.push_back(std::move(r));
+        for (SweepRow& r : run_rows(base, result, !sweep.all_steps)) shown.push_back(std::move(r));
     }
     std::ostringstream csv, md;
     for (size_t c = 0; c < columns.size(); ++c) csv << (c ? "," : "") << columns[c];
     csv << "\n";
-    for (const Row& row : all) {
+    for (const SweepRow& row : all) {
         for (size_t c = 0; c < columns.size(); ++c) {
             const auto v = row.find(columns[c]);
             csv << (c ? "," : "") << (v == row.end() ? "" : csv_cell(v->second));
@@ -185,7 +185,7 @@ void write_sweep_report(const std::string& out, const Sweep& sweep,
     md << "\n|";
     for (size_t c = 0; c < columns.size(); ++c) md << "---|";
     md << "\n";
-    for (const Row& row : shown) {
+    for (const SweepRow& row : shown) {
         md << "|";
         for (const std::string& c : columns) {
             const auto v = row.find(c);

@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "parameterizations/registry.hpp"
+#include "report_summary.hpp"
 #include "studies/gnuplot.hpp"
 #include "studies/study_common.hpp"
 
@@ -50,10 +51,6 @@ std::vector<Row> point_history(const nlohmann::json& run, const std::string& poi
         rows.push_back(row);
     }
     return rows;
-}
-
-std::string combination(const nlohmann::json& run) {
-    return run.value("formulation", "") + "/" + run.value("rotation", "");
 }
 
 // Writes the history ("?" for missing values, gnuplot's `set datafile missing`); columns as Row.

@@ -22,10 +22,6 @@ namespace rotbeam::cli {
 
 namespace {
 
-std::string combination(const nlohmann::json& run) {
-    return run.value("formulation", "") + "/" + run.value("rotation", "");
-}
-
 // Whether a verify row was computed with the run's own combination and discretization. Its
 // `combination` label is "formulation/rotation[/interpolation or wm_map][ key=value ...]"
 // (verify_plan.hpp, settings_label): every part must be the run's (the key=value settings compared
@@ -145,6 +141,10 @@ Verdict verdict(const nlohmann::json* run, const std::string& case_name,
 }
 
 }  // namespace
+
+std::string combination(const nlohmann::json& run) {
+    return run.value("formulation", "") + "/" + run.value("rotation", "");
+}
 
 std::string run_row_id(size_t index) { return "run-" + std::to_string(index + 1); }
 

@@ -21,6 +21,9 @@
 
 namespace rotbeam::cli {
 
+// A run's "formulation/rotation", the label of its cells and curves.
+std::string combination(const nlohmann::json& run);
+
 // The HTML id of the runs table's row of runs[index].
 std::string run_row_id(size_t index);
 

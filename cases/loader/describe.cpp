@@ -11,7 +11,7 @@ namespace rotbeam {
 
 namespace {
 
-std::string vec(const Vec3& v) {
+std::string rounded_vec(const Vec3& v) {
     std::ostringstream s;
     s << std::setprecision(6) << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
     return s.str();
@@ -22,8 +22,8 @@ std::string line_text(const Member& m) {
         case LineKind::straight:
             return "straight";
         case LineKind::arc:
-            return "arc about centre " + vec(m.line.center) +
-                   (m.line.normal ? ", normal " + vec(*m.line.normal) : "");
+            return "arc about centre " + rounded_vec(m.line.center) +
+                   (m.line.normal ? ", normal " + rounded_vec(*m.line.normal) : "");
         case LineKind::keypoints:
             return "spline through " + std::to_string(m.line.keypoints.size()) + " key point(s)";
     }
@@ -90,23 +90,24 @@ void describe_loads(const Model& model, std::ostream& os) {
         os << "  " << model.points[c.point].name << ": "
            << (c.kind == Constraint::Kind::clamped
                    ? std::string("clamped")
-                   : "prescribed u " + vec(c.displacement) + ", rotation " + vec(c.rotation) +
-                         ", " + time_text(c.time))
+                   : "prescribed u " + rounded_vec(c.displacement) + ", rotation " +
+                         rounded_vec(c.rotation) + ", " + time_text(c.time))
            << "\n";
     }
     os << "loads (" << model.point_loads.size() + model.distributed_loads.size() << "):\n";
     for (const PointLoad& l : model.point_loads) {
-        os << "  point " << model.points[l.point].name << ": force " << vec(l.force) << ", moment "
-           << vec(l.moment) << ", " << (l.frame == LoadFrame::dead ? "dead" : "follower") << ", "
-           << time_text(l.time) << "\n";
-    }
-    for (const DistributedLoad& l : model.distributed_loads) {
-        os << "  member " << model.members[l.member].name << ": force/length " << vec(l.force)
-           << ", moment/length " << vec(l.moment) << ", "
+        os << "  point " << model.points[l.point].name << ": force " << rounded_vec(l.force)
+           << ", moment " << rounded_vec(l.moment) << ", "
            << (l.frame == LoadFrame::dead ? "dead" : "follower") << ", " << time_text(l.time)
            << "\n";
     }
-    if (model.gravity.norm() > 0.0) os << "gravity " << vec(model.gravity) << "\n";
+    for (const DistributedLoad& l : model.distributed_loads) {
+        os << "  member " << model.members[l.member].name << ": force/length "
+           << rounded_vec(l.force) << ", moment/length " << rounded_vec(l.moment) << ", "
+           << (l.frame == LoadFrame::dead ? "dead" : "follower") << ", " << time_text(l.time)
+           << "\n";
+    }
+    if (model.gravity.norm() > 0.0) os << "gravity " << rounded_vec(model.gravity) << "\n";
 }
 
 void describe_analysis(const Model& model, std::ostream& os) {
@@ -158,7 +159,8 @@ std::string describe_model(const Model& model) {
     os << "\n";
     if (!model.description.empty()) os << "  " << model.description << "\n";
     os << "points (" << model.points.size() << "):\n";
-    for (const Point& p : model.points) os << "  " << p.name << " " << vec(p.position) << "\n";
+    for (const Point& p : model.points)
+        os << "  " << p.name << " " << rounded_vec(p.position) << "\n";
     describe_members(model, os);
     describe_loads(model, os);
     describe_analysis(model, os);

@@ -17,12 +17,12 @@ using namespace rotbeam;
 
 namespace {
 
-NewtonSettings tight() { return test::tight_newton(60); }
+NewtonSettings tight_60_iterations() { return test::tight_newton(60); }
 
 template <class P>
 double rollup_error(int elements, double lambda) {
     form::MixedStatics<P> problem(test::rollup_model(elements));
-    const StaticOutcome out = run_static(problem, {lambda}, tight(), nullptr);
+    const StaticOutcome out = run_static(problem, {lambda}, tight_60_iterations(), nullptr);
     BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
     const Vec3 u = problem.point_state(1).displacement;
     return (u - test::rollup_exact_tip(lambda)).norm() / test::kRollupLength;
@@ -57,11 +57,13 @@ std::vector<Vec3> bend_tips(int elements, double shear_factor = 5.0 / 6.0, doubl
     std::vector<double> loads;
     for (int k = 1; k <= 12; ++k) loads.push_back(50.0 * k);
     std::vector<Vec3> tips;
-    const StaticOutcome out = run_static(problem, loads, tight(), [&](const StepRecord& step) {
-        if (step.load_factor == 300.0 || step.load_factor == 450.0 || step.load_factor == 600.0) {
-            tips.push_back(problem.point_state(1).displacement);
-        }
-    });
+    const StaticOutcome out =
+        run_static(problem, loads, tight_60_iterations(), [&](const StepRecord& step) {
+            if (step.load_factor == 300.0 || step.load_factor == 450.0 ||
+                step.load_factor == 600.0) {
+                tips.push_back(problem.point_state(1).displacement);
+            }
+        });
     BOOST_TEST_REQUIRE((out.status == SolveStatus::converged));
     return tips;
 }
@@ -73,7 +75,7 @@ std::vector<Vec3> bend_tips(int elements, double shear_factor = 5.0 / 6.0, doubl
 template <class P>
 double lambda_star(int elements, double lambda_c) {
     form::MixedStatics<P> problem(test::rollup_model(elements));
-    NewtonSettings s = tight();
+    NewtonSettings s = tight_60_iterations();
     s.residual_tolerance = 1e-10;
     s.increment_tolerance = 1e-10;
     s.max_iterations = 100;

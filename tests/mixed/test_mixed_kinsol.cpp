@@ -15,12 +15,12 @@
 #include "tests/mixed/models.hpp"
 
 using namespace rotbeam;
-using Parameterizations = test::ParameterizationTypes<>;
+using EveryParameterization = test::ParameterizationTypes<>;
 
 BOOST_AUTO_TEST_SUITE(mixed_kinsol)
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(kinsol_and_shared_newton_reach_the_same_rollup_state, P,
-                              Parameterizations) {
+                              EveryParameterization) {
     // The roll-up's tip turns by λπ: λ = 0.8, or 0.8 of the way to the singular angle of a chart
     // that ends before π (the Euler angles' gimbal lock at π/2: λ = 0.4).
     const double lambda = std::min(0.8, 0.8 * P::singular_angle() / kPi);
