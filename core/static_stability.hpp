@@ -38,10 +38,6 @@ struct StaticStability {
 };
 const char* to_string(StaticStability::Assessment a);
 
-// The scaled asymmetry ‖S − Sᵀ‖_max / ‖S‖_max (S = D J D) above which a tangent is not taken
-// for symmetric (static_stability.cpp says why).
-extern const double kSymmetryTolerance;
-
 // The inertia of `tangent` (a Jacobian at a converged state, with its increment scales).
 StaticStability assess_stability(const SparseMatrix& tangent, const VecX& increment_scale);
 

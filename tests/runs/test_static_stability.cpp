@@ -180,7 +180,8 @@ BOOST_AUTO_TEST_CASE(imperfect_column_past_the_euler_load_lands_on_the_unstable_
     BOOST_TEST(w < 0.0);
     BOOST_TEST(in.negative >= 1);
     // The run path does not take this tangent for symmetric (the deformed state's asymmetry, ~2e-6
-    // of its largest scaled entry, is above kSymmetryTolerance): it must not call it stable.
+    // of its largest scaled entry, is far above the n ε of round-off it accepts): it must not call
+    // it stable.
     BOOST_TEST((in.sparse.assessment != StaticStability::Assessment::stable));
 }
 
