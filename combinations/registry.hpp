@@ -40,6 +40,9 @@ struct FormulationTraits {
     // It takes a lumped mass (discretization.mass_rule: lumped); else why not.
     bool lumped_mass;
     std::string_view no_lumped_mass_reason;
+    // Why the stability of its static equilibria is not assessed (core/static_stability.hpp);
+    // empty: assessed, at dead loads.
+    std::string_view no_stability_reason;
 };
 
 inline constexpr std::array kDisplacementIntegrators = {
@@ -53,7 +56,7 @@ inline constexpr std::array kMixedIntegrators = {Integrator::trapezoidal, Integr
 inline constexpr std::array kFormulations = {
     // Displacement-based (seed 000; docs/displacement-formulation.md).
     FormulationTraits{Formulation::displacement, true, true, kDisplacementIntegrators,
-                      kDisplacementInterpolations, false, true, "", true, ""},
+                      kDisplacementInterpolations, false, true, "", true, "", ""},
     // Mixed (seed 002; docs/mixed-formulation.md, docs/mixed-dynamics.md).
     FormulationTraits{Formulation::mixed,
                       true,
@@ -66,7 +69,9 @@ inline constexpr std::array kFormulations = {
                       "for the displacement formulation",
                       false,
                       "'lumped' is not available in the mixed formulation (element momenta, no "
-                      "nodal masses); consistent | midpoint"},
+                      "nodal masses); consistent | midpoint",
+                      "no stability criterion is known for the mixed formulation (its tangent is "
+                      "not symmetric; docs/mixed-formulation.md)"},
 };
 
 namespace detail {

@@ -2,12 +2,13 @@
 // program and its results), and atomic writing of result files.
 //
 // A run result is one JSON object: case, rotation, formulation, elements, order, dofs, status
-// (converged | stalled-at-round-off | diverged | singular | error, docs/solver-convergence.md),
+// (converged | stalled-at-round-off | diverged | singular | error | unstable-equilibrium,
+// docs/solver-convergence.md),
 // message, wall_seconds, version, options, counters, and `steps` (one per reported load step or
 // output time) with, for every named point, displacement, rotation_matrix (R^c R^rᵀ),
 // rotation_vector (principal value) and rotation_angle (the rotation vector continued along the
 // beam from the root, core/beam_rotation.hpp); a static step also has `convergence` (criterion,
-// scaled_residual, error_bound, round_off_floor).
+// scaled_residual, error_bound, round_off_floor) and `stability` (core/static_stability.hpp).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -24,7 +25,7 @@ namespace rotbeam {
 // The version of the JSON contract (docs/json-schema.md), written as `schema_version` into every
 // JSON object the program writes: raised when a field is renamed, removed or changes meaning, so
 // that a downstream script can refuse a file it does not know.
-inline constexpr int kSchemaVersion = 2;
+inline constexpr int kSchemaVersion = 3;
 
 // {"displacement", "rotation_matrix", "rotation_vector", "rotation_angle"} of one point;
 // rotation_angle is the norm of `continued_rotation_vector`.

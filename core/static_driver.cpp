@@ -338,6 +338,25 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
     return out;
 }
 
+// The stability of a reported step's state, from the last Jacobian of its Newton solve: the one
+// at the iterate before the final correction, a scaled distance below increment_tolerance from
+// the reported state, so its inertia is the state's unless the state is critical to that
+// precision. A substituted solver (KINSOL) leaves no Jacobian here.
+StaticStability stability_of_step(const StaticSystem& problem, const NewtonWorkspace& workspace,
+                                  const StepSolver& solver) {
+    StaticStability s;
+    if (solver) {
+        s.reason = "the step solver keeps no tangent to assess";
+        return s;
+    }
+    const SparseMatrix& J = workspace.impl->J;
+    if (J.rows() != problem.size()) {
+        s.reason = "no Newton solve was made at this step";
+        return s;
+    }
+    return assess_stability(J, problem.increment_scale());
+}
+
 }  // namespace
 
 StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_factors,
@@ -430,6 +449,8 @@ StaticOutcome run_static(StaticSystem& problem, const std::vector<double>& load_
             h *= 0.5;
             successes_since_cut = 0;
         }
+        if (settings.assess_stability)
+            record.stability = stability_of_step(problem, workspace, solver);
         outcome.steps.push_back(record);
         stalls.add(last);  // the reported state is the last sub-step's
         if (on_step) on_step(record);

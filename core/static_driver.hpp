@@ -25,6 +25,7 @@
 #include "core/model.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/sparse_lu.hpp"
+#include "core/static_stability.hpp"
 
 namespace rotbeam {
 
@@ -50,6 +51,9 @@ struct NewtonSettings {
     // solver.linear_solver: sparse (Eigen SparseLU, default) or dense (core/sparse_lu.hpp).
     bool dense_linear_solver = false;
     std::ostream* trace = nullptr;  // when set: one line per Newton iteration and step cut
+    // After each reported step, the inertia of the tangent at it (core/static_stability.hpp),
+    // into StepRecord::stability; for systems whose tangent is symmetric at a dead load.
+    bool assess_stability = false;
 };
 
 struct NewtonOutcome;
@@ -118,6 +122,8 @@ struct StepRecord {
     double scaled_residual = 0.0;
     double error_bound = 0.0;
     double round_off_floor = 0.0;
+    // Not assessed unless NewtonSettings::assess_stability (the reason then empty).
+    StaticStability stability;
 };
 
 struct StaticOutcome {

@@ -13,6 +13,7 @@
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/static_driver.hpp"
+#include "core/static_stability.hpp"
 #include "estimates/accuracy_scale.hpp"
 #include "parameterizations/registry.hpp"
 #include "runs/catalog.hpp"
@@ -88,7 +89,7 @@ const Model* model_of(const std::string& case_name) {
 }
 
 struct Verdict {
-    std::string kind;  // met, unchecked, stopped, inaccurate, not run
+    std::string kind;  // met, unchecked, stopped, unstable, inaccurate, not run
     std::string text;  // the cell's words
 };
 
@@ -98,6 +99,7 @@ Verdict verdict(const nlohmann::json* run, const std::string& case_name,
     const std::string status = run->value("status", "error");
     if (status == "error") return {"not run", "not run"};
     if (status == "inaccurate") return {"inaccurate", "inaccurate: its estimate"};
+    if (status == kUnstableEquilibrium) return {"unstable", "unstable equilibrium"};
     int passed = 0, failed = 0;
     bool expected_stop = false;
     std::string missed;
@@ -178,7 +180,7 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
             sentences << "every combination met its accuracy.";
         } else {
             sentences << met << " of " << n << " combinations met their accuracy";
-            for (const char* kind : {"unchecked", "stopped", "inaccurate", "not run"}) {
+            for (const char* kind : {"unchecked", "stopped", "unstable", "inaccurate", "not run"}) {
                 const auto& list = by_kind[kind];
                 if (list.empty()) continue;
                 sentences << "; " << kind << ": ";
@@ -229,7 +231,9 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
           "accuracy; *unchecked*: solved, with neither a published check nor an estimate held "
           "against a stated accuracy (`--estimate off`, or the case states none for the "
           "formulation); *stopped*: the solve stopped (*expected* when the case file "
-          "says it must); *inaccurate*: a published check missed, or an estimate above the stated "
+          "says it must); *unstable*: solved, but an equilibrium is unstable (its tangent has "
+          "negative eigenvalues: status `unstable-equilibrium`); *inaccurate*: a published check "
+          "missed, or an estimate above the stated "
           "accuracy; *not run*: the combination does not exist for the case. Each cell links to "
           "its run in the runs table.\n\n"
        << sentences.str() << "\n"

@@ -11,6 +11,7 @@
 #include "core/kinematic_check.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "core/static_stability.hpp"
 #include "core/time_limit.hpp"
 #include "core/version.hpp"
 #include "estimates/estimate.hpp"
@@ -88,6 +89,24 @@ std::string kinematics_message(const Model& model, const KinematicStop& stop) {
     return s.str();
 }
 
+// The first reported step whose equilibrium is unstable: the run's status says so (the answer is
+// an equilibrium no loaded beam would stay in), followed by the solver's message.
+void report_unstable_equilibrium(const StaticOutcome& outcome, nlohmann::json& result) {
+    for (std::size_t i = 0; i < outcome.steps.size(); ++i) {
+        const StepRecord& step = outcome.steps[i];
+        if (step.stability.assessment != StaticStability::Assessment::unstable) continue;
+        std::ostringstream s;
+        s.precision(6);
+        s << "the equilibrium at load step " << i + 1 << " (load factor " << step.load_factor
+          << ") is unstable: its tangent has " << step.stability.negative
+          << " negative eigenvalue(s), directions in which the energy decreases; "
+          << result["status"].get<std::string>() << ": " << result["message"].get<std::string>();
+        result["status"] = kUnstableEquilibrium;
+        result["message"] = s.str();
+        return;
+    }
+}
+
 void run_static_case(const RunRequest& request, nlohmann::json& result) {
     const Model& model = request.model;
     std::unique_ptr<StaticProblem> problem = make_static_problem(model);
@@ -95,6 +114,7 @@ void run_static_case(const RunRequest& request, nlohmann::json& result) {
     const StaticRecording recording{.steps = true,
                                     .convergence = true,
                                     .kinematic_check = true,
+                                    .stability = true,
                                     .frames = true,
                                     .path = request.path};
     const StaticSolve solve = solve_static(model, *problem, model.analysis.statics.load_factors,
@@ -108,6 +128,7 @@ void run_static_case(const RunRequest& request, nlohmann::json& result) {
     const StaticOutcome& outcome = solve.outcome;
     result["status"] = to_string(outcome.status);
     result["message"] = outcome.message;
+    if (has_solution(outcome.status)) report_unstable_equilibrium(outcome, result);
     if (outcome.steps.empty()) return;
     if (std::optional<nlohmann::json> sections =
             observe_sections(model, *problem, outcome.last_converged_load_factor)) {

@@ -26,8 +26,9 @@ struct RunRequest {
 
 // Runs the analysis. Never throws for numerical failure: the status says it (`converged`,
 // `diverged`, `singular`, `error`, or `kinematics-unresolved` when the mixed kinematic check
-// stops a solved run, core/kinematic_check.hpp). Throws InputError only for input the formulation
-// refuses (e.g. a rigid section in the displacement formulation).
+// stops a solved run, core/kinematic_check.hpp; `unstable-equilibrium` when a solved static step
+// is an unstable equilibrium, core/static_stability.hpp). Throws InputError only for input the
+// formulation refuses (e.g. a rigid section in the displacement formulation).
 nlohmann::json run_case(const RunRequest& request);
 
 // Adds the result's error estimate (docs/error-estimates.md): companion runs of the same request;

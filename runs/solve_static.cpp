@@ -53,6 +53,11 @@ StaticSolve solve_static(const Model& model, StaticProblem& problem,
         }
         solver = kinsol_step_solver;
     }
+    std::string not_assessed;
+    if (recording.stability) {
+        not_assessed = stability_not_assessed(model);
+        settings.assess_stability = not_assessed.empty();
+    }
     StaticSolve solve;
     std::size_t reported = 0;
     const auto on_step = [&](const StepRecord& step) {
@@ -77,6 +82,7 @@ StaticSolve solve_static(const Model& model, StaticProblem& problem,
                 entry["centerline"] = std::move(*line);
             }
         }
+        if (recording.stability) entry["stability"] = observe_stability(step, not_assessed);
         result["steps"].push_back(std::move(entry));
         if (recording.frames) record_frames(problem);
     };

@@ -27,6 +27,8 @@ struct StaticRecording {
     // The kinematic check (core/kinematic_check.hpp) before the step is recorded: the first step
     // that fails it stops the solve (StaticSolve::unresolved).
     bool kinematic_check = false;
+    // Its `stability` (core/static_stability.hpp), or why it is not assessed.
+    bool stability = false;
     // A snapshot of the node frames for the ParaView output, when a recorder is installed
     // (frame_recorder.hpp).
     bool frames = false;

@@ -1,5 +1,6 @@
 #include "static_observers.hpp"
 
+#include "combinations/registry.hpp"
 #include "core/beam_rotation.hpp"
 #include "core/results.hpp"
 
@@ -51,6 +52,28 @@ std::optional<nlohmann::json> observe_sections(const Model& model, const StaticS
                             {"moment_material", vec(r.moment_material)}});
     }
     return nlohmann::json{{"load_factor", load_factor}, {"stations", stations}};
+}
+
+std::string stability_not_assessed(const Model& model) {
+    const std::string_view formulation =
+        comb::traits(model.discretization.formulation).no_stability_reason;
+    if (!formulation.empty()) return std::string(formulation);
+    if (model.has_follower_loads()) {
+        return "follower loads: the tangent is not symmetric, no energy criterion applies";
+    }
+    return {};
+}
+
+nlohmann::json observe_stability(const StepRecord& step, const std::string& not_assessed) {
+    const StaticStability& s = step.stability;
+    nlohmann::json j = {{"assessment", to_string(s.assessment)}};
+    if (s.assessment == StaticStability::Assessment::not_assessed) {
+        j["reason"] = s.reason.empty() ? not_assessed : s.reason;
+        return j;
+    }
+    j["negative_eigenvalues"] = s.negative;
+    if (!s.reason.empty()) j["reason"] = s.reason;
+    return j;
 }
 
 std::optional<KinematicDefect> observe_unresolved_kinematics(const StaticState& state) {

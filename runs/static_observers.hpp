@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/kinematic_check.hpp"
@@ -33,6 +34,16 @@ std::optional<nlohmann::json> observe_centerline(const StaticState& state);
 // when the formulation gives none.
 std::optional<nlohmann::json> observe_sections(const Model& model, const StaticState& state,
                                                double load_factor);
+
+// Why the stability of the model's static equilibria is not assessed: the formulation's reason
+// (combinations/registry.hpp), or follower loads (a tangent that is not symmetric); empty when
+// it is assessed (core/static_stability.hpp).
+std::string stability_not_assessed(const Model& model);
+
+// The stability of a reported step: {assessment, negative_eigenvalues (when assessed), reason
+// (when not assessed or critical)}; `not_assessed` is stability_not_assessed's reason when the
+// step was not assessed for it.
+nlohmann::json observe_stability(const StepRecord& step, const std::string& not_assessed);
 
 // The kinematic check (core/kinematic_check.hpp): the worst element when it is past the bound.
 std::optional<KinematicDefect> observe_unresolved_kinematics(const StaticState& state);

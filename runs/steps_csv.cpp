@@ -17,6 +17,8 @@ std::string steps_csv(const nlohmann::json& result) {
     os << std::setprecision(17);
     const nlohmann::json& steps = result["steps"];
     const bool estimate = has_estimate_columns(result);
+    // The last column: the step's stability assessment (core/static_stability.hpp).
+    const bool stability = steps[0].contains("stability");
     os << "load_factor";
     for (const auto& [name, point] : steps[0]["points"].items()) {
         for (const char* c : {"ux", "uy", "uz", "rx", "ry", "rz", "angle"}) {
@@ -24,6 +26,7 @@ std::string steps_csv(const nlohmann::json& result) {
         }
     }
     if (estimate) write_estimate_header(result, os);
+    if (stability) os << ",stability";
     os << "\n";
     for (const nlohmann::json& step : steps) {
         os << step["load_factor"].get<double>();
@@ -33,6 +36,7 @@ std::string steps_csv(const nlohmann::json& result) {
             os << "," << point["rotation_angle"].get<double>();
         }
         if (estimate) write_estimate_row(result, step, os);
+        if (stability) os << "," << step["stability"]["assessment"].get<std::string>();
         os << "\n";
     }
     return os.str();

@@ -214,6 +214,20 @@ void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
     os << std::setprecision(10) << "\n";
 }
 
+// A static step's stability (core/static_stability.hpp): "; stable", "; UNSTABLE: N negative
+// eigenvalues", "; stability critical: why" or "; stability not assessed: why".
+void print_stability(const nlohmann::json& s, std::ostream& os) {
+    const std::string a = s["assessment"].get<std::string>();
+    if (a == "stable") {
+        os << "; stable";
+    } else if (a == "unstable") {
+        os << "; UNSTABLE: " << s["negative_eigenvalues"] << " negative eigenvalue(s)";
+    } else {
+        os << "; stability " << (a == "critical" ? "critical" : "not assessed") << ": "
+           << s.value("reason", "");
+    }
+}
+
 void print_run_summary(const nlohmann::json& r, std::ostream& os) {
     os << cases::one_line(r["case"].get<std::string>()) << " | " << r["rotation"].get<std::string>()
        << " | " << r["formulation"].get<std::string>() << " | " << r["elements"]
@@ -233,6 +247,7 @@ void print_run_summary(const nlohmann::json& r, std::ostream& os) {
                << ", algebraic error <= " << c["error_bound"].get<double>()
                << std::setprecision(10);
         }
+        if (step.contains("stability")) print_stability(step["stability"], os);
         os << ")\n";
         for (const auto& [name, p] : step["points"].items()) {
             const auto& u = p["displacement"];

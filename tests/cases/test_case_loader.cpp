@@ -417,4 +417,30 @@ BOOST_AUTO_TEST_CASE(edit_distance_suggests_close_keys_only) {
     BOOST_TEST(cases::closest_match("zzz", {"elements", "section", "twist"}).empty());
 }
 
+// A section matrix is judged on its scaled couplings, not its units: a slender uncoupled section
+// given as a matrix in SI (EI/EA = 8e-15, a unit-dependent ratio that the unscaled eigenvalue
+// test refused as "not positive definite") is accepted; the same section with its two bending
+// stiffnesses coupled to 1 − 1e-13 (scaled condition number 2e13) is refused, as is an EA below
+// √DBL_MIN.
+BOOST_AUTO_TEST_CASE(section_matrices_are_judged_scaled_and_in_range) {
+    const auto with_bending = [](const std::string& coupling, const std::string& ea) {
+        return "name: slender\npoints:\n  root: [0, 0, 0]\n  tip: [1, 0, 0]\nsections:\n  wire:\n"
+               "    stiffness:\n      - [" +
+               ea +
+               ", 0, 0, 0, 0, 0]\n      - [0, 8.1e2, 0, 0, 0, 0]\n      - [0, 0, 8.1e2, 0, 0, 0]\n"
+               "      - [0, 0, 0, 2.4e-11, 0, 0]\n      - [0, 0, 0, 0, 1.75e-11, " +
+               coupling + "]\n      - [0, 0, 0, 0, " + coupling +
+               ", 1.75e-11]\nmembers:\n  beam: {from: root, to: tip, section: wire, elements: 4}\n"
+               "constraints:\n  root: clamped\nloads:\n  f: {point: tip, force: [0, 0, 1.0e-12]}\n"
+               "analysis:\n  type: static\n  load_factors: [1.0]\n";
+    };
+    BOOST_TEST(input_error([&] { load_case_text(with_bending("0", "2.1e3"), "w.yaml"); }).empty());
+    BOOST_TEST(input_error([&] {
+                   load_case_text(with_bending("1.7499999999999825e-11", "2.1e3"), "w.yaml");
+               }).find("numerically singular") != std::string::npos);
+    BOOST_TEST(input_error([&] {
+                   load_case_text(with_bending("0", "1e-160"), "w.yaml");
+               }).find("outside") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
