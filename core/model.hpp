@@ -217,7 +217,9 @@ struct Analysis {
     double accuracy = 0.0;
 };
 
-enum class Quadrature { automatic, reduced, full, gll };
+// The displacement formulation's stiffness quadrature (formulations/displacement/mesh.hpp);
+// `trapezoidal` places its points at the member's section stations (BeamDyn's `quadrature = 2`).
+enum class Quadrature { automatic, reduced, full, gll, trapezoidal };
 
 // The displacement formulation's own options (docs/displacement-formulation.md).
 struct DisplacementOptions {
@@ -249,6 +251,7 @@ struct Discretization {
     int order = 1;                  // element polynomial order p
     Quadrature quadrature = Quadrature::automatic;
     int quadrature_points = 0;  // > 0 overrides the rule's point count
+    int refine = 1;             // trapezoidal: equal divisions of each interval between stations
     DisplacementOptions displacement;
     MixedOptions mixed;
     // The chosen formulation's mass rule.

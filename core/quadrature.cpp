@@ -82,4 +82,28 @@ QuadratureRule gauss_lobatto_legendre(int n) {
     return rule;
 }
 
+QuadratureRule trapezoidal(const std::vector<double>& breaks, int refine) {
+    ROTBEAM_VERIFY(breaks.size() >= 2 && breaks.front() == -1.0 && breaks.back() == 1.0,
+                   "trapezoidal needs breakpoints from -1 to 1");
+    ROTBEAM_VERIFY(refine >= 1, "trapezoidal needs refine >= 1, got " + std::to_string(refine));
+    QuadratureRule rule;
+    rule.points.push_back(breaks.front());
+    for (size_t k = 1; k < breaks.size(); ++k) {
+        const double a = breaks[k - 1];
+        const double b = breaks[k];
+        ROTBEAM_VERIFY(b > a, "trapezoidal breakpoints must increase strictly");
+        // a + (b − a) j / refine, the last one b itself (no round-off drift onto the next break).
+        for (int j = 1; j < refine; ++j) rule.points.push_back(a + (b - a) * j / refine);
+        rule.points.push_back(b);
+    }
+    const size_t n = rule.points.size();
+    rule.weights.assign(n, 0.0);
+    for (size_t i = 0; i + 1 < n; ++i) {
+        const double half = 0.5 * (rule.points[i + 1] - rule.points[i]);
+        rule.weights[i] += half;
+        rule.weights[i + 1] += half;
+    }
+    return rule;
+}
+
 }  // namespace rotbeam

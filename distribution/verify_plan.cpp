@@ -42,7 +42,8 @@ std::string model_setting(const Model& model, const std::string& key) {
     if (key == "mass_rule") return std::string(choice_name(d.mass_rule()));
     if (key == "rescale") return d.displacement.rescale ? "true" : "false";
     if (key == "quadrature") {
-        static const char* names[] = {"automatic", "reduced", "full", "gll"};  // enum order
+        static const char* names[] = {"automatic", "reduced", "full", "gll",
+                                      "trapezoidal"};  // enum order
         return names[static_cast<int>(d.quadrature)];
     }
     if (key == "elements") {

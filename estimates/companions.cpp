@@ -23,7 +23,21 @@ CompanionPlan p_plan(const Model& model) {
     }
     Model companion = model;
     companion.discretization.order = p + 1;
-    plan.companions.push_back({"order " + std::to_string(p + 1), std::move(companion)});
+    std::string name = "order " + std::to_string(p + 1);
+    // The trapezoidal rule's error does not fall with p (its points stay at the stations) but
+    // as refine⁻²: the companion also doubles refine, so that the difference holds 3/4 of the
+    // run's quadrature error besides its p-error (docs/error-estimates.md).
+    if (model.discretization.quadrature == Quadrature::trapezoidal) {
+        const int refine = model.discretization.refine;
+        if (2 * refine > cases::kMaxRefine) {
+            plan.refusal = "the p+1 companion's refine " + std::to_string(2 * refine) +
+                           " would exceed the largest, " + std::to_string(cases::kMaxRefine);
+            return plan;
+        }
+        companion.discretization.refine = 2 * refine;
+        name += ", refine " + std::to_string(2 * refine);
+    }
+    plan.companions.push_back({name, std::move(companion)});
     return plan;
 }
 

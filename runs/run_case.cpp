@@ -35,6 +35,8 @@ const char* quadrature_name(Quadrature q) {
             return "full";
         case Quadrature::gll:
             return "gll";
+        case Quadrature::trapezoidal:
+            return "trapezoidal";
     }
     return "automatic";
 }

@@ -130,11 +130,18 @@ std::string parse_primary(DeckLines& in, BeamDynDeck& deck) {
     if (deck.dynamic && !(deck.rho_infinity >= 0.0 && deck.rho_infinity <= 1.0)) {
         in.fail("rhoinf", "must lie in [0, 1]");
     }
-    const int quadrature = in.integer("quadrature", 1, 2);
-    refuse_if(quadrature == 2, in, "quadrature",
-              "trapezoidal quadrature (2) is not modelled: rotbeam integrates with Gauss points");
+    deck.quadrature = in.integer("quadrature", 1, 2);
+    deck.quadrature_line = in.line();
     double unused = 0.0;
-    in.number_or_default("refine", unused);  // used only with trapezoidal quadrature
+    double refine = 1.0;  // DEFAULT: 1; used only with trapezoidal quadrature
+    in.number_or_default("refine", refine);
+    deck.refine_line = in.line();
+    if (deck.quadrature == 2) {
+        if (!(refine >= 1.0 && refine <= kMaxRefine && refine == std::floor(refine))) {
+            in.fail("refine", "must be a whole number from 1 to " + std::to_string(kMaxRefine));
+        }
+        deck.refine = static_cast<int>(refine);
+    }
     // Solver controls: rotbeam's own convergence criteria apply (docs/beamdyn-import.md).
     in.number_or_default("n_fact", unused);
     if (in.number_or_default("DTBeam", deck.beam_dt) && deck.dynamic && !(deck.beam_dt > 0.0)) {
@@ -157,6 +164,8 @@ std::string parse_primary(DeckLines& in, BeamDynDeck& deck) {
     if (in.peek_label() == "RotStates") in.flag("RotStates");  // linearization only
     in.comment("GEOMETRY PARAMETER");
     const int members = in.integer("member_total", 1, kMaxMembers);
+    refuse_if(deck.quadrature == 2 && members != 1, in, "member_total",
+              "trapezoidal quadrature takes one member only (as in BeamDyn)");
     const int key_points = in.integer("kp_total", 3, kMaxKeyPoints);
     if (members + 2 + key_points > in.lines_left()) {
         in.fail("kp_total", "the file has fewer lines than member_total and kp_total need");
@@ -191,7 +200,8 @@ std::string parse_primary(DeckLines& in, BeamDynDeck& deck) {
                          ": kp_xr kp_yr kp_zr: the first key point must be at the root (0, 0, 0)");
     }
     in.comment("MESH PARAMETER");
-    deck.order = in.integer("order_elem", 2, kMaxOrder);  // Gauss quadrature needs order ≥ 2
+    // Gauss quadrature needs order ≥ 2 (BeamDyn refuses 1 with it), trapezoidal ≥ 1.
+    deck.order = in.integer("order_elem", deck.quadrature == 2 ? 1 : 2, kMaxOrder);
     deck.order_line = in.line();
     in.comment("MATERIAL PARAMETER");
     const std::string blade = in.text("BldFile");

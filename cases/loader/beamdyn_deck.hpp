@@ -52,13 +52,18 @@ struct BeamDynDeck {
     std::vector<int> member_key_points;  // key points of each member (neighbours share one)
     std::vector<BeamDynKeyPoint> key_points;
     int order = 0;  // order_elem
+    // quadrature: 1 Gauss (order_elem + 1 points), 2 trapezoidal (at the blade stations, each
+    // interval divided into `refine` parts; one member only, as in BeamDyn).
+    int quadrature = 1;
+    int refine = 1;
     // blade
     int damping_type = 0;
     std::array<double, 6> damping{};  // mu1..mu6
     std::vector<BeamDynStation> stations;
     // The files and lines where the values came from, for messages about them.
     std::string driver_name, primary_name, blade_name;
-    int dcm_line = 0, stations_line = 0, key_points_line = 0, order_line = 0;
+    int dcm_line = 0, stations_line = 0, key_points_line = 0, order_line = 0, quadrature_line = 0,
+        refine_line = 0;
 };
 
 // Reads the driver file at `driver_path` and the files it names (relative to the file naming

@@ -178,6 +178,12 @@ MemberText Importer::member(size_t m, int first, const BeamDynMemberLine& line, 
         os << "    line: straight\n";
         os << "    e2: " << vec(frame_.to_global * Vec3::UnitY().cross(t0).normalized()) << "\n";
     } else {
+        if (deck_.quadrature == 2) {
+            throw InputError(deck_.primary_name + ":" + std::to_string(deck_.quadrature_line) +
+                             ": quadrature: trapezoidal quadrature on a curved member is not "
+                             "imported: BeamDyn places its points at the stations' fractions of "
+                             "the key points' z-parameter, rotbeam at fractions of arc length");
+        }
         if (!planar_xz) {
             fail_member(m, "kp_yr",
                         "a curved line that leaves the x-z plane is not imported: BeamDyn's "
@@ -239,7 +245,8 @@ MemberText Importer::member(size_t m, int first, const BeamDynMemberLine& line, 
             deck_.stations[k]);
     }
     add(1.0, "member-" + std::to_string(m + 1) + "-end", at_eta(deck_.stations, eta1));
-    bool constant = true;
+    // Trapezoidal quadrature places its points at the stations: keep them all.
+    bool constant = deck_.quadrature != 2;
     for (const auto& [section_name, s] : out.sections)
         constant = constant && same_properties(s, start);
     if (constant) {
@@ -264,6 +271,16 @@ MemberText Importer::member(size_t m, int first, const BeamDynMemberLine& line, 
 }
 
 std::string Importer::text(const std::string& name) {
+    // BeamDyn's trapezoidal rule has (stations − 1) refine + 1 points on its one element; fewer
+    // than its order + 1 nodes leave the element's matrices singular (mesh.hpp refuses them).
+    const size_t trapezoid_points = (deck_.stations.size() - 1) * deck_.refine + 1;
+    if (deck_.quadrature == 2 && trapezoid_points < static_cast<size_t>(deck_.order) + 1) {
+        throw InputError(deck_.primary_name + ":" + std::to_string(deck_.refine_line) +
+                         ": refine: trapezoidal quadrature with " +
+                         std::to_string(trapezoid_points) + " points on an element of order " +
+                         std::to_string(deck_.order) +
+                         " (fewer points than nodes: its matrices would be singular)");
+    }
     // Members, their lines and their share of the blade length (BeamDyn.f90, BD_MemberEta).
     std::vector<BeamDynMemberLine> lines;
     std::vector<int> firsts;
@@ -290,7 +307,17 @@ std::string Importer::text(const std::string& name) {
        << std::filesystem::path(deck_.driver_name).filename().string()
        << " by `rotbeam import beamdyn` (docs/beamdyn-import.md).\n";
     os << "name: " << name << "\n";
-    os << "description: \"BeamDyn deck " << name << ", imported\"\n";
+    os << "description: \"BeamDyn deck " << name << ", imported";
+    if (deck_.quadrature == 2) {
+        // The deck's quadrature is a choice of the displacement formulation's element; the mixed
+        // element has none (its equations are taken at the element mid-point), so a trapezoidal
+        // deck run there is the same beam with the mixed formulation's own discretization.
+        os << "; trapezoidal quadrature at its " << deck_.stations.size() << " stations, refine "
+           << deck_.refine
+           << ", in the displacement formulation; the mixed formulation ignores it (element "
+              "mid-points)";
+    }
+    os << "\"\n";
     os << "units: \"m, N, kg, s\"\n";
     os << "points:\n";
     first = 0;
@@ -360,8 +387,12 @@ std::string Importer::text(const std::string& name) {
     } else {
         os << "analysis:\n  type: static\n  load_factors: [1]\n";
     }
-    os << "discretization:\n  formulation: displacement\n  order: " << deck_.order
-       << "\n  quadrature: full\n";
+    os << "discretization:\n  formulation: displacement\n  order: " << deck_.order;
+    if (deck_.quadrature == 2) {
+        os << "\n  quadrature: trapezoidal\n  refine: " << deck_.refine << "\n";
+    } else {
+        os << "\n  quadrature: full\n";
+    }
     return os.str();
 }
 

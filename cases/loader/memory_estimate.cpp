@@ -53,8 +53,14 @@ MemoryEstimate estimate_memory(const Model& model) {
         // 6 per node, p nodes per element plus the points; an element couples its p+1 nodes.
         n = 6.0 * (elements * p + points);
         nonzeros = elements * std::pow(6.0 * (p + 1.0), 2);
-        const double q = d.quadrature_points > 0 ? d.quadrature_points : p + 1.0;
-        mesh = elements * q * (kBytesPerQuadraturePoint + 16.0 * (p + 1.0));
+        // Trapezoidal: each member's station intervals and element ends, divided by refine.
+        double points = 0.0;
+        for (const Member& m : model.members) {
+            points += d.quadrature == Quadrature::trapezoidal
+                          ? (static_cast<double>(m.sections.size()) + m.elements) * d.refine
+                          : m.elements * (d.quadrature_points > 0 ? d.quadrature_points : p + 1.0);
+        }
+        mesh = points * (kBytesPerQuadraturePoint + 16.0 * (p + 1.0));
     }
     std::vector<std::pair<double, std::string>> parts = {
         {nonzeros * kBytesPerNonzero, "the sparse Jacobian and its LU factors"},

@@ -11,7 +11,8 @@
 
 namespace rotbeam::cases {
 
-const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll"};
+const std::vector<std::string> kQuadratures = {"automatic", "reduced", "full", "gll",
+                                               "trapezoidal"};
 
 ParameterizationId read_rotation(const YamlReader& r, const YAML::Node& node,
                                  const std::string& key) {
@@ -307,7 +308,7 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     if (!n) return;
     const std::string k = "discretization";
     r.expect_map(n, k,
-                 {"formulation", "rotation", "order", "quadrature", "quadrature_points",
+                 {"formulation", "rotation", "order", "quadrature", "quadrature_points", "refine",
                   "interpolation", "update", "rescale", "mass_rule", "wm_map", "accuracy"});
     Discretization& d = model.discretization;
     if (n["formulation"])
@@ -323,6 +324,20 @@ void read_discretization(const YamlReader& r, const YAML::Node& root, Model& mod
     if (n["quadrature_points"])
         d.quadrature_points = r.positive_integer(n["quadrature_points"], k + ".quadrature_points",
                                                  kMaxQuadraturePoints);
+    // The trapezoidal rule's points are the section stations and their divisions: it has no
+    // point count, and `refine` belongs to it alone.
+    const bool trapezoidal = d.quadrature == Quadrature::trapezoidal;
+    if (trapezoidal && n["quadrature_points"]) {
+        r.fail(n["quadrature_points"], k + ".quadrature_points",
+               "not an option of quadrature trapezoidal (its points are the section stations, "
+               "divided by refine)");
+    }
+    if (n["refine"]) {
+        if (!trapezoidal) {
+            r.fail(n["refine"], k + ".refine", "an option of quadrature trapezoidal only");
+        }
+        d.refine = r.positive_integer(n["refine"], k + ".refine", kMaxRefine);
+    }
     refuse_other_formulations_keys(r, n, d.formulation);
     switch (d.formulation) {
         case Formulation::displacement:

@@ -15,7 +15,10 @@ Mesh build_mass_mesh(const Model& model) {
     d.quadrature_points = 0;
     switch (d.displacement.mass_rule) {
         case MassRule::consistent:
-            d.quadrature = Quadrature::full;
+            // A trapezoidal stiffness rule keeps its station points for the inertia too, as
+            // BeamDyn integrates both there: p+1 Gauss points would sample a tabulated section
+            // at p+1 places only.
+            if (d.quadrature != Quadrature::trapezoidal) d.quadrature = Quadrature::full;
             break;
         case MassRule::midpoint:
             d.quadrature = Quadrature::full;

@@ -8,7 +8,8 @@
 // eigenproblem is K x = ω² M x.
 //
 // Mass rule (Discretization::mass_rule), independent of the stiffness quadrature:
-//   consistent — p+1 Gauss points (exact for the N_a N_b products);
+//   consistent — p+1 Gauss points (exact for the N_a N_b products); with the trapezoidal
+//                stiffness rule that rule (at the section stations, as BeamDyn integrates);
 //   midpoint   — one Gauss point per element (the element mid-point, as GEBT's midpoint inertia);
 //   lumped     — p+1 Gauss–Lobatto–Legendre points (nodal quadrature: block-diagonal M).
 // Rotations at mass points: Q = exp(Σ_j N_j log(R_0ᵀ R_j)) R_0 from the element's nodal rotations

@@ -95,8 +95,34 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
     return e;
 }
 
+// The trapezoidal rule of element [s0, s1] of member m: breakpoints at the element's ends and at
+// every section station strictly inside it, each interval divided into d.refine parts. A station
+// closer than 1e-12 of the member length to an element end is that end (no sliver interval).
+QuadratureRule trapezoidal_rule(const Member& m, const Discretization& d, double L, double s0,
+                                double s1, int element) {
+    std::vector<double> breaks{-1.0};
+    for (const SectionStation& st : m.sections) {
+        const double s = st.s_fraction * L;
+        if (s > s0 + 1e-12 * L && s < s1 - 1e-12 * L)
+            breaks.push_back(2.0 * (s - s0) / (s1 - s0) - 1.0);
+    }
+    breaks.push_back(1.0);
+    QuadratureRule rule = trapezoidal(breaks, d.refine);
+    // Fewer points than nodes leave the element's mass singular and, below p points, its
+    // stiffness too (a strain of degree p − 1 vanishing at every point need not vanish).
+    const int points = static_cast<int>(rule.points.size());
+    if (points < d.order + 1) {
+        throw InputError("discretization.quadrature: trapezoidal: member '" + m.name +
+                         "', element " + std::to_string(element + 1) + " has " +
+                         std::to_string(points) + " points, fewer than its " +
+                         std::to_string(d.order + 1) +
+                         " nodes (its matrices would be singular; raise discretization.refine)");
+    }
+    return rule;
+}
+
 void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis& basis,
-                const QuadratureRule& rule) {
+                const QuadratureRule& fixed_rule) {
     const Member& m = model.members[member];
     check_member(model, m);
     const ReferenceGeometry g(model, member);
@@ -127,6 +153,9 @@ void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis&
         }
         nodes.push_back(left);
         node_s.push_back(s1);
+        const bool trapezoid = model.discretization.quadrature == Quadrature::trapezoidal;
+        const QuadratureRule rule =
+            trapezoid ? trapezoidal_rule(m, model.discretization, L, s0, s1, k) : fixed_rule;
         MeshElement e = make_element(model, member, g, s0, s1, basis, rule);
         e.nodes = std::move(nodes);
         e.node_s = std::move(node_s);
@@ -188,9 +217,14 @@ Mesh build_mesh(const Model& model) {
     mesh.order = d.order;
     mesh.point_node.assign(model.points.size(), -1);
     const LagrangeBasis basis(gauss_lobatto_legendre(d.order + 1).points);
-    bool gll = false;
-    const int nq = quadrature_point_count(d, gll);
-    const QuadratureRule rule = gll ? gauss_lobatto_legendre(nq) : gauss_legendre(nq);
+    // The trapezoidal rule depends on each element's stations (add_member); the others are one
+    // rule on [−1, 1] for every element.
+    QuadratureRule rule;
+    if (d.quadrature != Quadrature::trapezoidal) {
+        bool gll = false;
+        const int nq = quadrature_point_count(d, gll);
+        rule = gll ? gauss_lobatto_legendre(nq) : gauss_legendre(nq);
+    }
     for (int m = 0; m < static_cast<int>(model.members.size()); ++m) {
         add_member(mesh, model, m, basis, rule);
     }

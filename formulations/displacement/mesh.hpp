@@ -8,7 +8,11 @@
 // Stiffness quadrature (Discretization::quadrature): `automatic` = p+1 Gauss points for p ≥ 3,
 // p points (reduced) for p ≤ 2 (against shear locking); `full` = p+1 Gauss; `reduced` = p Gauss;
 // `gll` = p+1 GLL points (nodal quadrature). quadrature_points > 0 overrides the point count.
-// The same rule integrates the distributed loads and gravity.
+// `trapezoidal` = BeamDyn's `quadrature = 2` (docs/beamdyn-import.md): the composite trapezoidal
+// rule (core/quadrature.hpp) with breakpoints at the element's ends and at the member's section
+// stations inside it, each interval divided into `refine` parts; the section properties at the
+// division points are interpolated linearly as everywhere. Fewer points than p+1 in an element
+// are refused. The same rule integrates the distributed loads and gravity.
 //
 // Supports are eliminated: a constrained node has no unknowns (dof = −1); its state is set from
 // the load factor (clamped: u = 0, R = I; prescribed: u = λ d, R = exp(λ θ)).
@@ -64,7 +68,8 @@ struct Mesh {
     double max_member_length = 0.0;
 };
 
-// The number of stiffness quadrature points and whether they are GLL points (see above).
+// The number of stiffness quadrature points and whether they are GLL points (see above); not for
+// `trapezoidal`, whose count depends on each element's stations.
 int quadrature_point_count(const Discretization& d, bool& gll);
 
 // Throws InputError for models it cannot discretize (no members, missing stiffness, order < 1,

@@ -117,6 +117,13 @@ BOOST_AUTO_TEST_CASE(each_size_limit_is_inclusive) {
             BOOST_CHECK_THROW(load_case(path, {key + "=" + std::to_string(limit + 1)}), InputError);
         }
     }
+    // refine belongs to the trapezoidal rule: its limit is checked with it.
+    const std::string trapezoidal = "discretization.quadrature=trapezoidal";
+    const std::string refine = "discretization.refine=";
+    BOOST_CHECK_NO_THROW(
+        load_case(path, {trapezoidal, refine + std::to_string(cases::kMaxRefine)}));
+    BOOST_CHECK_THROW(
+        load_case(path, {trapezoidal, refine + std::to_string(cases::kMaxRefine + 1)}), InputError);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
