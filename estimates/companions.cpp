@@ -41,13 +41,27 @@ CompanionPlan p_plan(const Model& model) {
     return plan;
 }
 
-// The order p + 2 companion that checks the p-sequence's decay, below kSpectralOrder.
+// The order p + 2 companion that checks the p-sequence's decay, below kSpectralOrder: one step
+// beyond the p+1 companion as that one is beyond the run (with the trapezoidal rule, refine
+// doubled again), so that both differences fall at the same rates.
 void add_decay_companion(const Model& model, CompanionPlan& plan) {
     const int p = model.discretization.order;
     if (p >= kSpectralOrder || p + 2 > cases::kMaxOrder) return;
-    Model companion = model;
+    Model companion = plan.companions.front().model;
     companion.discretization.order = p + 2;
-    plan.companions.push_back({"order " + std::to_string(p + 2), std::move(companion)});
+    std::string name = "order " + std::to_string(p + 2);
+    if (model.discretization.quadrature == Quadrature::trapezoidal) {
+        const int refine = 2 * companion.discretization.refine;
+        if (refine > cases::kMaxRefine) {
+            plan.refusal = "the p+2 companion's refine " + std::to_string(refine) +
+                           " would exceed the largest, " + std::to_string(cases::kMaxRefine);
+            plan.companions.clear();
+            return;
+        }
+        companion.discretization.refine = refine;
+        name += ", refine " + std::to_string(refine);
+    }
+    plan.companions.push_back({name, std::move(companion)});
 }
 
 CompanionPlan h_plan(const Model& model) {

@@ -156,6 +156,20 @@ BOOST_AUTO_TEST_CASE(the_plan_chooses_the_method_per_formulation) {
     BOOST_TEST(plan_companions(dynamic).companions.empty());
 }
 
+// With the trapezoidal rule each companion doubles refine, the p+2 one again beyond the p+1 one,
+// so that both differences of the decay check fall with p and with refine alike.
+BOOST_AUTO_TEST_CASE(trapezoidal_companions_double_refine_at_each_step) {
+    Model m = two_point_model(Formulation::displacement);
+    m.discretization.quadrature = Quadrature::trapezoidal;
+    m.discretization.refine = 3;
+    const CompanionPlan p = plan_companions(m);
+    BOOST_TEST_REQUIRE(p.companions.size() == 2u);
+    BOOST_TEST(p.companions[0].model.discretization.refine == 6);
+    BOOST_TEST(p.companions[1].model.discretization.refine == 12);
+    BOOST_TEST(p.companions[1].model.discretization.order == 5);
+    BOOST_TEST(p.companions[1].label == "order 5, refine 12");
+}
+
 BOOST_AUTO_TEST_CASE(an_untrustworthy_run_gets_no_companions_and_says_why) {
     json result = static_result("diverged", {0.1});
     int calls = 0;
