@@ -424,7 +424,7 @@ int command_run(const Args& args) {
     // The run's solved path: its estimate's companions start from it (add_run_estimate).
     SolvedPath solved;
     RunRequest request{path, model, a.has("trace-newton"), limit};
-    request.path = &solved;
+    if (estimate == "on") request.path = &solved;
     nlohmann::json result;
     FrameRecorder frames;
     if (model.analysis.accuracy > 0.0) {
