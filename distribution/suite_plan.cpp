@@ -178,10 +178,14 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
             {"wall_seconds", 0.0}};
     }
     try {
-        const RunRequest request{run.case_path, model};
+        const bool estimate = run.estimate && model.analysis.estimate;
+        // The run's solved path: its estimate's companions start from it (add_run_estimate).
+        SolvedPath solved;
+        RunRequest request{run.case_path, model};
         if (run.as_run && model.analysis.accuracy > 0.0) return run_to_accuracy(request);
+        if (estimate) request.path = &solved;
         nlohmann::json result = run_case(request);
-        if (run.estimate && model.analysis.estimate) {
+        if (estimate) {
             add_run_estimate(request, result);
         } else {
             result["estimate"] = estimate_off();

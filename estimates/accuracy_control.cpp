@@ -10,6 +10,7 @@
 
 #include "core/static_driver.hpp"
 #include "estimates/accuracy_scale.hpp"
+#include "estimates/companions.hpp"
 
 namespace rotbeam::estimate {
 
@@ -22,10 +23,10 @@ using Clock = std::chrono::steady_clock;
 // (the successive-difference ratio below 0.5 of docs/error-estimates.md); then raising p is
 // the cheaper refinement (docs/accuracy-control.md, "Strategy", measured).
 constexpr double kSpectralRatio = 0.5;
-// Below this order the p-sequence on a coarse mesh is not yet spectral even for a smooth solution
-// (the locking bump of orders 2–3 on two elements, docs/studies.md; one element turning 2π decays
-// by only 0.65–0.73 per order up to order 4, then spectrally): p is raised regardless.
-constexpr int kMinSpectralOrder = 6;
+// Below kSpectralOrder (companions.hpp) the p-sequence on a coarse mesh is not yet spectral even
+// for a smooth solution (the locking bump of orders 2–3 on two elements, docs/studies.md; one
+// element turning 2π decays by only 0.65–0.73 per order up to order 4, then spectrally): p is
+// raised regardless, and the coarse start begins at that order.
 // At most this many orders are added at once: the prediction from ρ extrapolates a decay seen
 // over one or two orders.
 constexpr int kMaxOrderJump = 4;
@@ -117,11 +118,11 @@ Step refine_displacement(const Model& model, const std::vector<Attempt>& history
         }
     }
     const bool first_on_mesh = !rho.has_value();
-    if (p < budget.order && (first_on_mesh || p < kMinSpectralOrder || *rho < kSpectralRatio)) {
+    if (p < budget.order && (first_on_mesh || p < kSpectralOrder || *rho < kSpectralRatio)) {
         int jump = 1;
         std::string why = "first order step on this mesh";
-        if (rho && p < kMinSpectralOrder && *rho >= kSpectralRatio) {
-            why = "order below " + std::to_string(kMinSpectralOrder) + ", ratio " + number(*rho);
+        if (rho && p < kSpectralOrder && *rho >= kSpectralRatio) {
+            why = "order below " + std::to_string(kSpectralOrder) + ", ratio " + number(*rho);
         } else if (rho) {
             jump = static_cast<int>(std::ceil(std::log(target / now.worst) / std::log(*rho)));
             jump = std::clamp(jump, 1, kMaxOrderJump);
@@ -199,7 +200,7 @@ Model coarse_start(const Model& model) {
     Model start = model;
     if (model.discretization.formulation != Formulation::displacement) return start;
     for (Member& m : start.members) m.elements = 1;
-    start.discretization.order = std::max(model.discretization.order, kMinSpectralOrder);
+    start.discretization.order = std::max(model.discretization.order, kSpectralOrder);
     return start;
 }
 

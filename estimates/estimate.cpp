@@ -175,6 +175,15 @@ void mode_estimates(const Comparison& cmp, const ModePairing& pair_modes, json& 
     }
 }
 
+// The Newton iterations of a run's load steps, summed (its cost; 0 for a run without steps).
+int newton_iterations(const json& result) {
+    int n = 0;
+    for (const json& step : result.value("steps", json::array())) {
+        n += step.value("newton_iterations", 0);
+    }
+    return n;
+}
+
 }  // namespace
 
 int total_elements(const Model& model) {
@@ -234,6 +243,7 @@ void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun
                                    {"order", c.model.discretization.order},
                                    {"status", r.value("status", std::string("error"))},
                                    {"message", r.value("message", std::string())},
+                                   {"newton_iterations", newton_iterations(r)},
                                    {"wall_seconds", dt}});
         cmp.companions.push_back({c.label, std::move(r)});
     }

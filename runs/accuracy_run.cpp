@@ -57,10 +57,7 @@ class RunCache {
         request.start = warm_.get();
         request.path = path.get();
         nlohmann::json r = run_case(request);
-        if (has_solution(r.value("status", std::string())) && !path->states.empty() &&
-            path->states.size() == model.analysis.statics.load_factors.size()) {
-            warm_ = std::move(path);
-        }
+        if (solved_every_step(r, *path, model)) warm_ = std::move(path);
         runs_[key] = r;
         return r;
     }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -151,10 +152,30 @@ std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
 
 }  // namespace
 
+bool solved_every_step(const nlohmann::json& result, const SolvedPath& path, const Model& model) {
+    return has_solution(result.value("status", std::string())) && !path.states.empty() &&
+           path.states.size() == model.analysis.statics.load_factors.size();
+}
+
 void add_run_estimate(const RunRequest& request, nlohmann::json& result) {
+    // The companions run in the plan's order (p+1, then p+2): each starts from the last solved
+    // path of the chain. Formulations that record no path (mixed) and analyses that take no start
+    // (modal, dynamic) run as without it.
+    const SolvedPath* start =
+        request.path && solved_every_step(result, *request.path, request.model) ? request.path
+                                                                                : nullptr;
+    std::unique_ptr<SolvedPath> warm;
     const estimate::CompanionRun companion_run = [&](const Model& companion) {
-        return run_case(
-            RunRequest{request.case_path, companion, false, request.time_limit_seconds});
+        auto path = std::make_unique<SolvedPath>();
+        RunRequest r{request.case_path, companion, false, request.time_limit_seconds};
+        r.start = start;
+        r.path = path.get();
+        nlohmann::json out = run_case(r);
+        if (solved_every_step(out, *path, companion)) {
+            warm = std::move(path);
+            start = warm.get();
+        }
+        return out;
     };
     if (request.model.analysis.kind == AnalysisKind::dynamic) {
         estimate::add_dynamic_estimate(request.model, result, companion_run);

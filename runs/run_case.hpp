@@ -33,8 +33,16 @@ nlohmann::json run_case(const RunRequest& request);
 
 // Adds the result's error estimate (docs/error-estimates.md): companion runs of the same request;
 // statics and modes by estimates/estimate.hpp (modes paired across meshes by shape), dynamics by
-// estimates/history_estimate.hpp (which may set the status `inaccurate`).
+// estimates/history_estimate.hpp (which may set the status `inaccurate`). Warm start of the static
+// companions (docs/error-estimates.md, "Warm start of the companions"): when request.path holds the
+// run's solved path (run_case recorded it) the first companion starts from it, and each further
+// companion from the last one that solved every load step (solved_every_step).
 void add_run_estimate(const RunRequest& request, nlohmann::json& result);
+
+// Whether `path`, recorded by the run of `model` that gave `result`, holds a solved state at every
+// load step: the warm start another discretization of the same model takes.
+bool solved_every_step(const nlohmann::json& result, const SolvedPath& path, const Model& model);
+
 // The `estimate` of a run with the estimate switched off.
 nlohmann::json estimate_off();
 

@@ -436,7 +436,10 @@ int command_run(const Args& args) {
     }
     check_vtk_request(a, model);
     const std::optional<Mat3> beamdyn_dcm = beamdyn_frame_request(a, path);
-    const RunRequest request{path, model, a.has("trace-newton"), limit};
+    // The run's solved path: its estimate's companions start from it (add_run_estimate).
+    SolvedPath solved;
+    RunRequest request{path, model, a.has("trace-newton"), limit};
+    if (estimate == "on") request.path = &solved;
     nlohmann::json result;
     FrameRecorder frames;
     if (model.analysis.accuracy > 0.0) {

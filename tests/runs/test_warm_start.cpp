@@ -7,7 +7,9 @@
 // guess must continue their chart) with the combinations that solve it on one element at order 7
 // (the others diverge there with or without a warm start, which is not what is tested here).
 #define BOOST_TEST_MODULE rotbeam warm start
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -127,4 +129,89 @@ BOOST_AUTO_TEST_CASE(rollup_warm_start_continues_the_chart_past_pi) {
     for (const Combination& c : solved) {
         check_warm_start("cantilever-moment", c, {"analysis.load_factors=[2.0]"}, 7);
     }
+}
+
+namespace {
+
+// The summed Newton iterations of the estimate's companions.
+int companion_iterations(const json& result) {
+    int n = 0;
+    for (const json& c : result["estimate"]["companions"]) n += c["newton_iterations"].get<int>();
+    return n;
+}
+
+// The largest error bound of the run's load steps: its states' scaled algebraic error, at least
+// the Newton tolerance (docs/solver-convergence.md).
+double largest_bound(const json& run, double newton) {
+    double bound = newton;
+    for (const json& s : run["steps"]) {
+        bound = std::max(bound, s["convergence"]["error_bound"].get<double>());
+    }
+    return bound;
+}
+
+}  // namespace
+
+// The estimate's companions (add_run_estimate, the path of `rotbeam run`) on the 45° bend's
+// catalog mesh at its order 3: order 4 starts from the run's solved path, order 5 (the decay
+// check) from order 4's. The estimate must be the cold companions' within the Newton tolerance,
+// with the same reliability, for far fewer Newton iterations.
+BOOST_AUTO_TEST_CASE(estimate_companions_start_from_the_run_and_from_each_other) {
+    const Model model = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/bend-45.yaml", {},
+                                  CaseParts::case_file);
+    BOOST_TEST_REQUIRE(model.discretization.order == 3);
+    SolvedPath path;
+    RunRequest request{"", model};
+    request.path = &path;
+    const json run = run_case(request);
+    BOOST_TEST_REQUIRE(has_solution(run["status"].get<std::string>()));
+    json warm = run;
+    add_run_estimate(request, warm);
+    json cold = run;
+    add_run_estimate(RunRequest{"", model}, cold);
+    BOOST_TEST_REQUIRE(warm["estimate"]["status"] == "estimated");
+    BOOST_TEST_REQUIRE(cold["estimate"]["status"] == "estimated");
+    BOOST_TEST_REQUIRE(warm["estimate"]["companions"].size() == 2u);
+
+    // Each estimate is a norm of differences between the run's value (the same in both) and
+    // the companions' values (|q_p − q_p+1|, or the larger of that and |q_p − q_p+2|): it moves by
+    // at most the largest change of a companion value. Each companion's state, warm or cold, is
+    // within its error bound of the same discrete solution, so the two differ by at most the sum
+    // of the bounds: 2 (cold and warm) × 2 companions × the largest bound, the bounds taken from
+    // the same two companion runs made cold here (the warm ones stop at least as close: each
+    // accepts only a state within its own bound, which the acceptance rule makes of the same
+    // size). Displacements are scaled by the member length as the bounds are.
+    Model p1 = model, p2 = model;
+    p1.discretization.order = 4;
+    p2.discretization.order = 5;
+    const double newton = model.solver.increment_tolerance;
+    const double bound = 4.0 * std::max(largest_bound(run_case(RunRequest{"", p1}), newton),
+                                        largest_bound(run_case(RunRequest{"", p2}), newton));
+    const double length = estimate::reference_length(model);
+    for (std::size_t k = 0; k < run["steps"].size(); ++k) {
+        const json& a = cold["steps"][k]["estimate"];
+        const json& b = warm["steps"][k]["estimate"];
+        for (const auto& [point, quantities] : a.items()) {
+            BOOST_TEST_CONTEXT("step " << k << ", " << point) {
+                for (const char* q : {"displacement", "rotation"}) {
+                    const double scale = std::string(q) == "displacement" ? length : 1.0;
+                    const double ea = quantities[q]["error"].get<double>();
+                    const double eb = b[point][q]["error"].get<double>();
+                    BOOST_TEST(std::abs(ea - eb) / scale <= bound);
+                    BOOST_TEST(quantities[q]["reliable"] == b[point][q]["reliable"]);
+                }
+            }
+        }
+    }
+    // Warm-started: each companion's guess is within the order-3 (resp. 4) discretization
+    // error of its solution, so each load step needs the few quadratically converging
+    // corrections argued above (≤ 8); the cold companions step each load from the last
+    // converged state with sub-steps.
+    const int steps = static_cast<int>(run["steps"].size());
+    const int warm_iterations = companion_iterations(warm);
+    const int cold_iterations = companion_iterations(cold);
+    BOOST_TEST_MESSAGE("companion Newton iterations: warm " << warm_iterations << ", cold "
+                                                            << cold_iterations);
+    BOOST_TEST(warm_iterations <= 2 * 8 * steps);
+    BOOST_TEST(warm_iterations < cold_iterations / 4);
 }
