@@ -15,6 +15,7 @@
 
 #include "core/dae_driver.hpp"
 #include "core/errors.hpp"
+#include "core/output_times.hpp"
 #include "core/static_driver.hpp"
 #include "core/step_observer.hpp"
 #include "core/step_size_control.hpp"
@@ -178,7 +179,8 @@ template <class Run, class Control>
 bool run_adaptive_steps(Run& run, const DaeSettings& s, Control& control, double first_step,
                         const DaeOutput& output, DaeOutcome& outcome) {
     const double every = s.output_interval > 0.0 ? s.output_interval : s.time_step;
-    double next_output = std::min(s.start_time + every, s.end_time);
+    OutputTimes outputs(s.start_time, every);
+    double next_output = std::min(outputs.next(), s.end_time);
     double h = first_step;
     int cuts = 0;
     while (run.time() < s.end_time) {
@@ -218,7 +220,8 @@ bool run_adaptive_steps(Run& run, const DaeSettings& s, Control& control, double
         run.accept(to, hs);
         if (lands) {
             if (output) output(run.time(), run.x(), run.xdot(), run.iterations());
-            next_output = std::min(next_output + every, s.end_time);
+            outputs.advance();
+            next_output = std::min(outputs.next(), s.end_time);
             if (s.end_time - run.time() <= 1e-9 * every) break;
         }
     }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/output_times.hpp"
 #include "core/step_observer.hpp"
 #include "core/step_size_control.hpp"
 #include "core/time_limit.hpp"
@@ -128,7 +129,7 @@ bool run_fixed(Stepper& stepper, const TimeIntegrationSettings& settings,
     const double span = settings.end_time - settings.start_time;
     const long steps = std::max(1L, std::lround(std::ceil(span / h0 - 1e-9)));
     const double every = settings.output_interval > 0.0 ? settings.output_interval : h0;
-    double next_output = settings.start_time + every;
+    OutputTimes outputs(settings.start_time, every);
     for (long n = 1; n <= steps; ++n) {
         const double t_next =
             n == steps ? settings.end_time : settings.start_time + static_cast<double>(n) * h0;
@@ -150,9 +151,8 @@ bool run_fixed(Stepper& stepper, const TimeIntegrationSettings& settings,
             if (last) break;
         }
         const double t = stepper.time();
-        if (n == steps || t >= next_output - 1e-9 * h0) {
+        if (outputs.due(t, 1e-9 * h0) || n == steps) {
             if (on_output) on_output({t, stepper.iterations()});
-            while (next_output <= t + 1e-9 * h0) next_output += every;
         }
     }
     return true;
@@ -167,7 +167,8 @@ bool run_adaptive(Stepper& stepper, int error_order, const TimeIntegrationSettin
                                   error_order};
     const double every =
         settings.output_interval > 0.0 ? settings.output_interval : settings.time_step;
-    double next_output = std::min(settings.start_time + every, settings.end_time);
+    OutputTimes outputs(settings.start_time, every);
+    double next_output = std::min(outputs.next(), settings.end_time);
     double h = settings.time_step;
     int cuts = 0;
     while (stepper.time() < settings.end_time) {
@@ -205,7 +206,8 @@ bool run_adaptive(Stepper& stepper, int error_order, const TimeIntegrationSettin
         if (!stepper.accept(to, hs)) return false;
         if (lands) {
             if (on_output) on_output({stepper.time(), stepper.iterations()});
-            next_output = std::min(next_output + every, settings.end_time);
+            outputs.advance();
+            next_output = std::min(outputs.next(), settings.end_time);
             if (settings.end_time - stepper.time() <= 1e-9 * every) break;
         }
     }
