@@ -17,7 +17,8 @@ std::string steps_csv(const nlohmann::json& result) {
     os << std::setprecision(17);
     const nlohmann::json& steps = result["steps"];
     const bool estimate = has_estimate_columns(result);
-    // The last column: the step's stability assessment (core/static_stability.hpp).
+    // After the points: the step's stability assessment (core/static_stability.hpp); the estimate's
+    // columns, when estimated, come last (as in every CSV of a result: docs/error-estimates.md).
     const bool stability = steps[0].contains("stability");
     os << "load_factor";
     for (const auto& [name, point] : steps[0]["points"].items()) {
@@ -25,8 +26,8 @@ std::string steps_csv(const nlohmann::json& result) {
             os << "," << name << "_" << c;
         }
     }
-    if (estimate) write_estimate_header(result, os);
     if (stability) os << ",stability";
+    if (estimate) write_estimate_header(result, os);
     os << "\n";
     for (const nlohmann::json& step : steps) {
         os << step["load_factor"].get<double>();
@@ -35,8 +36,8 @@ std::string steps_csv(const nlohmann::json& result) {
             for (int i = 0; i < 3; ++i) os << "," << point["rotation_vector"][i].get<double>();
             os << "," << point["rotation_angle"].get<double>();
         }
-        if (estimate) write_estimate_row(result, step, os);
         if (stability) os << "," << step["stability"]["assessment"].get<std::string>();
+        if (estimate) write_estimate_row(result, step, os);
         os << "\n";
     }
     return os.str();
