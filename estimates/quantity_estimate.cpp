@@ -11,6 +11,15 @@ namespace {
 // Richardson's factor: e_h = e₁ / (1 − 2^−r).
 double richardson(double e1, double order) { return e1 / (1.0 - std::exp2(-order)); }
 
+// Both successive differences at or below the round-off floor: the value is unchanged under
+// refinement, and the estimate is the larger difference (reliable).
+bool at_round_off(double a, double b, double floor, QuantityEstimate& e) {
+    if (a > floor || b > floor) return false;
+    e.error = std::max(a, b);
+    e.reason = "unchanged under refinement to within the round-off floor";
+    return true;
+}
+
 }  // namespace
 
 QuantityEstimate p_refinement(double difference) {
@@ -21,11 +30,7 @@ QuantityEstimate p_refinement(double difference) {
 
 QuantityEstimate p_refinement(double d1, double d2, double d02, double floor) {
     QuantityEstimate e;
-    if (d1 <= floor && d2 <= floor) {
-        e.error = std::max(d1, d2);
-        e.reason = "unchanged under refinement to within the round-off floor";
-        return e;
-    }
+    if (at_round_off(d1, d2, floor, e)) return e;
     if (d2 < kDecayRatio * d1) {
         e.error = d1;
         return e;
@@ -42,11 +47,7 @@ QuantityEstimate p_refinement(double d1, double d2, double d02, double floor) {
 
 QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor) {
     QuantityEstimate e;
-    if (e1 <= floor && e2 <= floor) {
-        e.error = std::max(e1, e2);
-        e.reason = "unchanged under refinement to within the round-off floor";
-        return e;
-    }
+    if (at_round_off(e1, e2, floor, e)) return e;
     std::ostringstream why;
     why.precision(3);
     if (!(e2 < e1) || e2 <= floor) {
