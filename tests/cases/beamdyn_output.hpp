@@ -1,5 +1,6 @@
-// Reading BeamDyn's driver output (bd_driver.out, shipped with the decks in tests/data/beamdyn):
-// the tests compare rotbeam with the last row BeamDyn printed.
+// The BeamDyn decks shipped in tests/data/beamdyn, and reading BeamDyn's driver output
+// (bd_driver.out, shipped with some of them): the tests compare rotbeam with the last row BeamDyn
+// printed.
 #pragma once
 
 #include <boost/test/unit_test.hpp>
@@ -11,6 +12,9 @@
 #include <vector>
 
 namespace rotbeam::test {
+
+// The folder of the shipped decks (one folder per deck, its driver file bd_driver.inp).
+inline const std::string kBeamDynDecks = std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/beamdyn/";
 
 // The last row of a BeamDyn output file, by channel name (the header row starts with "Time", the
 // units row with "(s)").

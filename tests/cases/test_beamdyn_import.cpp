@@ -26,11 +26,12 @@ using namespace rotbeam;
 
 namespace {
 
-const std::string kDecks = std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/beamdyn/";
 const char* const kStaticDecks[] = {"bd_static_cantilever_beam", "bd_static_twisted_with_k1",
                                     "bd_isotropic_rollup", "bd_curved_beam"};
 
-std::string driver(const std::string& deck) { return kDecks + deck + "/bd_driver.inp"; }
+std::string driver(const std::string& deck) {
+    return test::kBeamDynDecks + deck + "/bd_driver.inp";
+}
 
 struct Tip {
     Vec3 u = Vec3::Zero();
@@ -250,7 +251,8 @@ BOOST_AUTO_TEST_CASE(rollup_equals_the_exact_arc_in_every_combination) {
 // rounding, half a unit of the last digit (5e-9), is the whole tolerance. rotbeam runs BeamDyn's
 // discretization; its own discretization and algebraic errors are below 1e-12 (previous test).
 BOOST_AUTO_TEST_CASE(rollup_agrees_with_beamdyn_to_its_printed_digits) {
-    const auto bd = test::last_output_row(kDecks + "bd_isotropic_rollup/bd_driver.out");
+    const auto bd =
+        test::last_output_row(test::kBeamDynDecks + "bd_isotropic_rollup/bd_driver.out");
     const Tip t = tip_of(run(load_case(driver("bd_isotropic_rollup"))));
     const Vec3 bd_u(bd.at("TipTDxr"), bd.at("TipTDyr"), bd.at("TipTDzr"));
     const Vec3 bd_wm(bd.at("TipRDxr"), bd.at("TipRDyr"), bd.at("TipRDzr"));
@@ -273,7 +275,7 @@ BOOST_AUTO_TEST_CASE(rollup_agrees_with_beamdyn_to_its_printed_digits) {
 // - the current construction's answer is printed next to it with its estimate: it differs from
 //   the 2019 output by about 0.26 m in x (2 %), the change of geometry (the fit is 0.03 % longer).
 BOOST_AUTO_TEST_CASE(curved_beam_against_the_beamdyn_output) {
-    const auto bd = test::last_output_row(kDecks + "bd_curved_beam/bd_driver.out");
+    const auto bd = test::last_output_row(test::kBeamDynDecks + "bd_curved_beam/bd_driver.out");
     const Vec3 bd_u(bd.at("TipTDxr"), bd.at("TipTDyr"), bd.at("TipTDzr"));
     // The 2019 reference line: natural cubic spline x(z) through the key points (z, x):
     // (0, 0), (38.2683, 7.61205), (70.7107, 29.2893); second derivative M at the middle.
@@ -369,7 +371,7 @@ BOOST_AUTO_TEST_CASE(dynamic_deck_with_a_rotating_root_runs_in_every_parameteriz
 // The bad decks (tests/data/beamdyn/bad/): each driver is refused with ONE line naming the file
 // and containing the expected fragment (expected.txt), as an InputError.
 BOOST_AUTO_TEST_CASE(bad_decks_are_refused_with_one_line) {
-    const std::string dir = kDecks + "bad/";
+    const std::string dir = test::kBeamDynDecks + "bad/";
     std::ifstream in(dir + "expected.txt");
     BOOST_REQUIRE(in.good());
     int checked = 0;

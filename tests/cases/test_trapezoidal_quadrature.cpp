@@ -15,12 +15,11 @@
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/mesh.hpp"
 #include "runs/run_case.hpp"
+#include "tests/cases/beamdyn_output.hpp"
 
 using namespace rotbeam;
 
 namespace {
-
-const std::string kDecks = std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/beamdyn/";
 
 // A prismatic cantilever along x, L = 10 m, EI = 100 N·m² (the BeamDyn cantilever deck's
 // section), one element of order 5, a small dead tip force (linear range: tip deflection
@@ -101,9 +100,9 @@ BOOST_AUTO_TEST_CASE(prismatic_answer_tends_to_gauss_as_refine_squared) {
 // consistent mass rule the same points.
 BOOST_AUTO_TEST_CASE(imported_5mw_points_are_beamdyns_stations) {
     const cases::BeamDynDeck deck =
-        cases::read_beamdyn_deck(kDecks + "bd_5MW_dynamic/bd_driver.inp");
+        cases::read_beamdyn_deck(test::kBeamDynDecks + "bd_5MW_dynamic/bd_driver.inp");
     BOOST_TEST_REQUIRE(deck.stations.size() == 49u);
-    const Model model = load_case(kDecks + "bd_5MW_dynamic/bd_driver.inp");
+    const Model model = load_case(test::kBeamDynDecks + "bd_5MW_dynamic/bd_driver.inp");
     BOOST_TEST_REQUIRE((model.discretization.quadrature == Quadrature::trapezoidal));
     BOOST_TEST(model.discretization.refine == 1);
     const form::Mesh mesh = form::build_mesh(model);
@@ -129,7 +128,7 @@ BOOST_AUTO_TEST_CASE(imported_5mw_points_are_beamdyns_stations) {
 // one gets its ends and the stations inside, and too few points for an element's nodes is
 // refused naming the key.
 BOOST_AUTO_TEST_CASE(refine_divides_station_intervals_and_too_few_points_are_refused) {
-    const std::string deck = kDecks + "bd_5MW_dynamic/bd_driver.inp";
+    const std::string deck = test::kBeamDynDecks + "bd_5MW_dynamic/bd_driver.inp";
     const form::Mesh refined = form::build_mesh(load_case(deck, {"discretization.refine=3"}));
     BOOST_TEST(refined.elements[0].qp.size() == 48u * 3u + 1u);
     const form::Mesh four = form::build_mesh(load_case(deck, {"members.*.elements=4"}));
@@ -155,7 +154,7 @@ BOOST_AUTO_TEST_CASE(refine_divides_station_intervals_and_too_few_points_are_ref
 // (damp_type 1, mu ≠ 0) is refused by name there, never dropped.
 BOOST_AUTO_TEST_CASE(nrel_5mw_decks_run_in_every_parameterization) {
     for (const char* name : {"bd_5MW_dynamic", "bd_5MW_dynamic_gravity_Az00"}) {
-        const std::string deck = kDecks + name + "/bd_driver.inp";
+        const std::string deck = test::kBeamDynDecks + name + "/bd_driver.inp";
         const std::string text = cases::import_beamdyn(deck);
         BOOST_TEST_CONTEXT(name) {
             BOOST_TEST(text.find("  quadrature: trapezoidal\n  refine: 1\n") != std::string::npos);
