@@ -44,9 +44,10 @@ BOOST_AUTO_TEST_SUITE(case_loader)
 
 BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
     const std::vector<std::string> catalog = {
-        "cantilever-moment", "cantilever-moment-4",  "bend-45",       "joined-beam",
-        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",   "helix",
-        "helix-precessing",  "tip-load-cantilever",  "free-vibration"};
+        "cantilever-moment", "cantilever-moment-4",  "bend-45",        "joined-beam",
+        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",    "helix",
+        "helix-precessing",  "tip-load-cantilever",  "free-vibration", "nrel5mw-gravity",
+        "nrel5mw-rotating"};
     for (const std::string& name : catalog) {
         BOOST_TEST_CONTEXT(name) {
             const Model m = load_case(case_path(name));
