@@ -167,6 +167,27 @@ BOOST_AUTO_TEST_CASE(expected_stops_and_narrowed_references_are_validated) {
     BOOST_TEST(none.find("no combination is selected") != std::string::npos, none);
 }
 
+// applies_to names the trapezoidal rule's refine like any discretization key: read as the number,
+// and the override the gate makes of it (discretization.<key>=<value>, verify_plan.cpp) loads.
+BOOST_AUTO_TEST_CASE(applies_to_names_the_trapezoidal_refine) {
+    std::ifstream in(case_path("cantilever-moment"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const Model m =
+        load_case_text(buffer.str() +
+                           "references:\n  r:\n    quantity: displacement\n"
+                           "    point: tip\n    load_factor: 0.4\n    value: [0, 0, 0]\n"
+                           "    tolerance: 1\n    justification: j\n    source: s\n"
+                           "    applies_to: {quadrature: trapezoidal, refine: 4}\n",
+                       "t.yaml");
+    BOOST_TEST(m.references.at(0).applies_to.at("refine") == "4");
+    const Model refined =
+        load_case(case_path("cantilever-moment"),
+                  {"discretization.quadrature=trapezoidal",
+                   "discretization.refine=" + m.references.at(0).applies_to.at("refine")});
+    BOOST_TEST(refined.discretization.refine == 4);
+}
+
 BOOST_AUTO_TEST_CASE(bend45_is_the_exact_arc_with_a_unit_tip_force) {
     const Model m = load_case(case_path("bend-45"));
     const ReferenceGeometry g(m, 0);
