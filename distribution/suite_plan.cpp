@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/deck_case.hpp"
 #include "combinations/registry.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
@@ -134,7 +135,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
         // Static, modal and dynamic cases alike; --quick keeps two static ones (no dynamics).
         if (quick && name != "cantilever-moment" && name != "bend-45") continue;
         const Model model = load_case(path, {});
-        const std::string text = read_text_file(path);
+        const std::string text = cases::case_input_text(path);
         for (const comb::Combination& c : comb::all_combinations(false)) {
             PlannedRun run{name, path, std::string(param::name_of(c.rotation)),
                            std::string(choice_name(c.formulation))};

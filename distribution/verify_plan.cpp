@@ -38,6 +38,7 @@ std::string model_setting(const Model& model, const std::string& key) {
     }
     if (key == "order") return std::to_string(d.order);
     if (key == "quadrature_points") return std::to_string(d.quadrature_points);
+    if (key == "refine") return std::to_string(d.refine);
     if (key == "update") return std::string(choice_name(d.displacement.update));
     if (key == "mass_rule") return std::string(choice_name(d.mass_rule()));
     if (key == "rescale") return d.displacement.rescale ? "true" : "false";

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/deck_case.hpp"
 #include "core/choices.hpp"
 #include "core/continuum/continuum.hpp"
 #include "core/oracles/rollup.hpp"
@@ -88,16 +89,46 @@ const Model* model_of(const std::string& case_name) {
     return it->second ? &*it->second : nullptr;
 }
 
+// The refusals a catalog case states (cases/loader/deck_case.hpp), read once per case.
+const std::map<Formulation, std::string>& stated_refusals_of(const std::string& case_name) {
+    static std::map<std::string, std::map<Formulation, std::string>> refusals;
+    auto it = refusals.find(case_name);
+    if (it == refusals.end()) {
+        std::map<Formulation, std::string> r;
+        try {
+            r = cases::stated_refusals(resolve_case_path(case_name));
+        } catch (const std::exception&) {
+        }
+        it = refusals.emplace(case_name, std::move(r)).first;
+    }
+    return it->second;
+}
+
 struct Verdict {
-    std::string kind;  // met, unchecked, stopped, unstable, inaccurate, not run
-    std::string text;  // the cell's words
+    // met, unchecked, stopped, unstable, inaccurate, refused as stated, not run
+    std::string kind;
+    std::string text;   // the cell's words
+    std::string why{};  // refused as stated: the stated words of the refusal
 };
 
 Verdict verdict(const nlohmann::json* run, const std::string& case_name,
                 const nlohmann::json& checks) {
     if (!run) return {"not run", "not run"};
     const std::string status = run->value("status", "error");
-    if (status == "error") return {"not run", "not run"};
+    if (status == "error") {
+        // A formulation the case states it refuses, refused in those words: not a hole.
+        const std::map<Formulation, std::string> refusals = stated_refusals_of(case_name);
+        const std::optional<Formulation> f =
+            parse_choice<Formulation>(run->value("formulation", ""));
+        if (f) {
+            const auto stated = refusals.find(*f);
+            if (stated != refusals.end() &&
+                run->value("message", "").find(stated->second) != std::string::npos) {
+                return {"refused as stated", "refused as stated", stated->second};
+            }
+        }
+        return {"not run", "not run"};
+    }
     if (status == "inaccurate") return {"inaccurate", "inaccurate: its estimate"};
     if (status == kUnstableEquilibrium) return {"unstable", "unstable equilibrium"};
     int passed = 0, failed = 0;
@@ -139,6 +170,13 @@ Verdict verdict(const nlohmann::json* run, const std::string& case_name,
         }
     }
     if (passed > 0) return {"met", "met (" + std::to_string(passed) + ")"};
+    // No accuracy stated for the formulation: the estimate still shows, so that a large
+    // estimated error does not stand behind a bare "unchecked".
+    if (model && (estimated == "estimated" || estimated == "partial")) {
+        const estimate::AccuracyMeasure m = estimate::measure_accuracy(*model, *run, 1.0);
+        if (m.quantities > 0)
+            return {"unchecked", "unchecked: none stated, estimate " + scientific(m.worst)};
+    }
     return {"unchecked", "unchecked"};
 }
 
@@ -166,12 +204,13 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
     std::map<std::pair<std::string, std::string>, Verdict> cells;
     std::ostringstream sentences;
     for (const std::string& c : cases) {
-        std::map<std::string, std::vector<std::string>> by_kind;
+        std::map<std::string, std::vector<std::string>> by_kind, refused_by_why;
         for (const std::string& k : combos) {
             const auto it = first.find({c, k});
             const Verdict v =
                 verdict(it == first.end() ? nullptr : &runs[it->second], c, published_checks);
             by_kind[v.kind].push_back(k);
+            if (!v.why.empty()) refused_by_why[v.why].push_back(k);
             cells[{c, k}] = v;
         }
         const size_t n = combos.size(), met = by_kind["met"].size();
@@ -180,11 +219,22 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
             sentences << "every combination met its accuracy.";
         } else {
             sentences << met << " of " << n << " combinations met their accuracy";
-            for (const char* kind : {"unchecked", "stopped", "unstable", "inaccurate", "not run"}) {
+            const auto combinations = [&](const std::vector<std::string>& list) {
+                for (size_t i = 0; i < list.size(); ++i) sentences << (i ? ", " : "") << list[i];
+            };
+            for (const char* kind : {"unchecked", "stopped", "unstable", "inaccurate"}) {
                 const auto& list = by_kind[kind];
                 if (list.empty()) continue;
                 sentences << "; " << kind << ": ";
-                for (size_t i = 0; i < list.size(); ++i) sentences << (i ? ", " : "") << list[i];
+                combinations(list);
+            }
+            for (const auto& [why, list] : refused_by_why) {
+                sentences << "; refused as stated (" << why << "): ";
+                combinations(list);
+            }
+            if (!by_kind["not run"].empty()) {
+                sentences << "; not run: ";
+                combinations(by_kind["not run"]);
             }
             sentences << ".";
         }
@@ -234,7 +284,9 @@ std::string summary_section(const std::vector<nlohmann::json>& runs,
           "says it must); *unstable*: solved, but an equilibrium is unstable (its tangent has "
           "negative eigenvalues: status `unstable-equilibrium`); *inaccurate*: a published check "
           "missed, or an estimate above the stated "
-          "accuracy; *not run*: the combination does not exist for the case. Each cell links to "
+          "accuracy; *refused as stated*: the case states that the formulation refuses it, and why "
+          "(a BeamDyn deck's damping in the mixed formulation), and the run was refused in those "
+          "words; *not run*: the combination does not exist for the case. Each cell links to "
           "its run in the runs table.\n\n"
        << sentences.str() << "\n"
        << matrix.str();

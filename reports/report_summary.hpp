@@ -7,7 +7,10 @@
 // carries its error estimate, every estimate within half the case's stated accuracy
 // (discretization.accuracy, docs/accuracy-control.md; a dynamic run's histories each relative to
 // its amplitude). A solved run with neither (`suite --estimate off`, or a case that states no
-// accuracy for the formulation) is "unchecked": the report does not claim an accuracy.
+// accuracy for the formulation) is "unchecked": the report does not claim an accuracy, but shows
+// the worst estimate when there is one ("unchecked: none stated, estimate 1.5e-01"). A run refused
+// in the words the case states for its formulation (a BeamDyn deck's catalog entry,
+// cases/loader/deck_case.hpp) is "refused as stated", with the words: no hole in the matrix.
 #pragma once
 
 #include <functional>

@@ -378,8 +378,12 @@ std::string Importer::text(const std::string& name) {
     if (deck_.dynamic) {
         // BeamDyn steps with DTBeam (DEFAULT: the driver's dt); its generalized-α is
         // Chung–Hulbert's with rhoinf. Time starts at 0 here (t_initial is BeamDyn's clock only).
+        // The integrator is left to the formulation: the displacement formulation's default is
+        // that generalized-α, and the mixed one then takes its own (its trapezoidal rule) and
+        // meets the deck itself (its damping) instead of refusing a scheme it does not have.
         const double step = deck_.beam_dt > 0.0 ? deck_.beam_dt : deck_.dt;
-        os << "analysis:\n  type: dynamic\n  integrator: generalized-alpha\n  rho_infinity: "
+        os << "analysis:\n  type: dynamic\n  # integrator: the formulation's default; the "
+              "displacement formulation's is BeamDyn's generalized-alpha\n  rho_infinity: "
            << num(deck_.rho_infinity) << "\n  time_step: " << num(step)
            << "\n  end_time: " << num(deck_.t_final - deck_.t_initial)
            << "\n  output_interval: " << num(deck_.dt)

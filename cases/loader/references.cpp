@@ -30,6 +30,7 @@ std::string applies_value(const YamlReader& r, const YAML::Node& v, const std::s
     if (name == "elements")
         return std::to_string(r.positive_integer(v, key, kMaxElementsPerMember));
     if (name == "order") return std::to_string(r.positive_integer(v, key, kMaxOrder));
+    if (name == "refine") return std::to_string(r.positive_integer(v, key, kMaxRefine));
     return std::to_string(r.positive_integer(v, key, kMaxQuadraturePoints));
 }
 
@@ -44,7 +45,7 @@ std::map<std::string, std::string> read_applies_to(const YamlReader& r, const YA
         r.expect_map(
             at, ak,
             {"formulation", "rotation", "elements", "order", "quadrature", "quadrature_points",
-             "interpolation", "update", "mass_rule", "wm_map", "rescale"});
+             "refine", "interpolation", "update", "mass_rule", "wm_map", "rescale"});
         for (const auto& item : at) {
             const std::string name = item.first.Scalar();
             out[name] = applies_value(r, item.second, ak + "." + name, name);

@@ -17,6 +17,7 @@
 #include "core/results.hpp"
 #include "distribution/distributed.hpp"
 #include "distribution/study_registry.hpp"
+#include "estimates/stated_accuracy.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/rotation_study.hpp"
 #include "runs/accuracy_run.hpp"
@@ -460,7 +461,11 @@ int command_run(const Args& args) {
     if (beamdyn_dcm) add_beamdyn_frame(*beamdyn_dcm, result);
     write_outputs(a, result);
     if (const auto dir = a.value("vtk")) write_vtk_files(*dir, model, result, frames.snapshots);
-    if (!a.has("quiet")) print_run_summary(result, std::cout);
+    if (!a.has("quiet")) {
+        print_run_summary(result, std::cout);
+        const std::string accuracy = estimate::stated_accuracy_line(model, result);
+        if (!accuracy.empty()) std::cout << accuracy << "\n";
+    }
     return 0;
 }
 

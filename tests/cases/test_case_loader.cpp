@@ -44,9 +44,10 @@ BOOST_AUTO_TEST_SUITE(case_loader)
 
 BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
     const std::vector<std::string> catalog = {
-        "cantilever-moment", "cantilever-moment-4",  "bend-45",       "joined-beam",
-        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",   "helix",
-        "helix-precessing",  "tip-load-cantilever",  "free-vibration"};
+        "cantilever-moment", "cantilever-moment-4",  "bend-45",        "joined-beam",
+        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",    "helix",
+        "helix-precessing",  "tip-load-cantilever",  "free-vibration", "nrel5mw-gravity",
+        "nrel5mw-rotating"};
     for (const std::string& name : catalog) {
         BOOST_TEST_CONTEXT(name) {
             const Model m = load_case(case_path(name));
@@ -164,6 +165,27 @@ BOOST_AUTO_TEST_CASE(expected_stops_and_narrowed_references_are_validated) {
                        "t.yaml");
     });
     BOOST_TEST(none.find("no combination is selected") != std::string::npos, none);
+}
+
+// applies_to names the trapezoidal rule's refine like any discretization key: read as the number,
+// and the override the gate makes of it (discretization.<key>=<value>, verify_plan.cpp) loads.
+BOOST_AUTO_TEST_CASE(applies_to_names_the_trapezoidal_refine) {
+    std::ifstream in(case_path("cantilever-moment"));
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const Model m =
+        load_case_text(buffer.str() +
+                           "references:\n  r:\n    quantity: displacement\n"
+                           "    point: tip\n    load_factor: 0.4\n    value: [0, 0, 0]\n"
+                           "    tolerance: 1\n    justification: j\n    source: s\n"
+                           "    applies_to: {quadrature: trapezoidal, refine: 4}\n",
+                       "t.yaml");
+    BOOST_TEST(m.references.at(0).applies_to.at("refine") == "4");
+    const Model refined =
+        load_case(case_path("cantilever-moment"),
+                  {"discretization.quadrature=trapezoidal",
+                   "discretization.refine=" + m.references.at(0).applies_to.at("refine")});
+    BOOST_TEST(refined.discretization.refine == 4);
 }
 
 BOOST_AUTO_TEST_CASE(bend45_is_the_exact_arc_with_a_unit_tip_force) {

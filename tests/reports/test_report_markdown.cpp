@@ -251,3 +251,43 @@ BOOST_AUTO_TEST_CASE(an_estimate_below_a_third_of_the_true_error_is_an_estimator
     BOOST_TEST(estimator_failures_section({run_with(0.5e-6 * chord)}).find("None.") !=
                std::string::npos);
 }
+
+// A formulation a catalog deck states it refuses (nrel5mw-gravity: the mixed one, for the deck's
+// damping) is "refused as stated", with the stated words, only when the run was refused in those
+// words; another refusal stays "not run", a hole. A solved run of a formulation the case states no
+// accuracy for (helix-precessing: none for the mixed) shows its worst estimate beside "unchecked".
+BOOST_AUTO_TEST_CASE(a_stated_refusal_is_not_a_hole_and_an_unstated_accuracy_shows_the_estimate) {
+    const auto refused = [](const std::string& rotation, const std::string& message) {
+        return nlohmann::json{{"case", "nrel5mw-gravity"}, {"formulation", "mixed"},
+                              {"rotation", rotation},      {"status", "error"},
+                              {"message", message},        {"steps", nlohmann::json::array()},
+                              {"wall_seconds", 0.0}};
+    };
+    nlohmann::json helix = {{"case", "helix-precessing"},
+                            {"formulation", "mixed"},
+                            {"rotation", "quaternion"},
+                            {"status", "converged"},
+                            {"message", ""},
+                            {"estimate", {{"status", "estimated"}}},
+                            {"steps",
+                             {{{"load_factor", 1.0},
+                               {"points", {{"tip", {{"displacement", {0.0, 0.0, 0.0}}}}}},
+                               {"estimate",
+                                {{"tip",
+                                  {{"displacement", {{"error", 0.25}, {"reliable", true}}},
+                                   {"rotation", {{"error", 1e-3}, {"reliable", true}}}}}}}}}}};
+    const std::string md = summary_section(
+        {refused("quaternion",
+                 "nrel5mw-gravity.yaml: sections: damping is not available in the mixed dynamics "
+                 "(seed 002 Eqs. 45–50 are undamped)"),
+         refused("rodrigues", "some other refusal"), helix},
+        nlohmann::json::array());
+    BOOST_TEST(md.find("| nrel5mw-gravity | [refused as stated](#run-1) | [not run](#run-2) |") !=
+                   std::string::npos,
+               md);
+    BOOST_TEST(md.find("- **nrel5mw-gravity**: 0 of 2 combinations met their accuracy; refused as "
+                       "stated (damping is not available in the mixed dynamics): mixed/quaternion; "
+                       "not run: mixed/rodrigues.") != std::string::npos,
+               md);
+    BOOST_TEST(md.find("[unchecked: none stated, estimate ") != std::string::npos, md);
+}
