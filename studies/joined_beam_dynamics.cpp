@@ -133,7 +133,7 @@ std::vector<TimeSetting> time_settings(Formulation formulation, bool quick) {
     } else {
         fixed(Integrator::trapezoidal,
               quick ? std::vector<double>{1e-3, 5e-4} : std::vector<double>{5e-4, 2.5e-4});
-        fixed(Integrator::radau_iia_3, quick ? std::vector<double>{4e-3, 2e-3}
+        fixed(Integrator::radau_iia_3, quick ? std::vector<double>{2e-3, 1e-3}
                                              : std::vector<double>{1e-3, 5e-4, 4e-4, 2.5e-4});
         // IDA's Δt is only the initial step hint; the case's 1 ms.
         for (double tol :
@@ -247,15 +247,48 @@ std::string agreement_status(double step_difference, double agreement) {
     return s.str();
 }
 
-std::string reference_how(const Combination& c, const ResponseWindow& w, double coarse_step) {
+// The reference in words: what ran, `scheme` at the two steps, and `method` (how they combine).
+std::string reference_how(const Combination& c, const ResponseWindow& w, double coarse_step,
+                          Integrator scheme, const std::string& method) {
     std::ostringstream how;
     how << c.label() << ", " << w.elements << " elements per member"
         << (c.formulation == Formulation::displacement ? " of order " + std::to_string(w.order)
                                                        : "")
-        << (w.mass_rule.empty() ? "" : ", " + w.mass_rule + " mass") << ", "
-        << choice_name(reference_integrator(c.formulation)) << " at Δt = " << coarse_step * 1e6
-        << " and " << coarse_step * 5e5 << " µs, the finer run";
+        << (w.mass_rule.empty() ? "" : ", " + w.mass_rule + " mass") << ", " << choice_name(scheme)
+        << " at Δt = " << coarse_step * 1e6 << " and " << coarse_step * 5e5 << " µs, " << method;
     return how.str();
+}
+
+// The cached reference in `file` when its key is `key` (null otherwise), its common fields read
+// into `ref`.
+nlohmann::json read_cached_reference(const std::string& file, const nlohmann::json& key,
+                                     ReferenceResponse& ref) {
+    if (file.empty() || !std::filesystem::exists(file)) return nullptr;
+    std::ifstream in(file);
+    nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || j.value("key", nlohmann::json()) != key) return nullptr;
+    ref.how = j.value("how", "");
+    ref.step_difference = j.value("step_difference", kNoValue);
+    ref.extrapolation_change = j.value("extrapolation_change", kNoValue);
+    ref.cpu_seconds = j.value("cpu_seconds", 0.0);
+    ref.version = j.value("version", "");
+    ref.from_cache = true;
+    return j;
+}
+
+// Writes `ref` with its `key` and `extra` fields (the histories) to `file` under `dir`.
+void write_cached_reference(const std::string& file, const std::string& dir,
+                            const nlohmann::json& key, const ReferenceResponse& ref,
+                            nlohmann::json extra) {
+    if (file.empty()) return;
+    std::filesystem::create_directories(dir);
+    extra["key"] = key;
+    extra["how"] = ref.how;
+    extra["step_difference"] = ref.step_difference;
+    extra["cpu_seconds"] = ref.cpu_seconds;
+    extra["version"] = ref.version;
+    extra["schema_version"] = kSchemaVersion;
+    write_file_atomically(file, extra.dump() + "\n");
 }
 
 }  // namespace
@@ -267,21 +300,13 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
     const std::string file =
         cache_dir.empty() ? "" : cache_file(cache_dir, c, w, coarse_step, false);
     ReferenceResponse ref;
-    if (!file.empty() && std::filesystem::exists(file)) {
-        std::ifstream in(file);
-        nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-        if (!j.is_discarded() && j.value("key", nlohmann::json()) == key) {
+    if (const nlohmann::json j = read_cached_reference(file, key, ref); !j.is_null()) {
+        ref.status = agreement_status(ref.step_difference, agreement);
+        if (ref.status == "converged") {
             ref.history = history_from_json(j["displacement"]);
             ref.rotation = history_from_json(j["rotation"]);
-            ref.how = j.value("how", "");
-            ref.step_difference = j.value("step_difference", kNoValue);
-            ref.cpu_seconds = j.value("cpu_seconds", 0.0);
-            ref.version = j.value("version", "");
-            ref.status = agreement_status(ref.step_difference, agreement);
-            ref.from_cache = true;
-            if (ref.status != "converged") ref.history = ref.rotation = History{};
-            return ref;
         }
+        return ref;
     }
     const Integrator scheme = reference_integrator(c.formulation);
     const double start = thread_cpu_seconds();
@@ -293,7 +318,7 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
     const nlohmann::json rf = run_spec(response_spec(c, {scheme, coarse_step / 2.0, 0.0}, w));
     ref.cpu_seconds = thread_cpu_seconds() - start;
     ref.version = kGitDescribe;
-    ref.how = reference_how(c, w, coarse_step);
+    ref.how = reference_how(c, w, coarse_step, scheme, "the finer run");
     const JointResponse hc = joint_response(rc), hf = joint_response(rf);
     if (hc.size() == 0 || hf.size() == 0 || hc.size() != hf.size()) {
         ref.status = "reference runs failed: " + rc.value("status", "") + " / " +
@@ -304,18 +329,9 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
     ref.rotation = hf.rotation;
     ref.step_difference = response_error(hc, hf);
     ref.status = agreement_status(ref.step_difference, agreement);
-    if (!file.empty()) {
-        std::filesystem::create_directories(cache_dir);
-        const nlohmann::json j = {{"key", key},
-                                  {"how", ref.how},
-                                  {"step_difference", ref.step_difference},
-                                  {"cpu_seconds", ref.cpu_seconds},
-                                  {"version", ref.version},
-                                  {"schema_version", kSchemaVersion},
-                                  {"displacement", history_json(hf.displacement)},
-                                  {"rotation", history_json(hf.rotation)}};
-        write_file_atomically(file, j.dump() + "\n");
-    }
+    write_cached_reference(
+        file, cache_dir, key, ref,
+        {{"displacement", history_json(hf.displacement)}, {"rotation", history_json(hf.rotation)}});
     if (ref.status != "converged") ref.history = ref.rotation = History{};
     return ref;
 }
@@ -326,20 +342,10 @@ ReferenceResponse richardson_reference(const Combination& c, const ResponseWindo
     const std::string file =
         cache_dir.empty() ? "" : cache_file(cache_dir, c, w, coarse_step, true);
     ReferenceResponse ref;
-    if (!file.empty() && std::filesystem::exists(file)) {
-        std::ifstream in(file);
-        nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-        if (!j.is_discarded() && j.value("key", nlohmann::json()) == key) {
-            ref.history = history_from_json(j["history"]);
-            ref.how = j.value("how", "");
-            ref.step_difference = j.value("step_difference", kNoValue);
-            ref.extrapolation_change = j.value("extrapolation_change", kNoValue);
-            ref.cpu_seconds = j.value("cpu_seconds", 0.0);
-            ref.version = j.value("version", "");
-            ref.status = j.value("status", "");
-            ref.from_cache = true;
-            return ref;
-        }
+    if (const nlohmann::json j = read_cached_reference(file, key, ref); !j.is_null()) {
+        ref.history = history_from_json(j["history"]);
+        ref.status = j.value("status", "");
+        return ref;
     }
     const TimeSetting coarse{fixed_step_integrator(c.formulation), coarse_step, 0.0};
     const TimeSetting fine{fixed_step_integrator(c.formulation), coarse_step / 2.0, 0.0};
@@ -362,27 +368,12 @@ ReferenceResponse richardson_reference(const Combination& c, const ResponseWindo
     ref.step_difference = history_error(hf, hc);
     ref.extrapolation_change = history_error(hf, ref.history);
     ref.status = "converged";
-    std::ostringstream how;
-    how << c.label() << ", " << w.elements << " elements per member"
-        << (c.formulation == Formulation::displacement ? " of order " + std::to_string(w.order)
-                                                       : "")
-        << (w.mass_rule.empty() ? "" : ", " + w.mass_rule + " mass") << ", "
-        << choice_name(fixed_step_integrator(c.formulation)) << " at Δt = " << coarse_step * 1e6
-        << " and " << coarse_step * 5e5 << " µs, Richardson-extrapolated at order 2";
-    ref.how = how.str();
-    if (!file.empty()) {
-        std::filesystem::create_directories(cache_dir);
-        const nlohmann::json j = {{"key", key},
-                                  {"how", ref.how},
-                                  {"step_difference", ref.step_difference},
-                                  {"extrapolation_change", ref.extrapolation_change},
-                                  {"cpu_seconds", ref.cpu_seconds},
-                                  {"version", ref.version},
-                                  {"schema_version", kSchemaVersion},
-                                  {"status", ref.status},
-                                  {"history", history_json(ref.history)}};
-        write_file_atomically(file, j.dump() + "\n");
-    }
+    ref.how = reference_how(c, w, coarse_step, fixed_step_integrator(c.formulation),
+                            "Richardson-extrapolated at order 2");
+    write_cached_reference(file, cache_dir, key, ref,
+                           {{"extrapolation_change", ref.extrapolation_change},
+                            {"status", ref.status},
+                            {"history", history_json(ref.history)}});
     return ref;
 }
 

@@ -3,6 +3,7 @@
 // agree to the requested fraction of the amplitude is refused, never used.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <filesystem>
 
 #include "studies/joined_beam_dynamics.hpp"
 
@@ -59,6 +60,32 @@ BOOST_AUTO_TEST_CASE(a_reference_whose_two_steps_disagree_is_refused) {
     BOOST_TEST(loose.rotation.size() == 11u);
     BOOST_TEST(loose.step_difference == strict.step_difference);
     BOOST_TEST(loose.step_difference < 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(a_cached_reference_is_read_back_and_judged_by_the_agreement_asked) {
+    // Written once, read back with the same histories; a stricter agreement refuses the cached
+    // pair as it refuses a computed one.
+    ResponseWindow w = quick_window();
+    w.end_time = 0.005;
+    w.output_interval = 0.001;
+    const Combination c{rotbeam::Formulation::displacement,
+                        rotbeam::param::id_of<rotbeam::param::Quaternion>()};
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "rotbeam_test_joined_beam_reference";
+    std::filesystem::remove_all(dir);
+    const ReferenceResponse computed = same_mesh_reference(c, w, 1e-3, dir.string(), 1.0);
+    const ReferenceResponse cached = same_mesh_reference(c, w, 1e-3, dir.string(), 1.0);
+    BOOST_TEST(!computed.from_cache);
+    BOOST_TEST(cached.from_cache);
+    BOOST_TEST(cached.status == "converged");
+    BOOST_TEST(cached.history.z == computed.history.z);
+    BOOST_TEST(cached.rotation.y == computed.rotation.y);
+    BOOST_TEST(cached.step_difference == computed.step_difference);
+    const ReferenceResponse strict = same_mesh_reference(c, w, 1e-3, dir.string(), 1e-14);
+    BOOST_TEST(strict.from_cache);
+    BOOST_TEST(strict.status.rfind("not converged", 0) == 0, strict.status);
+    BOOST_TEST(strict.history.size() == 0u);
+    std::filesystem::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
