@@ -93,7 +93,7 @@ std::string number_text(double x) {
 }
 
 // One IDA run of the mixed formulation at a tight tolerance as a time-converged response, cached
-// under `cache_dir` like same_mesh_reference's (keyed by every setting that changes it).
+// under `cache_dir` like richardson_reference's (keyed by every setting that changes it).
 ReferenceResponse ida_response(const Combination& c, const ResponseWindow& w, double tolerance,
                                const std::string& cache_dir) {
     const nlohmann::json key = {
@@ -158,7 +158,7 @@ void compute(std::vector<Job>& jobs, const std::string& cache_dir) {
         jobs[i].result =
             j.ida_tolerance > 0.0
                 ? ida_response(j.combination, j.window, j.ida_tolerance, cache_dir)
-                : same_mesh_reference(j.combination, j.window, j.coarse_step, cache_dir);
+                : richardson_reference(j.combination, j.window, j.coarse_step, cache_dir);
     });
 }
 

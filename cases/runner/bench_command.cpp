@@ -34,7 +34,8 @@ namespace {
 
 // Every name of --targets is a target (an unknown one would silently benchmark nothing).
 void check_target_names(const std::string& list) {
-    std::vector<std::string> known = {"joined-beam-modal", "joined-beam-dynamic", "long-run",
+    std::vector<std::string> known = {"joined-beam-modal", "joined-beam-dynamic",
+                                      "joined-beam-dynamic-follower", "long-run",
                                       "accuracy-control"};
     for (const BenchTarget& t : bench_targets()) known.push_back(t.name);
     std::stringstream ss(list);
@@ -225,8 +226,9 @@ int command_bench(const Args& args) {
         "cheapest discretization reaching the target accuracy (roll-up λ = 0.4, 1.6, 2.0 to "
         "‖Δu‖/L ≤ 1e-9; 45° bend P = 600 to 1e-6 of the continuum reference), median "
         "whole-process and in-process time, Newton iterations, unknowns, peak memory; start-up; "
-        "the joined-beam modal (5 frequencies to 1e-6 of converged) and 0–2 s dynamic (joint "
-        "history to 1e-3 of a same-mesh self-converged reference) targets; accuracy-control: "
+        "the joined-beam modal (5 frequencies to 1e-6 of converged) and 0–2 s dynamic, dead and "
+        "follower load (joint histories to 1e-3 of the same mesh's time-converged answer) "
+        "targets; accuracy-control: "
         "`run --accuracy 1e-6` against the best hand-picked discretization (roll-up, bend).",
         {{"json", "FILE", "write the results (default out/bench.json)"},
          {"history", "", "also write reports/history/<date>-<machine>.json"},
@@ -275,7 +277,8 @@ int command_bench(const Args& args) {
     size_t items = 0;
     for (const BenchTarget& t : bench_targets())
         items += selected(t.name) ? all_combinations(false).size() : 0;
-    const std::vector<std::string> whole = {"joined-beam-modal", "joined-beam-dynamic", "long-run",
+    const std::vector<std::string> whole = {"joined-beam-modal", "joined-beam-dynamic",
+                                            "joined-beam-dynamic-follower", "long-run",
                                             "accuracy-control"};
     for (const std::string& name : whole) items += selected(name) ? 1 : 0;
     Progress progress("rotbeam bench", items, std::cerr, progress_options_for_stderr());
@@ -292,15 +295,15 @@ int command_bench(const Args& args) {
         if (!target.is_null()) out["targets"].push_back(std::move(target));
     }
     whole_target("joined-beam-modal", [&] { return bench_joined_beam_modal(quick, repeats); });
-    whole_target("joined-beam-dynamic", [&] {
-        const fs::path json_dir =
-            fs::path(a.value("json").value_or("out/bench.json")).parent_path();
-        const std::string references =
-            a.value("references")
-                .value_or(((json_dir.empty() ? fs::path(".") : json_dir) / "joined-beam-references")
-                              .string());
-        return bench_joined_beam_dynamic(quick, repeats, references);
-    });
+    const fs::path json_dir = fs::path(a.value("json").value_or("out/bench.json")).parent_path();
+    const std::string references =
+        a.value("references")
+            .value_or(((json_dir.empty() ? fs::path(".") : json_dir) / "joined-beam-references")
+                          .string());
+    whole_target("joined-beam-dynamic",
+                 [&] { return bench_joined_beam_dynamic(quick, repeats, references, "dead"); });
+    whole_target("joined-beam-dynamic-follower",
+                 [&] { return bench_joined_beam_dynamic(quick, repeats, references, "follower"); });
     whole_target("long-run", [&] { return bench_long_run(quick); });
     whole_target("accuracy-control", [&] { return bench_accuracy_control(quick, repeats); });
     write_bench_outputs(a, out);
