@@ -8,6 +8,7 @@
 #include <iostream>
 #include <vector>
 
+#include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/step_observer.hpp"
 #include "deformed.hpp"
@@ -151,6 +152,48 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
         BOOST_TEST(a == 0);
     }
     std::cout << "\n";
+}
+
+// The same for the Gauss–Legendre collocation (2 and 3 stages): stage iterations, the iteration
+// matrix's three assemblies, its real (KLU) and complex (complex KLU) factorizations and solves,
+// kept or refreshed, allocate nothing after the first step. Counted per accepted step by the step
+// observer (below), with outputs only at the start and the end: an output computes the consistent
+// acceleration of its state with a factorization of its own (DisplacementDynamics::
+// initialize_acceleration), which allocates, once per output interval, not per step.
+BOOST_AUTO_TEST_CASE(gauss_collocation_steps_allocate_nothing_after_the_first) {
+    for (const int stages : {2, 3}) {
+        form::DisplacementDynamics<param::Quaternion> d(dead_loaded_moving_model());
+        TimeIntegrationSettings ts = twelve_steps();
+        ts.output_interval = ts.end_time;
+        struct Seen {
+            std::vector<long> allocations;
+            std::vector<long> iterations;
+        } seen;
+        seen.allocations.reserve(32);
+        seen.iterations.reserve(32);
+        DynamicOutcome out;
+        {
+            const ScopedStepObserver observer(
+                [](void* context, const StepProgress& p) {
+                    Seen& s = *static_cast<Seen*>(context);
+                    s.allocations.push_back(g_allocations);
+                    s.iterations.push_back(p.newton_iterations);
+                },
+                &seen);
+            out = run_gauss_collocation(d, stages, ts, NewtonSettings{}, nullptr);
+        }
+        BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
+        BOOST_TEST_REQUIRE(seen.allocations.size() == 12u);
+        std::cout << "Gauss–Legendre " << stages
+                  << " stages, allocations per time step (steps 2-12; stage iterations in "
+                     "brackets):";
+        for (size_t k = 1; k < seen.allocations.size(); ++k) {
+            const long a = seen.allocations[k] - seen.allocations[k - 1];
+            std::cout << " " << a << " (" << seen.iterations[k] - seen.iterations[k - 1] << ")";
+            BOOST_TEST(a == 0);
+        }
+        std::cout << "\n";
+    }
 }
 
 // The step observer (core/step_observer.hpp, `rotbeam bench --targets long-run`) is told about
