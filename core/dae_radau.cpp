@@ -3,12 +3,12 @@
 #include "core/dae_radau.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SparseLU>
 #include <array>
 #include <cmath>
 #include <complex>
 #include <sstream>
 
+#include "core/complex_klu.hpp"
 #include "core/convergence.hpp"
 #include "core/dae_fixed_steps.hpp"
 #include "core/errors.hpp"
@@ -23,12 +23,7 @@ namespace rotbeam {
 namespace {
 
 using Complex = std::complex<double>;
-using ComplexSparse = Eigen::SparseMatrix<Complex, Eigen::ColMajor, int>;
 constexpr int kStages = 3;
-// The stage matrices are kept for the next step (of the same size) when the last iteration
-// contracted at least this fast. A kept matrix costs nothing but iterations, each 3 residuals and
-// a real and a complex solve, against an evaluation of ∂F/∂X, ∂F/∂Ẋ and two factorizations.
-constexpr double kReuseRate = 0.05;
 
 // Radau IIA, s = 3 (HW II, Table IV.5.6), and W = A⁻¹ = S Λ S⁻¹ with the real eigenvalue first
 // and the pair's representative (imaginary part > 0) second; the third column of S is the
@@ -93,7 +88,7 @@ RadauTableau radau_tableau() {
 }
 
 // One step's stage equations and their simplified Newton (core/dae_radau.hpp). Buffers are sized
-// once; the complex LU's pattern is analysed once, KLU keeps its pivot order.
+// once; both KLUs (real and complex) keep their pivot orders and refactor in place.
 class RadauStepper {
   public:
     RadauStepper(DaeSystem& dae, const NewtonSettings& newton)
@@ -108,8 +103,8 @@ class RadauStepper {
 
     // From (x_n, ẋ_n) at t to t + h; on success state() and rate() are the step end. The stage
     // matrices of an earlier step are kept while the step size is unchanged and the last stage
-    // iteration contracted by kReuseRate or better; if the iteration then fails, fresh ones are
-    // made and the step is tried again before it counts as failed.
+    // iteration contracted by kKeptMatrixRate or better; if the iteration then fails, fresh ones
+    // are made and the step is tried again before it counts as failed.
     NewtonOutcome step(double t, double h, const VecX& xn, const VecX& xdn);
     // The step of size h was accepted: its stages predict the next step's.
     void remember(double h) {
@@ -143,7 +138,7 @@ class RadauStepper {
     ComplexSparse E_complex_;
     Eigen::VectorXcd gc_, xc_;
     SparseLUSolver real_lu_{true};
-    Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> complex_lu_;
+    ComplexKlu complex_lu_;
     bool analysed_ = false;
     double floor_ = 0.0;
     double h_old_ = 0.0;       // 0: no previous step to extrapolate from
@@ -178,13 +173,11 @@ bool RadauStepper::factor(double t, double h, const VecX& xn, const VecX& xdn) {
     if (!analysed_) {
         scale_ = dae_.increment_scale();
         raise_to_resolution(E_real_, dae_.residual_scale(), scale_);
-        complex_lu_.analyzePattern(E_complex_);
         analysed_ = true;
     }
     floor_ = round_off_floor(E_floor_, dae_.residual_scale(), scale_, work_);
     factorizations_ += 2;
-    complex_lu_.factorize(E_complex_);
-    if (complex_lu_.info() != Eigen::Success) return false;
+    if (!complex_lu_.factorize(E_complex_)) return false;
     return real_lu_.factorize(E_real_);
 }
 
@@ -237,7 +230,8 @@ double RadauStepper::correction() {
         gc_ += T_.S_inv(1, i) * R_[i].cast<Complex>();
     }
     real_lu_.solve(gr_, xr_);
-    xc_ = complex_lu_.solve(gc_);
+    xc_ = gc_;
+    complex_lu_.solve_in_place(xc_);
     double eta = 0.0;
     for (int i = 0; i < kStages; ++i) {
         dZ_[i] = -T_.S(i, 0).real() * xr_ - 2.0 * (T_.S(i, 1) * xc_).real();
@@ -265,7 +259,7 @@ double RadauStepper::local_error(double t, double h, const VecX& xn, const VecX&
 }
 
 NewtonOutcome RadauStepper::step(double t, double h, const VecX& xn, const VecX& xdn) {
-    const bool reuse = h == factored_h_ && rate_ <= kReuseRate;
+    const bool reuse = h == factored_h_ && rate_ <= kKeptMatrixRate;
     NewtonOutcome out = iterate(t, h, xn, xdn, !reuse);
     if (reuse && !out.accepted()) {
         // The kept matrices no longer describe the stage equations: fresh ones, then the cut.

@@ -25,7 +25,8 @@
 // the step start, J = I ⊗ ∂F/∂X + (W/h) ⊗ ∂F/∂Ẋ. With W = S Λ S⁻¹ (one real eigenvalue γ and one
 // conjugate pair α ± iβ) the correction decouples into
 //   E_γ = ∂F/∂X + (γ/h) ∂F/∂Ẋ            (real, factored by KLU with the pivot order kept),
-//   E_α+iβ = ∂F/∂X + ((α + iβ)/h) ∂F/∂Ẋ  (complex, Eigen's SparseLU, pattern analysed once),
+//   E_α+iβ = ∂F/∂X + ((α + iβ)/h) ∂F/∂Ẋ  (complex, KLU in complex arithmetic with the pivot
+//                                         order kept: core/complex_klu.hpp),
 // both in the system's pattern; the conjugate eigenvalue's solution is the conjugate. No stage
 // matrix of size 3n is formed. The convergence test is the project's (core/convergence.hpp) on the
 // stacked stage residuals and corrections, scaled max norms, with the round-off floor of

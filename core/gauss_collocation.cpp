@@ -1,13 +1,13 @@
 #include "core/gauss_collocation.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
 #include <sstream>
 
+#include "core/complex_klu.hpp"
 #include "core/convergence.hpp"
 #include "core/errors.hpp"
 #include "core/sparse_lu.hpp"
@@ -45,7 +45,6 @@ GaussLegendre GaussLegendre::of(int stages) {
 namespace {
 
 using Complex = std::complex<double>;
-using ComplexSparse = Eigen::SparseMatrix<Complex, Eigen::ColMajor, int>;
 
 // W = A⁻¹ = S Λ S⁻¹, with the columns of a conjugate pair conjugate to each other, so that the
 // partner's transformed system is the conjugate of its representative's (imaginary part > 0).
@@ -55,6 +54,10 @@ struct StageTransform {
     Eigen::VectorXcd lambda;
     int real = -1;  // the index of the real eigenvalue (s = 3), −1 if none
     int pair = -1;  // the representative of the conjugate pair
+    // The round-off floor of the stage residuals: v_i and L_i are sums Σ_j w_ij (·)/h of the
+    // stage increments, so their terms are bounded by w1/h = ‖W‖∞/h and w2/h² = ‖|W|²‖∞/h² times
+    // them.
+    double w1 = 0.0, w2 = 0.0;
 };
 
 StageTransform transform_of(const Eigen::MatrixXd& A) {
@@ -81,6 +84,9 @@ StageTransform transform_of(const Eigen::MatrixXd& A) {
         if (k != t.pair) t.lambda(k) = std::conj(t.lambda(t.pair));
     }
     t.S_inv = t.S.inverse();
+    const Eigen::MatrixXd W_abs = t.W.cwiseAbs();
+    t.w1 = W_abs.rowwise().sum().maxCoeff();
+    t.w2 = (W_abs * W_abs).rowwise().sum().maxCoeff();
     const double defect =
         (t.S * t.lambda.asDiagonal() * t.S_inv - t.W.cast<Complex>()).cwiseAbs().maxCoeff();
     ROTBEAM_VERIFY(defect <= 1e-12 * t.W.cwiseAbs().maxCoeff(), "Gauss tableau: W ≠ S Λ S⁻¹");
@@ -88,7 +94,7 @@ StageTransform transform_of(const Eigen::MatrixXd& A) {
 }
 
 // One step's stage equations and their simplified Newton (the header's construction). Buffers
-// are sized once; the complex LU's pattern is analysed once.
+// are sized once; both KLUs (real and complex) keep their pivot orders and refactor in place.
 class GaussStepper {
   public:
     GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton);
@@ -97,11 +103,15 @@ class GaussStepper {
     NewtonOutcome step(double t, double h);
     // Steps that converged only after the iteration matrix was refreshed at their stages.
     int refreshes() const { return refreshes_; }
+    // Iteration matrices made (each: three assemblies, a complex and, for s = 3, a real
+    // factorization).
+    long factorizations() const { return factorizations_; }
 
   private:
     void predict(double h);
     // The iteration matrix at the stage mean of Z_ (zero: the step start) and t_mid.
     bool factor(double t_mid, double h);
+    bool refactor(double t, double h);
     NewtonOutcome iterate(double t, double h);
     void stage_mean(double h);
     void stage_rates(double h);
@@ -123,10 +133,13 @@ class GaussStepper {
     ComplexSparse E_complex_;
     Eigen::VectorXcd gc_, xc_;
     SparseLUSolver real_lu_{true};
-    Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> complex_lu_;
+    ComplexKlu complex_lu_;
     bool analysed_ = false;
     double floor_ = 0.0;
     int refreshes_ = 0;
+    double factored_h_ = 0.0;  // the step of the factored matrix (0: none valid)
+    double rate_ = 1.0;        // the last converged iteration's worst contraction (stage_iteration)
+    long factorizations_ = 0;
 };
 
 GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton)
@@ -202,16 +215,13 @@ bool GaussStepper::factor(double t_mid, double h) {
         E_real_ = J0_;
         E_floor_ = J0_;
         E_complex_ = J0_.cast<Complex>();
+        analysed_ = true;
     }
     const double* k0 = J0_.valuePtr();
     const double* jv = Jv_.valuePtr();
     const double* ja = Ja_.valuePtr();
     const Complex mu = transform_.lambda(transform_.pair) / h;
-    // The round-off floor of the stage residuals: v_i and L_i are sums Σ_j w_ij (·)/h of the
-    // stage increments, so their terms are bounded by ‖W‖∞/h and ‖|W|²‖∞/h² times them.
-    const Eigen::MatrixXd Wabs = transform_.W.cwiseAbs();
-    const double w1 = Wabs.rowwise().sum().maxCoeff() / h;
-    const double w2 = (Wabs * Wabs).rowwise().sum().maxCoeff() / (h * h);
+    const double w1 = transform_.w1 / h, w2 = transform_.w2 / (h * h);
     for (int k = 0; k < nnz; ++k) {
         const double c0 = jv[k] - k0[k], m0 = ja[k] - k0[k];
         E_complex_.valuePtr()[k] = k0[k] + mu * c0 + mu * mu * m0;
@@ -223,12 +233,7 @@ bool GaussStepper::factor(double t_mid, double h) {
     }
     floor_ =
         round_off_floor(E_floor_, problem_.residual_scale(), problem_.increment_scale(), work_);
-    if (!analysed_) {
-        complex_lu_.analyzePattern(E_complex_);
-        analysed_ = true;
-    }
-    complex_lu_.factorize(E_complex_);
-    if (complex_lu_.info() != Eigen::Success) return false;
+    if (!complex_lu_.factorize(E_complex_)) return false;
     return transform_.real < 0 || real_lu_.factorize(E_real_);
 }
 
@@ -273,7 +278,8 @@ double GaussStepper::correction() {
     }
     gc_.setZero();
     for (int i = 0; i < s; ++i) gc_ += T.S_inv(T.pair, i) * R_[i].cast<Complex>();
-    xc_ = complex_lu_.solve(gc_);
+    xc_ = gc_;
+    complex_lu_.solve_in_place(xc_);
     for (int i = 0; i < s; ++i) dZ_[i] -= 2.0 * (T.S(i, T.pair) * xc_).real();
     double eta = 0.0;
     for (const VecX& d : dZ_) eta = std::max(eta, scaled_max_norm(d, problem_.increment_scale()));
@@ -315,7 +321,10 @@ NewtonOutcome GaussStepper::iterate(double t, double h) {
         void apply_correction() {
             for (int i = 0; i < g.tableau_.stages; ++i) g.Z_[i] += g.dZ_[i];
         }
-        void converged(double /*rate*/) { g.finish_step(t, h); }
+        void converged(double rate) {
+            g.rate_ = rate;
+            g.finish_step(t, h);
+        }
     } stages{*this, t, h, best};
     return iterate_stages(stages, newton_, floor_);
 }
@@ -326,27 +335,43 @@ NewtonOutcome GaussStepper::iterate(double t, double h) {
 // the step, which grows with the rotation per step.
 NewtonOutcome GaussStepper::step(double t, double h) {
     problem_.start_rates(v_n_, vd_n_);
-    for (VecX& z : Z_) z.setZero();
     NewtonOutcome out;
-    if (!factor(t + 0.5 * h, h)) {
+    const bool kept = h == factored_h_ && rate_ <= kKeptMatrixRate;
+    if (kept) {
+        predict(h);
+        out = iterate(t, h);
+        if (out.accepted()) return out;
+    }
+    const int spent = out.iterations;
+    for (VecX& z : Z_) z.setZero();
+    if (!refactor(t, h)) {
         out.singular = true;
         out.failure = "the stage iteration matrix is singular";
         return out;
     }
     predict(h);
     out = iterate(t, h);
+    out.iterations += spent;
     if (out.accepted() || out.singular || !std::isfinite(best_Z_[0].squaredNorm())) return out;
     for (int i = 0; i < tableau_.stages; ++i) Z_[i] = best_Z_[i];
-    if (!factor(t + 0.5 * h, h)) return out;
-    const int first = out.iterations;
+    if (!refactor(t, h)) return out;
     NewtonOutcome again = iterate(t, h);
     if (again.accepted()) {
         ++refreshes_;
-        again.iterations += first;
+        again.iterations += out.iterations;
         return again;
     }
     out.failure += "; again with the iteration matrix refreshed at the stages: " + again.failure;
     return out;
+}
+
+// factor() at the stage mean of Z_ and t + h/2, with the bookkeeping of the kept matrix.
+bool GaussStepper::refactor(double t, double h) {
+    factored_h_ = 0.0;
+    if (!factor(t + 0.5 * h, h)) return false;
+    factored_h_ = h;
+    ++factorizations_;
+    return true;
 }
 
 // The collocation step for the shared loop (core/time_stepping.hpp): one step per attempt, or
@@ -443,7 +468,10 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
     const auto output = [&](const TimeStepRecord& record) {
         // The output state's acceleration (reactions) is the consistent one of its (q, v), not
         // the stage polynomial's order-s extrapolation; the next step starts from the latter
-        // again, as it would without this output.
+        // again, as it would without this output. It costs a mass factorization (about a third
+        // of a fresh GL2 step on the joined beam: docs/performance.md), spent only when someone
+        // reads the output.
+        if (!on_output) return;
         problem.start_rates(kept_v, kept_v_dot);
         problem.initialize_acceleration(record.time);
         if (on_output) on_output(record);

@@ -25,15 +25,20 @@
 // (docs/displacement-dynamics.md).
 //
 // Stage equations: simplified Newton (Hairer & Wanner, "Solving ODEs II", §IV.8) with the
-// iteration matrix frozen at the step start (Δ = 0, v_n, v˙_n, t_n + h/2): dexp ≈ I and
+// iteration matrix frozen at a step start (Δ = 0, v_n, v˙_n, t_n + h/2): dexp ≈ I and
 //   J ≈ I ⊗ K₀ + (W/h) ⊗ C₀ + (W/h)² ⊗ M₀,   K₀ = ∂r/∂q, C₀ = ∂r/∂v, M₀ = ∂r/∂v˙.
 // With W = S Λ S⁻¹ (eigenvalues of A⁻¹: one conjugate pair for s = 2; one real value and one pair
 // for s = 3) the system decouples into one sparse matrix per eigenvalue,
 //   E(λ) = K₀ + (λ/h) C₀ + (λ/h)² M₀,
 // each of the problem's pattern: the real one factored by KLU (core/sparse_lu.hpp), the complex
-// one by Eigen's SparseLU in complex arithmetic; the conjugate partner's solution is the complex
-// conjugate. No dense stage matrix is formed. The convergence test is the project's
-// (core/convergence.hpp) on the stacked stage residuals and corrections.
+// one by KLU in complex arithmetic (core/complex_klu.hpp), both refactored in place with their
+// pivot orders kept; the conjugate partner's solution is the complex conjugate. No dense stage
+// matrix is formed. The convergence test is the project's (core/convergence.hpp) on the stacked
+// stage residuals and corrections. The matrix is kept for the next step of the same size while
+// the last stage iteration contracted by kKeptMatrixRate or better (core/stage_iteration.hpp), as
+// Radau IIA keeps its own (core/dae_radau.hpp); an iteration with a kept matrix that fails is
+// repeated with a fresh one before the step counts as failed. A kept matrix changes only the
+// iterates, not the converged stages (within the Newton tolerance).
 #pragma once
 
 #include <functional>

@@ -4,11 +4,12 @@
 // so the iteration converges linearly and the project's convergence test
 // (core/convergence.hpp) runs with `linear` set. The schemes differ only in their stages, which
 // `Stages` provides:
-//   double residual()             the stage residuals at the iterate, scaled (may be non-finite);
-//   double correction()           solves for the correction of every stage, returns its scaled
-//   size; void apply_correction()       adds it to the iterate; void converged(double rate)   the
-//   iteration ended at the iterate (rate: the largest
-//                                 contraction factor seen, 0 after one iteration).
+//  - double residual(): the stage residuals at the iterate, scaled (may be non-finite);
+//  - double correction(): solves for the correction of every stage, returns its scaled size;
+//  - void apply_correction(): adds it to the iterate;
+//  - void converged(double rate): the iteration ended at the iterate; rate is the largest
+//    contraction factor η_k/η_{k−1} seen (0 after one iteration), which decides whether the
+//    matrix is kept (kKeptMatrixRate).
 // Two iterations in a row in which neither the correction nor the residual shrinks mean the frozen
 // matrix no longer describes the stage equations (step too large): the iteration stops with that
 // message, as after max_iterations.
@@ -24,6 +25,13 @@
 #include "core/static_driver.hpp"
 
 namespace rotbeam {
+
+// The stage matrices are kept for the next step (of the same size) when the last iteration
+// contracted at least this fast (its `rate`, above). A kept matrix costs nothing but iterations,
+// each s residuals and the transformed solves, against the Jacobian evaluations and the
+// factorizations of fresh ones (docs/performance.md, "Cost of one step of the high-order
+// schemes").
+constexpr double kKeptMatrixRate = 0.05;
 
 template <class Stages>
 NewtonOutcome iterate_stages(Stages& stages, const NewtonSettings& newton, double round_off_floor) {

@@ -1,5 +1,6 @@
 // Residual + Jacobian evaluation allocates nothing after the first call (the Newton loop must
-// not allocate): a counting global operator new around evaluate().
+// not allocate): the C allocator counted (tests/mixed/allocation_counter.cpp: Eigen allocates with
+// std::malloc and std::calloc, operator new ends in malloc).
 #define BOOST_TEST_MODULE displacement_allocation
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
@@ -8,34 +9,14 @@
 #include <iostream>
 #include <vector>
 
+#include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/step_observer.hpp"
 #include "deformed.hpp"
 #include "dynamic_state.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "tests/harness/type_lists.hpp"
-
-// Eigen allocates with std::malloc, not operator new, so malloc itself is interposed (the
-// executable's definition wins over glibc's; __libc_malloc is glibc's implementation). The
-// reserved names are glibc's own exported symbols, declared here because no header declares them.
-extern "C" void* __libc_malloc(std::size_t);               // NOLINT(bugprone-reserved-identifier)
-extern "C" void* __libc_calloc(std::size_t, std::size_t);  // NOLINT(bugprone-reserved-identifier)
-extern "C" void* __libc_realloc(void*, std::size_t);       // NOLINT(bugprone-reserved-identifier)
-namespace {
-long g_allocations = 0;
-}
-extern "C" void* malloc(std::size_t n) {
-    ++g_allocations;
-    return __libc_malloc(n);
-}
-extern "C" void* calloc(std::size_t n, std::size_t m) {
-    ++g_allocations;
-    return __libc_calloc(n, m);
-}
-extern "C" void* realloc(void* p, std::size_t n) {
-    ++g_allocations;
-    return __libc_realloc(p, n);
-}
+#include "tests/mixed/allocation_counter.hpp"
 
 using namespace rotbeam;
 
@@ -48,20 +29,20 @@ long allocations_in_repeated_evaluations() {
     SparseMatrix J;
     s.evaluate(r, &J);  // first call: sizes r and copies the fixed pattern into J
     const VecX dx = VecX::Constant(s.size(), 1e-3);
-    const long before = g_allocations;
+    const long before = test::allocation_count();
     for (int k = 0; k < 3; ++k) {
         s.evaluate(r, &J);
         s.evaluate(r, nullptr);
         s.retract(dx);
     }
-    return g_allocations - before;
+    return test::allocation_count() - before;
 }
 
 // The counter sees Eigen's allocations (otherwise the test below could not fail).
 BOOST_AUTO_TEST_CASE(counter_sees_eigen_allocations) {
-    const long before = g_allocations;
+    const long before = test::allocation_count();
     VecX v = VecX::Random(100);
-    BOOST_TEST(g_allocations > before);
+    BOOST_TEST(test::allocation_count() > before);
     BOOST_TEST(v.size() == 100);
 }
 
@@ -83,7 +64,7 @@ long allocations_in_dynamic_steps() {
     const VecX dx = VecX::Constant(d.size(), 1e-5);
     const int root = d.mesh().point_node[0];
     d.end_step();
-    const long before = g_allocations;
+    const long before = test::allocation_count();
     for (int k = 0; k < 3; ++k) {
         d.begin_step(0.22 + 0.01 * k, 0.01, g);
         d.evaluate(r, &J);
@@ -96,7 +77,7 @@ long allocations_in_dynamic_steps() {
         BOOST_TEST(d.reaction(root).norm() > 0.0);
         d.end_step();
     }
-    return g_allocations - before;
+    return test::allocation_count() - before;
 }
 
 BOOST_AUTO_TEST_CASE_TEMPLATE(dynamic_steps_of_the_formulation_allocate_nothing_after_the_first, P,
@@ -138,7 +119,7 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
     iterations.reserve(32);
     const DynamicOutcome out =
         run_generalized_alpha(d, ts, NewtonSettings{}, [&](const TimeStepRecord& s) {
-            at_step.push_back(g_allocations);
+            at_step.push_back(test::allocation_count());
             iterations.push_back(s.newton_iterations);
         });
     BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
@@ -151,6 +132,39 @@ BOOST_AUTO_TEST_CASE(full_time_steps_allocate_nothing_after_the_first) {
         BOOST_TEST(a == 0);
     }
     std::cout << "\n";
+}
+
+// The same for the Gauss–Legendre collocation (2 and 3 stages): stage iterations, the iteration
+// matrix's three assemblies, its real (KLU) and complex (complex KLU) factorizations and solves,
+// kept or refreshed, allocate nothing after the first step. Counted per accepted step by the step
+// observer (below), with outputs only at the start and the end: an output computes the consistent
+// acceleration of its state with a factorization of its own (DisplacementDynamics::
+// initialize_acceleration), which allocates, once per output interval, not per step.
+BOOST_AUTO_TEST_CASE(gauss_collocation_steps_allocate_nothing_after_the_first) {
+    for (const int stages : {2, 3}) {
+        form::DisplacementDynamics<param::Quaternion> d(dead_loaded_moving_model());
+        TimeIntegrationSettings ts = twelve_steps();
+        ts.output_interval = ts.end_time;
+        std::vector<long> at_step;
+        at_step.reserve(32);
+        DynamicOutcome out;
+        {
+            const ScopedStepObserver observer(
+                [](void* context, const StepProgress&) {
+                    static_cast<std::vector<long>*>(context)->push_back(test::allocation_count());
+                },
+                &at_step);
+            out = run_gauss_collocation(d, stages, ts, NewtonSettings{}, nullptr);
+        }
+        BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
+        BOOST_TEST_REQUIRE(at_step.size() == 12u);
+        std::cout << "Gauss–Legendre " << stages << " stages, allocations per time step (2-12):";
+        for (size_t k = 1; k < at_step.size(); ++k) {
+            std::cout << " " << at_step[k] - at_step[k - 1];
+            BOOST_TEST(at_step[k] - at_step[k - 1] == 0);
+        }
+        std::cout << "\n";
+    }
 }
 
 // The step observer (core/step_observer.hpp, `rotbeam bench --targets long-run`) is told about
@@ -173,11 +187,11 @@ BOOST_AUTO_TEST_CASE(the_step_observer_sees_every_step_and_allocates_nothing) {
             [](void* context, const StepProgress& p) {
                 Seen& s = *static_cast<Seen*>(context);
                 s.progress.push_back(p);
-                s.allocations.push_back(g_allocations);
+                s.allocations.push_back(test::allocation_count());
             },
             &seen);
         out = run_generalized_alpha(d, ts, NewtonSettings{}, [&](const TimeStepRecord&) {
-            at_output.push_back(g_allocations);
+            at_output.push_back(test::allocation_count());
         });
     }
     BOOST_TEST(current_step_observer.function == nullptr);  // restored at the end of the scope
