@@ -136,4 +136,57 @@ BOOST_AUTO_TEST_CASE(figures_appear_complete_under_their_names_or_not_at_all) {
     fs::remove_all(dir);
 }
 
+// A writer that does not check its writes (gnuplot exits 0 after a write failed) leaves a file cut
+// short at the file size limit: the completeness check refuses it before anything is renamed (the
+// whole companion file included), names the target and the limit, and the old figures stay.
+BOOST_AUTO_TEST_CASE(a_figure_cut_short_by_its_writer_is_refused_with_the_reason) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "rotbeam_results_cut_short";
+    fs::remove_all(dir);
+    const std::string base = (dir / "plot").string();
+    write_files_atomically(base, [](const std::string& temporary) {
+        std::ofstream(temporary + ".png") << "old";
+        std::ofstream(temporary + ".svg") << "old";
+    });
+    const std::string whole(10000, 'x');
+    const auto is_whole = [&whole](const std::string& file) {
+        std::ifstream in(file);
+        std::string text;
+        in >> text;
+        return text == whole || text == "small";
+    };
+    const auto previous = ::signal(SIGXFSZ, SIG_IGN);
+    rlimit saved{};
+    getrlimit(RLIMIT_FSIZE, &saved);
+    rlimit small = saved;
+    small.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &small);
+    std::string message;
+    try {
+        write_files_atomically(
+            base,
+            [&whole](const std::string& temporary) {
+                std::ofstream(temporary + ".png") << whole;  // stops at 4096 bytes, unreported
+                std::ofstream(temporary + ".svg") << "small";
+            },
+            is_whole);
+    } catch (const OutputError& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &saved);
+    ::signal(SIGXFSZ, previous);
+    BOOST_TEST(message.find(base + ".png: write failed") != std::string::npos, message);
+    BOOST_TEST(message.find("file size limit") != std::string::npos, message);
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+    std::sort(names.begin(), names.end());
+    BOOST_TEST(names == (std::vector<std::string>{"plot.png", "plot.svg"}));
+    for (const char* suffix : {".png", ".svg"}) {
+        std::string text;
+        std::ifstream(base + suffix) >> text;
+        BOOST_TEST(text == "old", suffix);
+    }
+    fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
