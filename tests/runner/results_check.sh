@@ -17,7 +17,7 @@ same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
 # SIGKILL cannot remove the one it was writing; the next suite in DIR clears it), every JSON
 # parses, no empty file, and no file cut short: every text file the program writes (JSON, CSV,
 # gnuplot data, Markdown, HTML, SVG) ends with its last line's newline, every CSV row has the
-# header's number of fields, every PNG ends with its IEND chunk.
+# header's number of fields, every PNG ends with its IEND chunk, every SVG with its closing tag.
 complete_files() {
     if [ "${3:-}" != temporaries-allowed ] && find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then
         fail "$2: temporary left behind"
@@ -42,6 +42,8 @@ for p in pathlib.Path(sys.argv[1]).rglob("*"):
             bad.append(f"{p}: a row with another number of fields than the header")
     if p.suffix == ".png" and not data.endswith(b"IEND\xaeB`\x82"):
         bad.append(f"{p}: no IEND chunk at the end")
+    if p.suffix == ".svg" and not data.rstrip().endswith(b"</svg>"):
+        bad.append(f"{p}: no closing </svg> tag at the end")
 for b in bad[:5]:
     print(b)
 sys.exit(1 if bad else 0)
