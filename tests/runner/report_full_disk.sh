@@ -30,7 +30,8 @@ for kib in 1 48; do
     if [ $code -eq 4 ]; then
         grep -q "^rotbeam: $dir/.*: write failed, nothing written: file too large" <<<"$last" ||
             fail "ulimit -f $kib: the last line does not name the file and the limit: $last"
-        stopped="$stopped ${last%%: write failed*}"
+        name=${last#rotbeam: "$dir"/}
+        stopped="$stopped ${name%%: write failed*}"
     else
         fail "ulimit -f $kib: exit $code, expected 4: $last"
     fi
