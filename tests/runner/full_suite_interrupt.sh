@@ -9,7 +9,7 @@
 # (docs/durability.md, "What is tested").
 # Usage: full_suite_interrupt.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-# rotbeam, compare; work, fail and failures; complete_files.
+# rotbeam, compare; work, fail and failures; complete_files and limited.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
@@ -39,10 +39,7 @@ for stop in INT:2 KILL:4 TERM:6; do
 done
 
 dir="$work/full"
-(
-    ulimit -f 1
-    exec "$rotbeam" suite --no-studies --jobs 2 --out "$dir" >/dev/null 2>"$work/err.txt"
-)
+limited 1 "$work/err.txt" "$rotbeam" suite --no-studies --jobs 2 --out "$dir"
 code=$?
 last=$(tail -1 "$work/err.txt")
 [ $code -eq 4 ] || fail "ulimit -f 1: exit $code, expected 4: $last"

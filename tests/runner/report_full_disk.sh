@@ -9,7 +9,7 @@
 # Usage: report_full_disk.sh ROTBEAM COMPARE_RESULTS_PY QUICK_SUITE
 set -u
 suite=$3
-# rotbeam, compare; work, fail and failures; same and complete_files.
+# rotbeam, compare; work, fail and failures; same, complete_files and limited.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 
 [ -f "$suite/index.md" ] || fail "no quick suite in $suite (the fixture quick_suite failed?)"
@@ -21,10 +21,7 @@ stopped=""
 for kib in 1 48; do
     dir="$work/full-$kib"
     cp -r "$suite" "$dir"
-    (
-        ulimit -f "$kib"
-        exec "$rotbeam" suite --quick --no-studies --jobs 2 --out "$dir" >/dev/null 2>"$work/err.txt"
-    )
+    limited "$kib" "$work/err.txt" "$rotbeam" suite --quick --no-studies --jobs 2 --out "$dir"
     code=$?
     last=$(tail -1 "$work/err.txt")
     if [ $code -eq 4 ]; then

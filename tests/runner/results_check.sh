@@ -1,10 +1,23 @@
 # Checks of rotbeam output folders shared by the suite tests (docs/durability.md), sourced as
 # `. results_check.sh ROTBEAM COMPARE_RESULTS_PY`: sets `rotbeam` and `compare`
 # (scripts/compare-results.py), brings scratch.sh's set-up (work, fail, failures) and defines
-# `same` and `complete_files`.
+# `same`, `complete_files` and `limited`.
 rotbeam=$1
 compare=$2
 . "$(dirname "${BASH_SOURCE[0]}")/scratch.sh"
+
+# limited KIB ERR COMMAND...: COMMAND under a file size limit of KIB KiB (ulimit -f, the EFBIG of a
+# full disk), its output discarded and its stderr written to ERR through a pipe (stderr into a file
+# would be cut at the limit too, and the error line with it); returns COMMAND's exit status.
+limited() {
+    local kib=$1 err=$2
+    shift 2
+    (
+        ulimit -f "$kib"
+        exec "$@" 2>&1 >/dev/null
+    ) | cat >"$err"
+    return "${PIPESTATUS[0]}"
+}
 
 same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
     "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {

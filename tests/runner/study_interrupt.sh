@@ -17,7 +17,7 @@
 # JSON, figures through gnuplot); the full forms differ by more points, not by other writes.
 # Usage: study_interrupt.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-# rotbeam, compare; work, fail and failures; complete_files.
+# rotbeam, compare; work, fail and failures; complete_files and limited.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
@@ -76,11 +76,8 @@ full() {
     local name=$1 kib=$2 dir="$work/$1"
     mkdir -p "$dir"
     local start=$SECONDS
-    (
-        ulimit -f "$kib"
-        # shellcheck disable=SC2046
-        exec "$rotbeam" $(study_args "$name" "$dir") >/dev/null 2>"$work/err.txt"
-    )
+    # shellcheck disable=SC2046
+    limited "$kib" "$work/err.txt" "$rotbeam" $(study_args "$name" "$dir")
     local code=$?
     local last
     last=$(tail -1 "$work/err.txt")
