@@ -2,7 +2,9 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -94,6 +96,22 @@ std::vector<fs::path> with_prefix(const fs::path& temporary) {
     return files;
 }
 
+// Why another program's file came out cut short: the file size limit it reached (EFBIG), a full
+// disk (no block left for an unprivileged writer), else the writer's own failure.
+std::string incomplete_file_reason(const fs::path& file) {
+    struct rlimit limit {};
+    struct stat status {};
+    if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+        ::stat(file.c_str(), &status) == 0 &&
+        static_cast<rlim_t>(status.st_size) >= limit.rlim_cur) {
+        return reason(EFBIG);
+    }
+    struct statvfs disk {};
+    const fs::path directory = file.has_parent_path() ? file.parent_path() : ".";
+    if (::statvfs(directory.c_str(), &disk) == 0 && disk.f_bavail == 0) return reason(ENOSPC);
+    return "cut short by the program that wrote it";
+}
+
 void remove_with_prefix(const fs::path& temporary) {
     for (const fs::path& file : with_prefix(temporary)) ::unlink(file.c_str());
 }
@@ -139,7 +157,8 @@ void write_file_atomically(const std::string& path, const std::string& text) {
 }
 
 void write_files_atomically(const std::string& target_base,
-                            const std::function<void(const std::string& temporary_base)>& write) {
+                            const std::function<void(const std::string& temporary_base)>& write,
+                            const std::function<bool(const std::string& file)>& complete) {
     const fs::path target(target_base);
     if (target.has_parent_path()) {
         std::error_code ec;
@@ -156,12 +175,21 @@ void write_files_atomically(const std::string& target_base,
         remove_with_prefix(temporary);
         throw;
     }
+    const std::vector<fs::path> files = with_prefix(temporary);
+    const auto final_path_of = [&](const fs::path& file) {
+        return target_base + file.filename().string().substr(temporary.filename().string().size());
+    };
+    for (const fs::path& file : complete ? files : std::vector<fs::path>{}) {
+        if (!complete(file.string())) {
+            const std::string why = incomplete_file_reason(file);
+            remove_with_prefix(temporary);
+            throw OutputError(final_path_of(file) + ": write failed, nothing written: " + why);
+        }
+    }
     int error = 0;
     std::string failed;
-    for (const fs::path& file : with_prefix(temporary)) {
-        const std::string suffix =
-            file.filename().string().substr(temporary.filename().string().size());
-        const std::string final_path = target_base + suffix;
+    for (const fs::path& file : files) {
+        const std::string final_path = final_path_of(file);
         const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
         if (fd < 0 || ::fsync(fd) != 0) error = errno;
         if (fd >= 0) ::close(fd);

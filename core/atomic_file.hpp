@@ -25,9 +25,14 @@ void write_file_atomically(const std::string& path, const std::string& text);
 // `target_base` (".NAME.rotbeam-tmp.PID.N_") and writes its files as that base + suffix. Each file
 // it wrote is then flushed to the disk and renamed to `target_base` + suffix. If `write` throws,
 // its files are removed and the exception propagates; a failed flush or rename removes the files
-// not yet renamed and throws OutputError naming the target.
+// not yet renamed and throws OutputError naming the target. `complete(file)`, when given, says
+// whether a file the writer left is whole: a program that does not check its writes (gnuplot, past
+// a file size limit or on a full disk, exits 0 with a figure cut short) cannot be trusted to fail.
+// Every file is checked before any is renamed; one that is not whole fails the write the same way,
+// with the likely reason (the file size limit it reached, a full disk).
 void write_files_atomically(const std::string& target_base,
-                            const std::function<void(const std::string& temporary_base)>& write);
+                            const std::function<void(const std::string& temporary_base)>& write,
+                            const std::function<bool(const std::string& file)>& complete = {});
 
 // Removes the temporaries of every write in flight and blocks all further writes (never
 // returns the lock). Only for a program about to exit.

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -62,21 +63,44 @@ void run_once(const std::string& script, const std::map<std::string, std::string
     }
 }
 
+// Whether a figure gnuplot wrote is whole: gnuplot does not check its writes, so on a full disk or
+// past a file size limit it exits 0 with a figure cut short. A PNG ends with its IEND chunk, an SVG
+// with its closing tag (and white space); the scripts write no other format.
+bool gnuplot_figure_complete(const std::string& file) {
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in.tellg();
+    const std::streamoff tail_size = std::min<std::streamoff>(size, 64);
+    if (!in || size <= 0) return false;
+    std::string tail(static_cast<size_t>(tail_size), '\0');
+    in.seekg(size - tail_size);
+    in.read(tail.data(), tail_size);
+    if (file.ends_with(".png")) return tail.ends_with(std::string("IEND\xae\x42\x60\x82"));
+    if (file.ends_with(".svg")) {
+        const size_t last = tail.find_last_not_of(" \t\r\n");
+        return last != std::string::npos && tail.substr(0, last + 1).ends_with("</svg>");
+    }
+    return true;
+}
+
 }  // namespace
 
 // The figures (every script writes `outbase` + a suffix) are written atomically: under a temporary
-// base, renamed once gnuplot has finished them (core/atomic_file.hpp).
+// base, checked whole (gnuplot_figure_complete) and renamed once gnuplot has finished them
+// (core/atomic_file.hpp).
 void run_gnuplot_script(const std::string& script, const std::map<std::string, std::string>& vars) {
     const auto outbase = vars.find("outbase");
     if (outbase == vars.end()) {
         run_once(script, vars, "");
         return;
     }
-    write_files_atomically(outbase->second, [&](const std::string& temporary_base) {
-        std::map<std::string, std::string> v = vars;
-        v["outbase"] = temporary_base;
-        run_once(script, v, outbase->second);
-    });
+    write_files_atomically(
+        outbase->second,
+        [&](const std::string& temporary_base) {
+            std::map<std::string, std::string> v = vars;
+            v["outbase"] = temporary_base;
+            run_once(script, v, outbase->second);
+        },
+        gnuplot_figure_complete);
 }
 
 }  // namespace rotbeam::cli

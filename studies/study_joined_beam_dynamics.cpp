@@ -20,6 +20,7 @@
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "joined_beam_dynamics.hpp"
+#include "runs/parallel.hpp"
 #include "runs/timing.hpp"
 #include "studies.hpp"
 #include "study_math.hpp"
@@ -116,17 +117,13 @@ struct ReferenceJob {
     double agreement = kReferenceAgreement;
 };
 
+// On two threads; a reference that cannot be written (a full disk) stops the others and is
+// rethrown here (runs/parallel.hpp), not left to end the program from its thread.
 void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cache_dir) {
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        for (size_t i = next++; i < jobs.size(); i = next++) {
-            jobs[i].result = same_mesh_reference(jobs[i].combination, jobs[i].window,
-                                                 jobs[i].coarse_step, cache_dir, jobs[i].agreement);
-        }
-    };
-    std::thread a(worker), b(worker);
-    a.join();
-    b.join();
+    for_each_parallel(jobs.size(), 2, [&](size_t i) {
+        jobs[i].result = same_mesh_reference(jobs[i].combination, jobs[i].window,
+                                             jobs[i].coarse_step, cache_dir, jobs[i].agreement);
+    });
 }
 
 std::string seconds_text(double s) {
@@ -240,7 +237,12 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
         ida = run_spec(response_spec(mixed, tight, w));
         ida_cpu = thread_cpu_seconds() - c0;
     });
-    compute_references(jobs, cache);
+    try {
+        compute_references(jobs, cache);
+    } catch (...) {
+        ida_thread.join();  // a joinable thread's destructor would end the program
+        throw;
+    }
     ida_thread.join();
     const ReferenceResponse& fine_space = jobs.back().result;
     const JointResponse ida_response = joint_response(ida);

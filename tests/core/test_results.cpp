@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,31 @@
 using namespace rotbeam;
 
 BOOST_AUTO_TEST_SUITE(results)
+
+namespace {
+
+// The OutputError message of `write` run under a file size limit of 4 KiB (SIGXFSZ ignored, as
+// rotbeam does: a write past the limit fails with EFBIG), "" if it throws none; limit and signal
+// restored after.
+std::string output_error_under_a_4k_file_size_limit(const std::function<void()>& write) {
+    const auto previous = ::signal(SIGXFSZ, SIG_IGN);
+    rlimit saved{};
+    getrlimit(RLIMIT_FSIZE, &saved);
+    rlimit small = saved;
+    small.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &small);
+    std::string message;
+    try {
+        write();
+    } catch (const OutputError& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &saved);
+    ::signal(SIGXFSZ, previous);
+    return message;
+}
+
+}  // namespace
 
 BOOST_AUTO_TEST_CASE(a_point_reports_the_norm_of_its_continued_rotation_vector) {
     Model model;
@@ -68,20 +94,8 @@ BOOST_AUTO_TEST_CASE(a_failed_write_names_the_file_and_keeps_the_old_one) {
     fs::remove_all(dir);
     const std::string path = (dir / "r.json").string();
     write_file_atomically(path, "old");
-    const auto previous = ::signal(SIGXFSZ, SIG_IGN);
-    rlimit saved{};
-    getrlimit(RLIMIT_FSIZE, &saved);
-    rlimit small = saved;
-    small.rlim_cur = 4096;
-    setrlimit(RLIMIT_FSIZE, &small);
-    std::string message;
-    try {
-        write_file_atomically(path, std::string(10000, 'x'));
-    } catch (const OutputError& e) {
-        message = e.what();
-    }
-    setrlimit(RLIMIT_FSIZE, &saved);
-    ::signal(SIGXFSZ, previous);
+    const std::string message = output_error_under_a_4k_file_size_limit(
+        [&] { write_file_atomically(path, std::string(10000, 'x')); });
     BOOST_TEST(message.find(path) != std::string::npos, message);
     BOOST_TEST(message.find("file size limit") != std::string::npos, message);
     std::ifstream in(path);
@@ -133,6 +147,48 @@ BOOST_AUTO_TEST_CASE(figures_appear_complete_under_their_names_or_not_at_all) {
     BOOST_TEST(files_in() == (std::vector<std::string>{"plot-tip.svg", "plot.png"}));
     std::ifstream(base + ".png") >> text;
     BOOST_TEST(text == "png");
+    fs::remove_all(dir);
+}
+
+// A writer that does not check its writes (gnuplot exits 0 after a write failed) leaves a file cut
+// short at the file size limit: the completeness check refuses it before anything is renamed (the
+// whole companion file included), names the target and the limit, and the old figures stay.
+BOOST_AUTO_TEST_CASE(a_figure_cut_short_by_its_writer_is_refused_with_the_reason) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "rotbeam_results_cut_short";
+    fs::remove_all(dir);
+    const std::string base = (dir / "plot").string();
+    write_files_atomically(base, [](const std::string& temporary) {
+        std::ofstream(temporary + ".png") << "old";
+        std::ofstream(temporary + ".svg") << "old";
+    });
+    const std::string whole(10000, 'x');
+    const auto is_whole = [&whole](const std::string& file) {
+        std::ifstream in(file);
+        std::string text;
+        in >> text;
+        return text == whole || text == "small";
+    };
+    const std::string message = output_error_under_a_4k_file_size_limit([&] {
+        write_files_atomically(
+            base,
+            [&whole](const std::string& temporary) {
+                std::ofstream(temporary + ".png") << whole;  // stops at 4096 bytes, unreported
+                std::ofstream(temporary + ".svg") << "small";
+            },
+            is_whole);
+    });
+    BOOST_TEST(message.find(base + ".png: write failed") != std::string::npos, message);
+    BOOST_TEST(message.find("file size limit") != std::string::npos, message);
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename());
+    std::sort(names.begin(), names.end());
+    BOOST_TEST(names == (std::vector<std::string>{"plot.png", "plot.svg"}));
+    for (const char* suffix : {".png", ".svg"}) {
+        std::string text;
+        std::ifstream(base + suffix) >> text;
+        BOOST_TEST(text == "old", suffix);
+    }
     fs::remove_all(dir);
 }
 

@@ -1,10 +1,23 @@
 # Checks of rotbeam output folders shared by the suite tests (docs/durability.md), sourced as
 # `. results_check.sh ROTBEAM COMPARE_RESULTS_PY`: sets `rotbeam` and `compare`
 # (scripts/compare-results.py), brings scratch.sh's set-up (work, fail, failures) and defines
-# `same` and `complete_files`.
+# `same`, `complete_files` and `limited`.
 rotbeam=$1
 compare=$2
 . "$(dirname "${BASH_SOURCE[0]}")/scratch.sh"
+
+# limited KIB ERR COMMAND...: COMMAND under a file size limit of KIB KiB (ulimit -f, the EFBIG of a
+# full disk), its output discarded and its stderr written to ERR through a pipe (stderr into a file
+# would be cut at the limit too, and the error line with it); returns COMMAND's exit status.
+limited() {
+    local kib=$1 err=$2
+    shift 2
+    (
+        ulimit -f "$kib"
+        exec "$@" 2>&1 >/dev/null
+    ) | cat >"$err"
+    return "${PIPESTATUS[0]}"
+}
 
 same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
     "$compare" "$1" "$2" >"$work/compare.txt" 2>&1 || {
@@ -17,7 +30,7 @@ same() {  # same DIR_A DIR_B WHAT: identical results by compare-results.py
 # SIGKILL cannot remove the one it was writing; the next suite in DIR clears it), every JSON
 # parses, no empty file, and no file cut short: every text file the program writes (JSON, CSV,
 # gnuplot data, Markdown, HTML, SVG) ends with its last line's newline, every CSV row has the
-# header's number of fields, every PNG ends with its IEND chunk.
+# header's number of fields, every PNG ends with its IEND chunk, every SVG with its closing tag.
 complete_files() {
     if [ "${3:-}" != temporaries-allowed ] && find "$1" -name '*.rotbeam-tmp.*' | grep -q .; then
         fail "$2: temporary left behind"
@@ -42,6 +55,8 @@ for p in pathlib.Path(sys.argv[1]).rglob("*"):
             bad.append(f"{p}: a row with another number of fields than the header")
     if p.suffix == ".png" and not data.endswith(b"IEND\xaeB`\x82"):
         bad.append(f"{p}: no IEND chunk at the end")
+    if p.suffix == ".svg" and not data.rstrip().endswith(b"</svg>"):
+        bad.append(f"{p}: no closing </svg> tag at the end")
 for b in bad[:5]:
     print(b)
 sys.exit(1 if bad else 0)
