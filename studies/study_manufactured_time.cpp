@@ -98,7 +98,6 @@ std::string file_label(std::string s) {
 
 // The components whose time error is measured (ComponentDifferences), in table order.
 constexpr int kTimeComponents = 4;
-const char* const kTimeComponentNames[kTimeComponents] = {"u", "R", "v", "F"};
 
 double component(const ComponentDifferences& d, int k) {
     const double v[kTimeComponents] = {d.u, d.R, d.velocity, d.forces};
