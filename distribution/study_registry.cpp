@@ -23,6 +23,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"singularity", study_singularity},
         {"extremes", study_extremes},
         {"manufactured-time", study_manufactured_time},
+        {"free-vibration-time", study_free_vibration_time},
         {"speed-accuracy", study_speed_accuracy},
         {"joined-beam-modal", study_joined_beam_modal},
         {"joined-beam-dynamics", study_joined_beam_dynamics},

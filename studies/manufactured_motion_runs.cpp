@@ -79,6 +79,13 @@ void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunRe
     const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
     const auto on_output = [&](const TimeStepRecord& r) {
         record(r.time, [&](int p) { return d.point_state(p); });
+        VecX v(d.size());
+        int k = 0;
+        for (size_t i = 0; i < mesh.nodes.size(); ++i) {
+            if (mesh.nodes[i].dof < 0) continue;
+            v.segment<6>(6 * k++) = d.node_velocity(static_cast<int>(i));
+        }
+        result.velocity.push_back(v.head(6 * k));
     };
     const int stages = gauss_stages(spec.integrator);
     const DynamicOutcome out = stages > 0 ? run_gauss_collocation(d, stages, ts, newton, on_output)
@@ -156,9 +163,20 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
     s.time_step = spec.dt;
     s.output_interval = model.analysis.dynamics.output_interval;
     s.relative_tolerance = s.absolute_tolerance = spec.tolerance;
+    if (spec.newton_tolerance > 0.0) {
+        s.newton.residual_tolerance = s.newton.increment_tolerance = spec.newton_tolerance;
+    }
     Recorder record{model, spec.motion, result};
+    const form::MixedNumbering& nb = dyn.numbering();
     const DaeOutput output = [&](double t, const VecX& xs, const VecX&, int) {
         record(t, [&](int p) { return dyn.point_state(xs, t, p); });
+        VecX momenta(6 * nb.element_count), forces(6 * nb.element_count);
+        for (int e = 0; e < nb.element_count; ++e) {
+            momenta.segment<6>(6 * e) = xs.segment<6>(nb.element_column(e) + nb.P());
+            forces.segment<6>(6 * e) = xs.segment<6>(nb.element_column(e) + nb.F());
+        }
+        result.velocity.push_back(momenta);
+        result.forces.push_back(forces);
     };
     const bool ida = spec.integrator == Integrator::ida;
     if constexpr (P::kSize == 4) {
@@ -176,6 +194,8 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
         }
     }
     const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
+                           : spec.integrator == Integrator::radau_iia_3
+                               ? integrate_radau_iia(dyn, x, xdot, s, output)
                                : integrate_trapezoidal(dyn, x, xdot, s, output);
     result.status = to_string(out.status);
     result.message = out.message;
@@ -226,6 +246,9 @@ Model motion_run_model(const MotionRunSpec& spec) {
     m.analysis.dynamics.relative_tolerance = m.analysis.dynamics.absolute_tolerance =
         spec.tolerance;
     m.analysis.dynamics.output_interval = spec.end_time / kMotionOutputs;
+    if (spec.newton_tolerance > 0.0) {
+        m.solver.residual_tolerance = m.solver.increment_tolerance = spec.newton_tolerance;
+    }
     return m;
 }
 
@@ -267,6 +290,31 @@ void run_difference(const MotionRunResult& a, const MotionRunResult& b, double l
         du = std::max(du, (a.u[i] - b.u[i]).norm() / length);
         dR = std::max(dR, so3::log_map(a.R[i].transpose() * b.R[i]).norm());
     }
+}
+
+namespace {
+
+// Max over the common outputs of ‖a_k − b_k‖∞ over the max over the outputs of ‖b_k‖∞.
+double relative_history_difference(const std::vector<VecX>& a, const std::vector<VecX>& b) {
+    const size_t n = std::min(a.size(), b.size());
+    double diff = 0.0, size = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        if (a[k].size() != b[k].size() || b[k].size() == 0) return 0.0;
+        diff = std::max(diff, (a[k] - b[k]).cwiseAbs().maxCoeff());
+        size = std::max(size, b[k].cwiseAbs().maxCoeff());
+    }
+    return size > 0.0 ? diff / size : 0.0;
+}
+
+}  // namespace
+
+ComponentDifferences component_differences(const MotionRunResult& a, const MotionRunResult& b,
+                                           double length) {
+    ComponentDifferences d;
+    run_difference(a, b, length, d.u, d.R);
+    d.velocity = relative_history_difference(a.velocity, b.velocity);
+    d.forces = relative_history_difference(a.forces, b.forces);
+    return d;
 }
 
 }  // namespace rotbeam::cli

@@ -1,8 +1,8 @@
 // Runs of the manufactured motion (core/oracles/manufactured_motion.hpp) with every time
 // integrator: the displacement formulation with the Lie-group generalized-α or Gauss–Legendre
 // collocation (2 or 3 stages), the mixed one with
-// the fixed-step trapezoidal scheme or IDA. Shared by the time-convergence study
-// (study_manufactured_time.cpp) and its verification test (tests/agreement/
+// the fixed-step trapezoidal scheme, the 3-stage Radau IIA method or IDA. Shared by the
+// time-convergence study (study_manufactured_time.cpp) and its verification test (tests/agreement/
 // test_manufactured_motion.cpp). This file holds the parameterization switch for these runs, as
 // make_problem.cpp does for the case runs.
 //
@@ -35,7 +35,7 @@ struct MotionRunSpec {
     ParameterizationId rotation{};  // parameterizations/registry.hpp
     WmMap wm_map = WmMap::plain;    // mixed WM
     // displacement: generalized-alpha | gauss-legendre-2 | gauss-legendre-3; mixed: trapezoidal
-    // | ida (automatic: the first)
+    // | radau-iia-3 | ida (automatic: the first)
     Integrator integrator = Integrator::automatic;
     int elements = 2;  // per member (four members)
     int order = 1;     // displacement: polynomial order p
@@ -46,6 +46,9 @@ struct MotionRunSpec {
     // Displacement: adaptive steps with this global tolerance (translations over the motion's
     // length, rotations in rad) when > 0; dt is then the first step.
     double time_tolerance = 0.0;
+    // Newton (stage iteration) tolerance on the scaled residual and increment of every step when
+    // > 0; 0 keeps the drivers' defaults (displacement: the model's 1e-12, mixed: 1e-10).
+    double newton_tolerance = 0.0;
     oracle::ManufacturedMotion motion;
     std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5", ".../p3/gl2"
 };
@@ -63,6 +66,10 @@ struct MotionRunResult {
     // The point states at the output times (for differences between two runs).
     std::vector<Vec3> u;
     std::vector<Mat3> R;
+    // Per output time: the velocity-level unknowns (displacement: every free node's [u̇; ω];
+    // mixed: every element's momenta [P; H]) and, mixed only, every element's internal forces
+    // [F; M] (the index-3 multipliers of a closed loop; algebraic on a free rod).
+    std::vector<VecX> velocity, forces;
     bool ok() const { return has_solution(status); }
 };
 
@@ -85,5 +92,15 @@ oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
 // time error of `a` when `b` is the same mesh at a much smaller Δt (the space error cancels).
 void run_difference(const MotionRunResult& a, const MotionRunResult& b, double length, double& du,
                     double& dR);
+
+// The time error of `a` against `b` per component: positions (as run_difference), the
+// velocity-level unknowns and the internal forces, each the max over the common output times of
+// the max-norm difference over the largest magnitude of that component in `b` (0 when a run has
+// none, e.g. forces of the displacement formulation).
+struct ComponentDifferences {
+    double u = 0.0, R = 0.0, velocity = 0.0, forces = 0.0;
+};
+ComponentDifferences component_differences(const MotionRunResult& a, const MotionRunResult& b,
+                                           double length);
 
 }  // namespace rotbeam::cli

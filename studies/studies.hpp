@@ -23,6 +23,7 @@ SplitStudy singularity_study();                                    // study_sing
 SplitStudy extremes_study();                                       // study_extremes_newton.cpp
 nlohmann::json study_extremes(const StudyOptions& o);              // study_extremes.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);     // study_manufactured_time.cpp
+nlohmann::json study_free_vibration_time(const StudyOptions& o);   // study_free_vibration_time.cpp
 nlohmann::json study_joined_beam_modal(const StudyOptions& o);     // study_joined_beam_modal.cpp
 nlohmann::json study_joined_beam_dynamics(const StudyOptions& o);  // study_joined_beam_dynamics.cpp
 nlohmann::json study_joined_beam_agreement(
