@@ -24,6 +24,7 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"extremes", study_extremes},
         {"manufactured-time", study_manufactured_time},
         {"free-vibration-time", study_free_vibration_time},
+        {"effectivity", study_effectivity},
         {"speed-accuracy", study_speed_accuracy},
         {"joined-beam-modal", study_joined_beam_modal},
         {"joined-beam-dynamics", study_joined_beam_dynamics},
@@ -97,6 +98,7 @@ const std::vector<std::pair<std::string, SplitStudy>>& split_studies() {
         {"convergence", convergence_study()},
         {"singularity", singularity_study()},
         {"extremes", extremes_study()},
+        {"effectivity", effectivity_study()},
     };
     return table;
 }

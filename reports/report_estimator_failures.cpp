@@ -16,9 +16,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// An estimate misses when the true error exceeds this multiple of it (docs/error-estimates.md).
-constexpr double kFailureFactor = 3.0;
-
 Vec3 vec3(const json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
 
 Mat3 mat3(const json& j) {
@@ -32,19 +29,12 @@ bool estimated(const json& run) {
     return has_solution(run.value("status", "")) && (status == "estimated" || status == "partial");
 }
 
-// One quantity: a line when its true error is above `floor` and above 3 × its estimate `q`.
+// One quantity: a line when its true error is above `floor` and above 3 × its estimate `q`
+// (estimates/estimator_failure.hpp).
 void check(const std::string& what, double true_error, double floor, const json& q,
            std::vector<std::string>& out) {
-    if (!q.contains("error")) return;
-    const double est = q["error"].get<double>();
-    if (true_error <= floor || true_error <= kFailureFactor * est) return;
-    std::ostringstream line;
-    line << std::setprecision(2) << std::scientific << what << ": true " << true_error << " > 3 × "
-         << "estimate " << est << " ("
-         << (q.value("reliable", false) ? "reliable"
-                                        : "not reliable: " + q.value("reason", std::string()))
-         << ")";
-    out.push_back(line.str());
+    if (const std::optional<std::string> f = estimate::estimator_failure(true_error, floor, q))
+        out.push_back(what + ": " + *f);
 }
 
 }  // namespace
@@ -73,12 +63,12 @@ std::vector<std::string> estimator_failures(const nlohmann::json& run) {
             if (e.contains("displacement")) {
                 check(name + " displacement" + at,
                       (vec3(point["displacement"]) - exact->displacement).norm(),
-                      kFailureFloor * length, e["displacement"], out);
+                      estimate::kFailureFloor * length, e["displacement"], out);
             }
             if (e.contains("rotation") && point.contains("rotation_matrix")) {
                 const Mat3 R = mat3(point["rotation_matrix"]);
                 check(name + " rotation" + at, so3::rotation_angle(R.transpose() * exact->rotation),
-                      kFailureFloor, e["rotation"], out);
+                      estimate::kFailureFloor, e["rotation"], out);
             }
         }
     }
@@ -101,7 +91,7 @@ std::string estimator_failures_section(const std::vector<nlohmann::json>& runs) 
           "reference (the exact roll-up, the continuum reference), at every load step and named "
           "point: a true error above 3 × its estimate is an estimator failure, listed with the "
           "estimate's own verdict (docs/error-estimates.md). True errors at or below "
-       << kFailureFloor
+       << estimate::kFailureFloor
        << " (of the reference length, or rad) are not counted. Runs checked: " << checked
        << ".\n\n";
     const std::string failures = list.str();

@@ -9,13 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace rotbeam::cli {
+#include "estimates/estimator_failure.hpp"
 
-// True errors at or below this (times the estimates' reference length for displacements, in rad
-// for rotations) are not counted: the continuum reference is verified to 1.8e-11 and the solves'
-// algebraic error is near 1e-12 (docs/reference-solutions.md, docs/solver-convergence.md), so
-// below 1e-9 the "true error" is not known to better than a few per cent.
-inline constexpr double kFailureFloor = 1e-9;
+namespace rotbeam::cli {
 
 // One line per failure of `run`: "tip displacement at load factor 450: true 2.1e-08 > 3 ×
 // estimate 1.7e-09 (reliable)". Empty when there is none, or nothing to compare.

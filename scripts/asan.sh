@@ -104,8 +104,8 @@ fi
 if [ $full -eq 1 ]; then
   expect 0 -- "$rotbeam" study rotations --json "$log/rotations.json"
   step "study rotations"
-  for s in convergence singularity extremes manufactured-time speed-accuracy joined-beam-modal \
-           joined-beam-dynamics joined-beam-agreement; do
+  for s in convergence singularity extremes manufactured-time effectivity speed-accuracy \
+           joined-beam-modal joined-beam-dynamics joined-beam-agreement; do
     expect 0 -- "$rotbeam" study "$s" --quick --out "$log/study-$s"
     step "study $s --quick"
   done

@@ -21,6 +21,8 @@ nlohmann::json study_singularity(const StudyOptions& o);  // study_singularity.c
 SplitStudy convergence_study();                                    // study_convergence.cpp
 SplitStudy singularity_study();                                    // study_singularity.cpp
 SplitStudy extremes_study();                                       // study_extremes_newton.cpp
+SplitStudy effectivity_study();                                    // study_effectivity.cpp
+nlohmann::json study_effectivity(const StudyOptions& o);           // study_effectivity.cpp
 nlohmann::json study_extremes(const StudyOptions& o);              // study_extremes.cpp
 nlohmann::json study_manufactured_time(const StudyOptions& o);     // study_manufactured_time.cpp
 nlohmann::json study_free_vibration_time(const StudyOptions& o);   // study_free_vibration_time.cpp

@@ -45,9 +45,17 @@ Model build_model(const RunSpec& spec) {
     return model;
 }
 
-nlohmann::json run_spec(const RunSpec& spec) {
+nlohmann::json run_spec(const RunSpec& spec, bool estimate) {
     try {
         const Model model = build_model(spec);
+        if (estimate) {
+            SolvedPath solved;
+            RunRequest request{spec.case_name, model, false};
+            request.path = &solved;
+            nlohmann::json result = run_case(request);
+            add_run_estimate(request, result);
+            return result;
+        }
         return run_case(RunRequest{spec.case_name, model, false});
     } catch (const InputError& e) {
         return {{"status", "unavailable"},

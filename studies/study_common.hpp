@@ -47,9 +47,11 @@ struct RunSpec {
 };
 
 Model build_model(const RunSpec& spec);
-// run_case() on the spec's model. A combination the program refuses (InputError, e.g. "not
-// available") comes back as {"status": "unavailable", "message": ...} with no steps.
-nlohmann::json run_spec(const RunSpec& spec);
+// run_case() on the spec's model, with its error estimate when `estimate` (add_run_estimate,
+// warm-started from the run's solved path as `rotbeam run` does). A combination the program
+// refuses (InputError, e.g. "not available") comes back as {"status": "unavailable", "message":
+// ...} with no steps.
+nlohmann::json run_spec(const RunSpec& spec, bool estimate = false);
 bool converged_steps_exist(const nlohmann::json& result);
 
 // The 45° bend's tip as an exact point of the arc: the catalog prints it to 5 decimals, which the

@@ -9,6 +9,8 @@ nlohmann::json execute_run(const StudyRun& run) {
     switch (run.kind) {
         case StudyRun::Kind::case_run:
             return run_spec(run.spec);
+        case StudyRun::Kind::estimated_case_run:
+            return run_spec(run.spec, true);
         case StudyRun::Kind::continuum_reference:
             return continuum_reference(run.spec.case_name, run.spec.overrides);
     }

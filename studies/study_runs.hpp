@@ -20,6 +20,7 @@ struct StudyRun {
     enum class Kind {
         case_run,             // run_spec(spec): the code path of `rotbeam run`
         continuum_reference,  // continuum_reference(spec.case_name, spec.overrides)
+        estimated_case_run,   // run_spec(spec, true): with its error estimate (add_run_estimate)
     };
     std::string key;  // where the result goes: unique within the study's plan
     Kind kind = Kind::case_run;

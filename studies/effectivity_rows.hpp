@@ -1,0 +1,61 @@
+// The effectivity of the run's error estimate (estimated / true error, docs/error-estimates.md)
+// along one refinement sequence: one row per estimated quantity (a named point's displacement or
+// rotation at a load step, a frequency), with its true error against an independent reference,
+// whether the sequence is asymptotic there, and whether the estimate failed
+// (estimates/estimator_failure.hpp). What "asymptotic" means is decided from the true errors
+// alone, never from the estimator:
+// - p+1 (order p on a fixed mesh): the true errors of orders p, p+1, p+2 fall by more than half at
+//   each step (a p+2 error below the floor counts as fallen): then |e_p − e_{p+1}| lies within
+//   [1/2, 3/2] e_p, and the p+1 estimate's effectivity must lie within [0.5, 2];
+// - h/2, h/4 (elements doubled): the true errors at N, 2N, 4N fall monotonically with both observed
+//   orders within kOrderWindow of the theoretical order (Richardson's factor then off by at most
+//   ~20 %).
+// The last two levels of a sequence have no such evidence: they are never asymptotic.
+#pragma once
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rotbeam::cli {
+
+// The effectivity band where the sequence is asymptotic.
+inline constexpr double kEffectivityLow = 0.5;
+inline constexpr double kEffectivityHigh = 2.0;
+
+// One quantity at one level: its estimate ({"error", "reliable", "reason"}) and true error.
+struct QuantityAtLevel {
+    std::string quantity;  // "tip displacement at load factor 2", "frequency of mode 3"
+    nlohmann::json estimate;
+    double true_error = 0.0;
+    double floor = 0.0;  // true errors at or below it are not the discretization's
+};
+
+// Every estimated quantity of one level's result with a reference; the same quantity must carry
+// the same `quantity` name at every level (the rows pair levels by it).
+using LevelQuantities = std::vector<QuantityAtLevel>;
+
+struct EffectivityRow {
+    size_t level = 0;  // index in the sequence
+    QuantityAtLevel q;
+    double effectivity = 0.0;       // estimate / true error (NaN at or below the floor)
+    std::vector<double> next_true;  // the same quantity's true error at the next two levels
+    bool asymptotic = false;
+    std::optional<std::string> failure;  // estimates/estimator_failure.hpp
+};
+
+enum class RefinementKind { p, h };
+
+// The rows of a sequence; `theoretical_order` is the h-rate (unused for p).
+std::vector<EffectivityRow> effectivity_rows(const std::vector<LevelQuantities>& levels,
+                                             RefinementKind kind, double theoretical_order);
+
+// Whether the true errors e0, e1, e2 of three successive levels are asymptotic (above).
+bool asymptotic_errors(RefinementKind kind, double e0, double e1, double e2, double floor,
+                       double theoretical_order);
+
+nlohmann::json to_json(const EffectivityRow& row);
+
+}  // namespace rotbeam::cli

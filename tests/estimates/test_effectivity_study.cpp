@@ -1,0 +1,98 @@
+// The effectivity study's quick form (studies/study_effectivity.cpp, docs/error-estimates.md): the
+// roll-up against its exact solution and the 45° bend against the continuum reference, the
+// displacement formulation's p+1 estimate over orders 3 … 6 on two elements and the mixed one's
+// h/2, h/4 estimate over 4, 8, 16 elements, each level a `rotbeam run` with its estimate.
+//
+// What is asserted, and why:
+// - Every row's effectivity is its estimate over its true error, as stored.
+// - Where the true errors alone show the asymptotic regime, the effectivity lies in [0.5, 2]. The
+//   regime is decided here again from the stored true errors of the row's level and the next two,
+//   not from the study's flag, which must agree: p+1, each next order's error below half the one
+//   before (a p+2 error at the floor counts as below), so that |e_p − e_{p+1}| lies within
+//   [1/2, 3/2] e_p by the triangle inequality; h/2, h/4, monotone with both observed orders within
+//   0.5 of the mixed formulation's 2, where Richardson's factor is off by at most ~20 %.
+// - No reliable estimate has a true error above 3 × its estimate (an estimator failure nothing
+//   explains); the study lists failures of estimates that say they are not reliable with that
+//   reason, and none are expected on these levels either.
+// - Enough asymptotic rows per sequence, so that the band is actually checked.
+// A halved estimate (effectivity ~0.43 … 0.5 on the p rows) fails the band: checked by halving the
+// error of estimates/quantity_estimate.cpp's p and h estimates.
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <filesystem>
+
+#include "core/static_driver.hpp"
+#include "studies/studies.hpp"
+
+namespace rotbeam {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Asymptotic rows per sequence at least: 2 quantities × the load steps (roll-up 7, bend 3) at the
+// classifiable levels (p: orders 3 and 4; h: 4 elements), less those at the floor.
+constexpr int kMinAsymptoticRows = 4;
+
+bool regime_shown(const std::string& strategy, const json& row) {
+    const double e0 = row["true_error"].get<double>();
+    const double floor = row["floor"].get<double>();
+    const json& next = row["next_true_errors"];
+    if (next[0].is_null() || next[1].is_null() || e0 <= floor) return false;
+    const double e1 = next[0].get<double>(), e2 = next[1].get<double>();
+    if (strategy == "p+1") return e1 < 0.5 * e0 && (e2 <= floor || e2 < 0.5 * e1);
+    if (!(e2 < e1 && e1 < e0) || e2 <= floor) return false;
+    return std::abs(std::log2(e0 / e1) - 2.0) <= 0.5 && std::abs(std::log2(e1 / e2) - 2.0) <= 0.5;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimator_failures) {
+    cli::StudyOptions o;
+    o.quick = true;
+    o.out_dir = (std::filesystem::temp_directory_path() / "rotbeam-test-effectivity").string();
+    std::filesystem::remove_all(o.out_dir);
+    const json out = cli::run_split_study(cli::effectivity_study(), o, 2);
+    BOOST_TEST_REQUIRE(out["sequences"].size() == 4u);  // 2 cases × 2 formulations
+    int band_checked = 0;
+    for (const json& s : out["sequences"]) {
+        const std::string label =
+            s["case"].get<std::string>() + " " + s["combination"].get<std::string>();
+        for (const json& status : s["statuses"]) {
+            BOOST_TEST(has_solution(status.get<std::string>()),
+                       label << ": a level did not solve: " << status);
+        }
+        int asymptotic = 0;
+        for (const json& row : s["rows"]) {
+            const std::string what = label + " level " + std::to_string(row["level"].get<int>()) +
+                                     " " + row["quantity"].get<std::string>();
+            const double est = row["estimate"]["error"].get<double>();
+            const double true_error = row["true_error"].get<double>();
+            const bool shown = regime_shown(s["strategy"], row);
+            BOOST_TEST(row["asymptotic"].get<bool>() == shown, what);
+            if (!row["effectivity"].is_null()) {
+                BOOST_TEST(row["effectivity"].get<double>() == est / true_error,
+                           boost::test_tools::tolerance(1e-12));
+            }
+            if (shown) {
+                ++asymptotic;
+                BOOST_TEST(est >= 0.5 * true_error, what << ": effectivity " << est / true_error);
+                BOOST_TEST(est <= 2.0 * true_error, what << ": effectivity " << est / true_error);
+            }
+            if (row["estimate"]["reliable"].get<bool>() &&
+                true_error > row["floor"].get<double>()) {
+                BOOST_TEST(true_error <= 3.0 * est, what << ": estimator failure, true "
+                                                         << true_error << ", estimate " << est);
+            }
+        }
+        BOOST_TEST(asymptotic >= kMinAsymptoticRows, label << ": " << asymptotic);
+        band_checked += asymptotic;
+    }
+    BOOST_TEST_MESSAGE("effectivity study (quick): " << band_checked << " asymptotic rows");
+    BOOST_TEST(out["unexplained_failures"] == 0);
+    BOOST_TEST(out["band_violations"] == 0);
+    BOOST_TEST(std::filesystem::exists(std::filesystem::path(o.out_dir) / "effectivity.png"));
+    std::filesystem::remove_all(o.out_dir);
+}
+
+}  // namespace rotbeam
