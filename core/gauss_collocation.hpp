@@ -43,6 +43,7 @@
 
 #include <functional>
 
+#include "core/choices.hpp"
 #include "core/generalized_alpha.hpp"
 
 namespace rotbeam {
@@ -101,6 +102,13 @@ struct GaussLegendre {
 // iterations of the pair alone); for an undamped mode it resolves no worse than the scheme itself:
 // Gauss keeps every mode's amplitude, so the difference is bounded by twice the mode's amplitude
 // even for ωH ≫ 1 (the estimate saturates instead of growing as (ωH)^{2s+1}).
+// The stage count of a Gauss–Legendre integrator (2 or 3), 0 for every other integrator.
+constexpr int gauss_legendre_stages(Integrator integrator) {
+    if (integrator == Integrator::gauss_legendre_2) return 2;
+    if (integrator == Integrator::gauss_legendre_3) return 3;
+    return 0;
+}
+
 DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,

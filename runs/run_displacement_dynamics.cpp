@@ -154,18 +154,6 @@ void to_inertial_axes(const Model& model, const form::DisplacementDynamics<P>& p
     }
 }
 
-// The displacement formulation's Gauss–Legendre stage count of `integrator`, 0 for generalized-α.
-int gauss_stages(Integrator integrator) {
-    switch (comb::integrator_for(Formulation::displacement, integrator)) {
-        case Integrator::gauss_legendre_2:
-            return 2;
-        case Integrator::gauss_legendre_3:
-            return 3;
-        default:
-            return 0;
-    }
-}
-
 // Lie-group generalized-α (core/generalized_alpha.hpp) or Gauss–Legendre collocation
 // (core/gauss_collocation.hpp) from rest or from the static state of the loads at t = 0
 // (`initial_state: static`, a release).
@@ -230,7 +218,8 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         result["steps"].push_back(std::move(step));
         record_frames(problem.statics());
     };
-    const int stages = gauss_stages(d.integrator);
+    const int stages =
+        gauss_legendre_stages(comb::integrator_for(Formulation::displacement, d.integrator));
     const DynamicOutcome out = stages > 0
                                    ? run_gauss_collocation(problem, stages, ts, settings, on_output)
                                    : run_generalized_alpha(problem, ts, settings, on_output);

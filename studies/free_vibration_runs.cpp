@@ -17,16 +17,11 @@
 #include "formulations/mixed/mixed_statics_of.hpp"
 #include "parameterizations/registry.hpp"
 #include "runs/catalog.hpp"
+#include "studies/guarded_run.hpp"
 
 namespace rotbeam::cli {
 
 namespace {
-
-int collocation_stages(Integrator integrator) {
-    if (integrator == Integrator::gauss_legendre_2) return 2;
-    if (integrator == Integrator::gauss_legendre_3) return 3;
-    return 0;
-}
 
 // The mesh node nearest to a point of the reference line.
 int nearest_node(const form::Mesh& mesh, const Vec3& x) {
@@ -69,7 +64,7 @@ void free_vibration_displacement(const Model& model, const FreeVibrationSpec& sp
         run.values.push_back({s.displacement.z(), so3::log_map(s.rotation).y(), v[2], v[4],
                               reaction[2], reaction[4]});
     };
-    const int stages = collocation_stages(spec.integrator);
+    const int stages = gauss_legendre_stages(spec.integrator);
     const DynamicOutcome out = stages > 0 ? run_gauss_collocation(d, stages, ts, newton, on_output)
                                           : run_generalized_alpha(d, ts, newton, on_output);
     run.status = to_string(out.status);
@@ -142,7 +137,7 @@ std::string FreeVibrationSpec::label() const {
     s << choice_name(formulation) << "/" << param::name_of(rotation);
     if (wm_map == WmMap::continuous) s << "-continuous";
     s << "/";
-    const int stages = collocation_stages(integrator);
+    const int stages = gauss_legendre_stages(integrator);
     if (stages > 0) {
         s << "gl" << stages;
     } else if (integrator == Integrator::generalized_alpha) {
@@ -172,8 +167,7 @@ Model free_vibration_model(const FreeVibrationSpec& spec) {
 FreeVibrationRun run_free_vibration(const FreeVibrationSpec& spec) {
     const Model model = free_vibration_model(spec);
     FreeVibrationRun run;
-    const auto start = std::chrono::steady_clock::now();
-    try {
+    run_guarded(run, [&] {
         comb::dispatch_formulation(spec.formulation, [&]<Formulation F>() {
             comb::dispatch_parameterization_of<F>(model.discretization, [&]<class P>() {
                 if constexpr (F == Formulation::displacement) {
@@ -183,15 +177,7 @@ FreeVibrationRun run_free_vibration(const FreeVibrationSpec& spec) {
                 }
             });
         });
-    } catch (const SingularityError& e) {
-        run.status = "singular";
-        run.message = e.what();
-    } catch (const SolverError& e) {
-        run.status = "diverged";
-        run.message = e.what();
-    }
-    run.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
     return run;
 }
 

@@ -16,6 +16,7 @@
 #include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"
+#include "studies/guarded_run.hpp"
 
 namespace rotbeam::cli {
 
@@ -44,13 +45,6 @@ struct Recorder {
         }
     }
 };
-
-// The stages of a Gauss–Legendre integrator, 0 for the others.
-int gauss_stages(Integrator integrator) {
-    if (integrator == Integrator::gauss_legendre_2) return 2;
-    if (integrator == Integrator::gauss_legendre_3) return 3;
-    return 0;
-}
 
 template <class P>
 void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& result) {
@@ -87,7 +81,7 @@ void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunRe
         }
         result.velocity.push_back(v.head(6 * k));
     };
-    const int stages = gauss_stages(spec.integrator);
+    const int stages = gauss_legendre_stages(spec.integrator);
     const DynamicOutcome out = stages > 0 ? run_gauss_collocation(d, stages, ts, newton, on_output)
                                           : run_generalized_alpha(d, ts, newton, on_output);
     result.status = to_string(out.status);
@@ -224,8 +218,8 @@ std::string MotionRunSpec::label() const {
     if (wm_map == WmMap::continuous) s << "-continuous";
     if (formulation == Formulation::displacement) {
         s << "/p" << order;
-        if (gauss_stages(integrator) > 0) {
-            s << "/gl" << gauss_stages(integrator);
+        if (gauss_legendre_stages(integrator) > 0) {
+            s << "/gl" << gauss_legendre_stages(integrator);
         } else {
             s << "/ga" << rho_infinity;
         }
@@ -267,18 +261,7 @@ oracle::ManufacturedMotion motion_within_reach(Formulation formulation,
 MotionRunResult run_manufactured_motion(const MotionRunSpec& spec) {
     const Model model = motion_run_model(spec);
     MotionRunResult result;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-        dispatch(model, spec, result);
-    } catch (const SingularityError& e) {
-        result.status = "singular";
-        result.message = e.what();
-    } catch (const SolverError& e) {
-        result.status = "diverged";
-        result.message = e.what();
-    }
-    result.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run_guarded(result, [&] { dispatch(model, spec, result); });
     return result;
 }
 
