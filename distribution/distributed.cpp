@@ -32,7 +32,7 @@ struct StudyCost {
     double quick, full;
 };
 constexpr StudyCost kStudyCosts[] = {
-    {"manufactured-time", 42.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
+    {"manufactured-time", 21.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
     {"speed-accuracy", 120.0, 600.0},        {"joined-beam-dynamics", 60.0, 1200.0},
     {"joined-beam-agreement", 30.0, 1200.0}, {"free-vibration-time", 20.0, 300.0},
 };
