@@ -63,6 +63,20 @@ StaticStability scaled_inertia(const SparseMatrix& tangent, const VecX& incremen
     const double norm = max_abs(scaled);
     if (!(norm > 0.0) || !std::isfinite(norm))
         return not_assessed("the tangent is zero or not finite");
+    // A difference Hessian whose own error (inter-node asymmetry, and the step-halving difference
+    // of its central differences) exceeds kDifferenceLimit of its largest entry is not a matrix
+    // whose pivot signs can be trusted: central differences at h = ε^(1/3) of a smooth energy
+    // err by ~ε^(2/3) ≈ 4e-11 of the entries, and a chart whose curvature is large next to the
+    // state (Euler angles near gimbal lock) errs by far more. The limit leaves 4 decades to the
+    // smooth case.
+    constexpr double kDifferenceLimit = 1e-7;
+    if (scaled_error > kDifferenceLimit * norm) {
+        std::ostringstream s;
+        s.precision(2);
+        s << "the difference Hessian is not accurate (error " << scaled_error / norm
+          << " of its largest entry; the rotation chart is strongly curved next to the state)";
+        return not_assessed(s.str());
+    }
     // Symmetric to round-off: an asymmetry beyond n ε of the largest scaled entry (the zero
     // threshold of the pivots below) is not round-off of a Hessian's assembly, and Sylvester's
     // count of its symmetric part is then not a criterion. The straight column's Newton tangent
