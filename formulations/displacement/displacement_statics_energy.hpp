@@ -5,17 +5,34 @@
 //
 // The energy is U_h = Σ_q w_q ½ Eᵀ C* E (material strains E = 𝓡ᵀ [ε; κ] of the interpolated
 // fields, 𝓡 = diag(R R^r, R R^r)) minus the potential of the conservative loads (dead forces,
-// gravity with its centre-of-mass offset). Its exact variation with respect to a node's spatial
-// increment δψ_a tests with the variation of the interpolated rotation, δψ(s) = Σ A_a δψ_a and
-// δκ(s) = Σ K_a δψ_a (interpolate_rotation.hpp), so that
+// gravity with its centre-of-mass offset).
+//
+// One energy for every parameterization: U_h interpolates the nodal rotations as the quaternion
+// does (interpolate_rotation.hpp, with the run's `relative` or `direct` strategy), whatever P the
+// nodes are stored in, so it is a function of the nodal displacements and rotations R_j alone and
+// its Hessian along exp(ψ) R_j is the same matrix in every parameterization. Interpolated in P
+// itself it is not: P's field R(s) between nodes is another function of the same R_j, and its
+// second derivative across a planar state is large where P's chart is curved. Measured on the
+// BeamDyn gravity cantilever (one element of order 5, tip rotation 1.54 rad about y: the Euler
+// angles' middle angle 0.03 rad from gimbal lock): the Euler angles and the rotation vector
+// interpolate the planar state alike (same equilibrium to 10 digits, same energy −360.9503), it
+// is a stationary point of both energies (scaled gradient 1e-10, equal to central differences of
+// the energy to 1e-9), yet the smallest eigenvalue of the scaled Hessian is −18.8 in the Euler
+// angles and +6.2 in the rotation vector (largest 3.2e6, difference errors 2e-8 and 8e-12): the
+// Euler-angle discrete energy has a saddle there that the beam has not (docs/solver-convergence.md,
+// Stability of the equilibrium). The quaternion interpolation has no singular set and is the
+// default parameterization's.
+//
+// Its exact variation with respect to a node's spatial increment δψ_a tests with the variation
+// of the interpolated rotation, δψ(s) = Σ A_a δψ_a and δκ(s) = Σ K_a δψ_a, so that
 //   ∂U_h/∂u_a = Σ w N_a′ N,    ∂U_h/∂ψ_a = Σ w [A_aᵀ (N × x′) + (K_a + κ̃ A_a)ᵀ M]
 // (δE = 𝓡ᵀ [δε − δψ × ε; δκ − δψ × κ], δε = δu′ + (R x^r′) × δψ). The residual the Newton solve
 // drives to zero tests with the interpolated spin instead, A_a = N_a I and K_a + κ̃ A_a = N_a′ I
-// (a Petrov–Galerkin weak form): where the nodal rotations differ, its Jacobian is not this
-// Hessian and is not symmetric at its own equilibrium.
+// (a Petrov–Galerkin weak form), in P's interpolation: its Jacobian is not this Hessian and is
+// not symmetric at its own equilibrium.
 //
 // The Hessian is formed element by element: the element's energy gradient is differentiated by
-// central differences along the retraction p ← exp(h e_k) ⊗ p of each of its nodes' unknowns
+// central differences along the retraction q ← exp(h e_k) ⊗ q of each of its nodes' unknowns
 // (the second derivatives of the rotation interpolation are not available in closed form). That
 // matrix J_e differs from the Hessian of U_h in the chart ψ ↦ exp(ψ) R (normal coordinates of
 // the bi-invariant metric on SO(3)) only by the commutator of two increments of one node,
@@ -26,6 +43,8 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "core/so3.hpp"
@@ -33,6 +52,7 @@
 #include "formulations/displacement/calculate_strain.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/displacement/rotate_section.hpp"
+#include "parameterizations/quaternion.hpp"
 
 namespace rotbeam::form {
 
@@ -63,20 +83,40 @@ std::string DisplacementStatics<P>::no_potential_reason() const {
 // Returns false when a load field carries a moment (no potential).
 template <param::RotationParameterization P>
 bool DisplacementStatics<P>::element_energy(int k, double& energy, VecX& gradient) {
+    using Q = param::Quaternion;
     const MeshElement& e = mesh_.elements[k];
     const int nn = static_cast<int>(e.nodes.size());
-    gather_element(e, true);
+    // The nodes' quaternions (the stored ones when P is the quaternion), aligned or relative as
+    // interpolate_rotation.hpp interpolates them, and their H_s⁺.
+    std::vector<param::Params<4>> qe(nn);
+    std::vector<param::TangentInverse<4>> Mq(nn);
+    for (int j = 0; j < nn; ++j) {
+        ue_[j] = u_[e.nodes[j]];
+        if constexpr (std::is_same_v<P, Q>) {
+            qe[j] = p_[e.nodes[j]];
+        } else {
+            qe[j] = Q::from_matrix(P::matrix(p_[e.nodes[j]]));
+        }
+    }
+    Mat3 R0 = Mat3::Identity();
+    if (relative_) {
+        R0 = Q::matrix(qe[0]);
+        relative_parameters<Q>(qe.data(), nn, qe.data());
+    } else {
+        for (int j = 1; j < nn; ++j) qe[j] *= chart_sign<Q>(qe[j], qe[0]);
+    }
+    for (int j = 0; j < nn; ++j) Mq[j] = Q::spatial_tangent_inverse(qe[j]);
     energy = 0.0;
     gradient.setZero(6 * nn);
     for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
         const QuadraturePoint& qp = e.qp[q];
         const double* N = e.N.col(q).data();
         const double* dN = e.dN.col(q).data();
-        InterpolatedRotation<P> rot;
+        InterpolatedRotation<Q> rot;
         if (relative_) {
-            interpolate_relative<P>(pe_.data(), N, dN, nn, R0_, rot);
+            interpolate_relative<Q>(qe.data(), N, dN, nn, R0, rot);
         } else {
-            interpolate_rotation<P>(pe_.data(), N, dN, nn, rot);
+            interpolate_rotation<Q>(qe.data(), N, dN, nn, rot);
         }
         Vec3 up = Vec3::Zero();
         Vec3 u = Vec3::Zero();
@@ -114,9 +154,9 @@ bool DisplacementStatics<P>::element_energy(int k, double& energy, VecX& gradien
         }
         load_potential -= f.dot(u);
         energy += qp.weight * (0.5 * strain.dot(F.FE1) + load_potential);
-        const param::Tangent<P::kSize> T = curvature_tangent<P>(rot);
-        for (int b = 0; b < nn; ++b) rotation_maps<P>(rot, T, Me_[b], N[b], dN[b], A_[b], K_[b]);
-        if (relative_) relative_maps(R0_, rot.kappa, nn, A_.data(), K_.data());
+        const param::Tangent<4> T = curvature_tangent<Q>(rot);
+        for (int b = 0; b < nn; ++b) rotation_maps<Q>(rot, T, Mq[b], N[b], dN[b], A_[b], K_[b]);
+        if (relative_) relative_maps(R0, rot.kappa, nn, A_.data(), K_.data());
         const Mat3 kt = so3::skew(rot.kappa);
         for (int a = 0; a < nn; ++a) {
             gradient.segment<3>(6 * a) += qp.weight * (dN[a] * F.FE1.head<3>() - N[a] * f);
@@ -232,9 +272,8 @@ PotentialHessian DisplacementStatics<P>::potential_hessian() {
         // Rows and columns of constrained nodes are left out (their scale stays 0).
         const Eigen::MatrixXd S = scale.asDiagonal() * Je * scale.asDiagonal();
         // The truncation error of the central difference, O(h²): the same difference at 2h moves
-        // by three times it. Its bound enters the pivot threshold, so that a chart whose
-        // curvature is large next to the state (Euler angles near gimbal lock) cannot turn the
-        // sign of a small eigenvalue unnoticed.
+        // by three times it. Its bound enters the pivot threshold, so that a small eigenvalue's
+        // sign is not taken from a difference that cannot resolve it.
         difference =
             std::max(difference,
                      (scale.asDiagonal() * (Je - Je2) * scale.asDiagonal()).cwiseAbs().maxCoeff());
