@@ -15,9 +15,9 @@
 #include "distribution/study_registry.hpp"
 #include "distribution/sweep_runs.hpp"
 #include "runs/catalog.hpp"
+#include "runs/estimate_cost.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
-#include "runs/run_cost.hpp"
 
 namespace rotbeam::cli {
 
@@ -50,7 +50,8 @@ double whole_study_seconds(const std::string& name, bool quick) {
 double study_run_seconds(const StudyRun& run) {
     if (run.kind == StudyRun::Kind::continuum_reference) return kContinuumReferenceSeconds;
     try {
-        return modelled_seconds(build_model(run.spec));
+        return modelled_seconds(build_model(run.spec),
+                                run.kind == StudyRun::Kind::estimated_case_run);
     } catch (const InputError&) {
         return kFixedSeconds;  // a combination that does not exist: refused at once
     }
