@@ -82,6 +82,7 @@ BOOST_AUTO_TEST_CASE(the_words_name_the_cheapest_run_at_each_level_which_is_on_t
     std::ostringstream md;
     const nlohmann::json winners = winners_in_words(points, md);
     const std::string words = md.str();
+    BOOST_TEST_MESSAGE(words << "(references and sweep: " << measured().cpu_seconds << " s CPU)");
     const std::vector<double>& levels = accuracy_levels();
     BOOST_TEST(winners.size() == levels.size());
     std::vector<double> cost, error;
@@ -113,13 +114,15 @@ BOOST_AUTO_TEST_CASE(the_words_name_the_cheapest_run_at_each_level_which_is_on_t
 }
 
 BOOST_AUTO_TEST_CASE(gauss_legendre_3_beats_generalized_alpha_at_the_same_step) {
-    // At Δt = 1 ms the first mode (ω₁ ≈ 52 rad/s, ω₁Δt ≈ 0.05) dominates the tip histories. The
-    // trapezoidal rule (generalized-α, ρ∞ = 1) has the phase error ω₁(ω₁Δt)²t/12 ≈ 1e-3 rad over
-    // 0.1 s, i.e. a relative error ~1e-3; Gauss–Legendre 3's is O((ω₁Δt)⁶) smaller still, and the
-    // higher modes it resolves less well carry ≪ 1 % of the amplitude. Measured against the same
-    // converged reference, the sixth-order error must be the smaller one by far; a factor of 10 is
-    // asked (the ratio argued is ≥ 1e2). The reference is Gauss–Legendre 3 at 62.5 µs, so a
-    // mislabelled or broken scheme run, or a reference not converged, breaks this.
+    // At Δt = 1 ms the tip histories hold the first bending mode (ω₁Δt ≈ 0.05) and, at a smaller
+    // amplitude, the higher modes the release excites (the second at ω₂Δt ≈ 0.3, the third near
+    // 1). For every mode with ωΔt < 1 the sixth-order scheme's phase error per period,
+    // O((ωΔt)⁶), is below the trapezoidal rule's (ωΔt)²/12, and neither scheme damps, so against
+    // the same converged reference Gauss–Legendre 3's error must be the smaller one. Measured
+    // (2026-11-27): 4.6e-3 against 5.4e-2 — both dominated by the higher modes, not by the first
+    // mode's 1e-3-level phase error, which is why no factor beyond "below" is asked. The
+    // reference is Gauss–Legendre 3 at 62.5 µs (agreeing with 125 µs to 1e-5), so a mislabelled
+    // or broken scheme run, or a wrong reference, breaks this.
     const DynamicPoint *ga = nullptr, *gl3 = nullptr;
     for (const DynamicPoint& p : measured().points) {
         if (p.combination != "displacement/quaternion" || p.setting.time_step != 1e-3) continue;
@@ -128,7 +131,9 @@ BOOST_AUTO_TEST_CASE(gauss_legendre_3_beats_generalized_alpha_at_the_same_step) 
     }
     BOOST_TEST_REQUIRE(ga);
     BOOST_TEST_REQUIRE(gl3);
-    BOOST_TEST(gl3->error < 0.1 * ga->error, "GL3 " << gl3->error << ", GA " << ga->error);
+    BOOST_TEST_MESSAGE("at 1 ms: Gauss–Legendre 3 " << gl3->error << ", generalized-α "
+                                                    << ga->error);
+    BOOST_TEST(gl3->error < ga->error, "GL3 " << gl3->error << ", GA " << ga->error);
     BOOST_TEST(ga->error > 1e-5);  // the second-order error is resolved above the reference's
 }
 
