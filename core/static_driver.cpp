@@ -340,7 +340,8 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
 }
 
 // The stability of a reported step's state: the inertia of the Hessian of the potential energy
-// at the state when the system forms one (conservative loads); otherwise that of the last
+// at the energy's stationary point next to the state when the system forms one (conservative
+// loads; core/potential_hessian.hpp); otherwise that of the last
 // Jacobian of its Newton solve — the one at the iterate before the final correction, a scaled
 // distance below increment_tolerance from the reported state — which is the Hessian only where it
 // is symmetric (the straight states; docs/solver-convergence.md, Stability of the equilibrium). A
@@ -348,12 +349,22 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
 StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& workspace,
                                   const StepSolver& solver) {
     auto* potential = dynamic_cast<PotentialSystem*>(&problem);
-    const PotentialHessian H = potential ? potential->potential_hessian()
-                                         : PotentialHessian{{}, 0.0, "no potential energy formed"};
-    if (H.unavailable.empty()) return assess_potential_stability(H, problem.increment_scale());
+    std::string unavailable = "no potential energy formed";
+    if (potential) {
+        unavailable.clear();
+        // The Newton solve's tangent and its factorization, of the iterate before the last
+        // correction (absent with a substituted solver; in another chart when additive).
+        TangentSolve tangent;
+        if (!solver && !problem.additive() && workspace.impl->J.rows() == problem.size()) {
+            tangent = [&workspace](const VecX& b, VecX& x) { workspace.impl->lu.solve(b, x); };
+        }
+        const StaticStability assessed =
+            assess_stability_at_stationary_point(problem, *potential, tangent, unavailable);
+        if (unavailable.empty()) return assessed;
+    }
     StaticStability s;
     if (solver) {
-        s.reason = "the step solver keeps no tangent to assess; " + H.unavailable;
+        s.reason = "the step solver keeps no tangent to assess; " + unavailable;
         return s;
     }
     const SparseMatrix& J = workspace.impl->J;
@@ -362,7 +373,7 @@ StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& 
         return s;
     }
     s = assess_stability(J, problem.increment_scale());
-    if (s.assessment == StaticStability::Assessment::not_assessed) s.reason += "; " + H.unavailable;
+    if (s.assessment == StaticStability::Assessment::not_assessed) s.reason += "; " + unavailable;
     return s;
 }
 

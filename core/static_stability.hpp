@@ -17,6 +17,7 @@
 // entries).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/nonlinear_system.hpp"
@@ -37,6 +38,9 @@ struct StaticStability {
     Assessment assessment = Assessment::not_assessed;
     int negative = 0;  // negative pivots (when assessed)
     std::string reason;
+    // Where the energy's Hessian was read: the largest scaled distance (|δx_i| / increment
+    // scale_i) from the reported equilibrium to the energy's stationary point next to it.
+    std::optional<double> stationary_point_distance;
 };
 const char* to_string(StaticStability::Assessment a);
 

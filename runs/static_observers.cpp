@@ -72,6 +72,7 @@ nlohmann::json observe_stability(const StepRecord& step, const std::string& not_
         return j;
     }
     j["negative_eigenvalues"] = s.negative;
+    if (s.stationary_point_distance) j["stationary_point_distance"] = *s.stationary_point_distance;
     if (!s.reason.empty()) j["reason"] = s.reason;
     return j;
 }

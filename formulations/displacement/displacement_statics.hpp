@@ -58,7 +58,8 @@ class DisplacementStatics : public StaticProblem, public PotentialSystem {
     // (displacement_statics_energy.hpp).
     std::optional<double> potential_energy() override;
     PotentialHessian potential_hessian() override;
-    bool potential_gradient(VecX& gradient);
+    bool potential_gradient(VecX& gradient) override;
+    void move_along_potential_chart(const Eigen::Ref<const VecX>& dx) override;
     // Dynamics: every load multiplied by its own time function at t (gravity by 1), λ = 1; the
     // residual scale stays the one of λ = 1. Prescribed motion is not time-dependent here (the
     // dynamic problem rejects non-zero prescribed motion).

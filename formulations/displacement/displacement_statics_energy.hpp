@@ -203,6 +203,25 @@ bool DisplacementStatics<P>::potential_gradient(VecX& g) {
     return true;
 }
 
+// The Hessian's chart: u + δu, and p ← exp(δψ) ⊗ p as its columns perturb the nodes (no
+// rescaling, which would not change R). All new parameters are computed before any is stored.
+template <param::RotationParameterization P>
+void DisplacementStatics<P>::move_along_potential_chart(const Eigen::Ref<const VecX>& dx) {
+    std::vector<Params> moved = p_;
+    for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
+        const int d = mesh_.nodes[i].dof;
+        if (d < 0) continue;
+        moved[i] = P::compose(P::from_rotation_vector(dx.segment<3>(d + 3)), p_[i]);
+        if constexpr (P::kSize == 4) moved[i].normalize();
+    }
+    for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
+        const int d = mesh_.nodes[i].dof;
+        if (d >= 0) u_[i] += dx.segment<3>(d);
+    }
+    p_ = std::move(moved);
+    mip_.drop();
+}
+
 // Element by element: column (b, c) of J_e from the element gradient at the node's state moved
 // by ±h along unknown c (h = ε^(1/3) of its increment scale: the central difference's truncation
 // and round-off errors balance there, ~ε^(2/3) of the entries), the node restored bit for bit.
