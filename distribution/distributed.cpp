@@ -331,11 +331,11 @@ void run_shard(const Job& job, const ShardSettings& s) {
               << s.jobs << " threads → " << s.dir << "\n";
     std::vector<size_t> pooled, alone;
     for (const size_t i : mine) (plan.units[i].timed ? alone : pooled).push_back(i);
+    double alone_seconds = 0.0;
+    for (const size_t i : alone) alone_seconds += expected[i];
     ProgressOptions options = progress_options_for_stderr();
     options.workers = s.jobs;
     Progress progress(what, mine.size(), std::cerr, options);
-    double alone_seconds = 0.0;
-    for (const size_t i : alone) alone_seconds += expected[i];
     progress.set_total_cost(my_seconds - alone_seconds, alone_seconds);
     const auto make = [&](size_t i) {
         progress.started(plan.units[i].label, expected[i], plan.units[i].timed);

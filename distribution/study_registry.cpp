@@ -197,18 +197,17 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
         if (timed_study(entry.first)) timed.push_back(entry.first);
     }
     // Progress over every step: the pooled runs and whole studies, the combines, the timed ones,
-    // each weighed by its expected time.
+    // each weighed by its expected time (priced first: the line starts with its total).
+    std::vector<double> pooled_cost;
+    for (const std::string& name : whole) pooled_cost.push_back(whole_study_seconds(name, o.quick));
+    for (const auto& [p, r] : items) pooled_cost.push_back(study_run_seconds(plans[p][r]));
+    double alone_cost = static_cast<double>(split.size()) * combine_step_seconds();
+    for (const std::string& name : timed) alone_cost += whole_study_seconds(name, o.quick);
     ProgressOptions options = progress_options_for_stderr();
     options.workers = jobs;
     Progress progress("rotbeam suite: studies",
                       whole.size() + items.size() + split.size() + timed.size(), std::cerr,
                       options);
-    std::vector<double> pooled_cost;
-    for (const std::string& name : whole) pooled_cost.push_back(whole_study_seconds(name, o.quick));
-    for (const auto& [p, r] : items) pooled_cost.push_back(study_run_seconds(plans[p][r]));
-    double alone_cost = 0.0;
-    alone_cost += static_cast<double>(split.size()) * combine_step_seconds();
-    for (const std::string& name : timed) alone_cost += whole_study_seconds(name, o.quick);
     progress.set_total_cost(std::accumulate(pooled_cost.begin(), pooled_cost.end(), 0.0),
                             alone_cost);
     for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
