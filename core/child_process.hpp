@@ -1,6 +1,6 @@
 // Other programs that rotbeam runs (gnuplot for the figures, rotbeam itself for the whole-process
-// timings of `rotbeam bench` and the studies), stopped with it (docs/durability.md). Every child
-// rotbeam starts goes through run_child_process: there is no other fork, exec, system() or popen.
+// timings of `rotbeam bench`), stopped with it (docs/durability.md). Every child rotbeam starts
+// goes through run_child_process: there is no other fork, exec, system() or popen.
 //
 // A child started by run_child_process is registered until it has ended, and the files it writes
 // for its caller (its standard error, a report) until the caller has read them. A program stopped
