@@ -49,7 +49,7 @@ std::vector<std::string> child_environment(const std::vector<std::string>& repla
     return environment;
 }
 
-std::vector<char*> pointers(std::vector<std::string>& strings) {
+std::vector<char*> child_c_strings(std::vector<std::string>& strings) {
     std::vector<char*> p;
     for (std::string& s : strings) p.push_back(s.data());
     p.push_back(nullptr);
@@ -61,8 +61,8 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 pid_t start_registered(const ChildSpec& spec) {
     std::vector<std::string> arguments = spec.arguments;
     std::vector<std::string> environment = child_environment(spec.environment);
-    const std::vector<char*> argv = pointers(arguments);
-    const std::vector<char*> envp = pointers(environment);
+    const std::vector<char*> argv = child_c_strings(arguments);
+    const std::vector<char*> envp = child_c_strings(environment);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     if (!spec.output_path.empty()) {
