@@ -10,7 +10,7 @@
 #include <mutex>
 #include <set>
 
-extern char** environ;
+extern char** environ;  // POSIX: the process environment, passed on to the child
 
 namespace rotbeam {
 
@@ -28,38 +28,93 @@ std::set<pid_t>& running_children() {
     return *pids;
 }
 
-}  // namespace
+std::multiset<std::string>& registered_side_files() {
+    static auto* files = new std::multiset<std::string>;
+    return *files;
+}
 
-int run_child_process(const std::vector<std::string>& arguments, const std::string& error_path) {
-    if (arguments.empty()) return -1;
-    std::vector<char*> argv;
-    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
+// rotbeam's environment with spec.environment's variables replacing those of the same name.
+std::vector<std::string> child_environment(const std::vector<std::string>& replaced) {
+    std::vector<std::string> environment;
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string variable(*e);
+        bool kept = true;
+        for (const std::string& r : replaced) {
+            const std::string name = r.substr(0, r.find('=') + 1);
+            kept = kept && variable.rfind(name, 0) != 0;
+        }
+        if (kept) environment.push_back(variable);
+    }
+    environment.insert(environment.end(), replaced.begin(), replaced.end());
+    return environment;
+}
+
+std::vector<char*> child_c_strings(std::vector<std::string>& strings) {
+    std::vector<char*> p;
+    for (std::string& s : strings) p.push_back(s.data());
+    p.push_back(nullptr);
+    return p;
+}
+
+// Started and registered at once (with its side files): a stop either comes first (this start
+// then waits for the exit) or finds the child registered. 0 when it could not be started.
+pid_t start_registered(const ChildSpec& spec) {
+    std::vector<std::string> arguments = spec.arguments;
+    std::vector<std::string> environment = child_environment(spec.environment);
+    const std::vector<char*> argv = child_c_strings(arguments);
+    const std::vector<char*> envp = child_c_strings(environment);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, error_path.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (!spec.output_path.empty()) {
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, spec.output_path.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    }
+    if (!spec.error_path.empty()) {
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, spec.error_path.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    }
     pid_t pid = 0;
-    int spawned = 0;
     {
-        // Started and registered at once: a stop either comes first (this start then waits for
-        // the exit) or finds the child registered.
         const std::lock_guard<std::mutex> lock(children_mutex());
-        spawned = ::posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-        if (spawned == 0) running_children().insert(pid);
+        if (::posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) != 0) {
+            pid = 0;
+        } else {
+            running_children().insert(pid);
+            registered_side_files().insert(spec.side_files.begin(), spec.side_files.end());
+        }
     }
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return -1;
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
+    return pid;
+}
+
+}  // namespace
+
+ChildExit run_child_process(const ChildSpec& spec) {
+    ChildExit end;
+    if (spec.arguments.empty()) return end;
+    const pid_t pid = start_registered(spec);
+    if (pid == 0) {
+        // The file actions may have created the output files before the program was not found.
+        for (const std::string& file : spec.side_files) ::unlink(file.c_str());
+        return end;
+    }
+    while (::wait4(pid, &end.status, 0, &end.usage) < 0) {
         if (errno != EINTR) {
-            status = -1;
+            end.status = -1;
             break;
         }
     }
+    {
+        const std::lock_guard<std::mutex> lock(children_mutex());
+        running_children().erase(pid);
+    }
+    if (spec.read) spec.read(end);
     const std::lock_guard<std::mutex> lock(children_mutex());
-    running_children().erase(pid);
-    return status;
+    for (const std::string& file : spec.side_files) {
+        ::unlink(file.c_str());
+        registered_side_files().erase(registered_side_files().find(file));
+    }
+    return end;
 }
 
 void stop_child_processes() {
@@ -72,6 +127,8 @@ void stop_child_processes() {
         while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
         }
     }
+    // Only once every child has ended: none can create its file again.
+    for (const std::string& file : registered_side_files()) ::unlink(file.c_str());
 }
 
 }  // namespace rotbeam

@@ -12,10 +12,10 @@
 #include "core/errors.hpp"
 #include "core/version.hpp"
 #include "distribution/ranks.hpp"
+#include "distribution/study_cost.hpp"
 #include "distribution/study_registry.hpp"
 #include "distribution/sweep_runs.hpp"
 #include "runs/catalog.hpp"
-#include "runs/estimate_cost.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 
@@ -24,38 +24,6 @@ namespace rotbeam::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The expected time of a study made whole, before it has ever run (quick, full), in seconds of
-// one core: measured on the 2-core machine (docs/distributed-runs.md, "Cost model").
-struct StudyCost {
-    const char* name;
-    double quick, full;
-};
-constexpr StudyCost kStudyCosts[] = {
-    {"manufactured-time", 21.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
-    {"speed-accuracy", 120.0, 600.0},        {"joined-beam-dynamics", 60.0, 1200.0},
-    {"joined-beam-agreement", 30.0, 1200.0}, {"free-vibration-time", 20.0, 300.0},
-};
-// A study without an entry above, and a continuum reference run of a split study.
-constexpr double kUnknownStudySeconds = 60.0;
-constexpr double kContinuumReferenceSeconds = 0.5;
-
-double whole_study_seconds(const std::string& name, bool quick) {
-    for (const StudyCost& c : kStudyCosts) {
-        if (name == c.name) return quick ? c.quick : c.full;
-    }
-    return kUnknownStudySeconds;
-}
-
-double study_run_seconds(const StudyRun& run) {
-    if (run.kind == StudyRun::Kind::continuum_reference) return kContinuumReferenceSeconds;
-    try {
-        return modelled_seconds(build_model(run.spec),
-                                run.kind == StudyRun::Kind::estimated_case_run);
-    } catch (const InputError&) {
-        return kFixedSeconds;  // a combination that does not exist: refused at once
-    }
-}
 
 std::string case_text(const std::string& case_name) {
     try {
@@ -273,19 +241,19 @@ UnitCheck check_unit(const std::string& dir, const Unit& u) {
     return {UnitState::made, ""};
 }
 
-void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
+bool make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
     if (!s.force && u.kind != Unit::Kind::case_run &&
         check_unit(s.dir, u).state == UnitState::made) {
-        return;
+        return false;
     }
     const fs::path file = fs::path(s.dir) / u.file;
     const auto start = std::chrono::steady_clock::now();
     switch (u.kind) {
         case Unit::Kind::case_run: {
             const PlannedRun& run = plan.case_runs[u.plan];
-            if (s.force || !up_to_date(run))
-                write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
-            return;
+            if (!s.force && up_to_date(run)) return false;
+            write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
+            return true;
         }
         case Unit::Kind::study_run: {
             nlohmann::json result = execute_run(plan.split[u.plan].second[u.index]);
@@ -296,7 +264,7 @@ void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
                                            {"result", std::move(result)}};
             fs::create_directories(file.parent_path());
             write_file_atomically(file.string(), record.dump(1) + "\n");
-            return;
+            return true;
         }
         case Unit::Kind::whole_study: {
             // A study stopped halfway left some of its files: start its folder afresh.
@@ -312,9 +280,10 @@ void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
                                            {"seconds", since(start)},
                                            {"files", files_under(folder)}};
             write_file_atomically(file.string(), record.dump(1) + "\n");
-            return;
+            return true;
         }
     }
+    return true;  // every kind returned above
 }
 
 std::vector<double> expected_unit_seconds(const JobPlan& plan,
@@ -362,12 +331,19 @@ void run_shard(const Job& job, const ShardSettings& s) {
               << s.jobs << " threads → " << s.dir << "\n";
     std::vector<size_t> pooled, alone;
     for (const size_t i : mine) (plan.units[i].timed ? alone : pooled).push_back(i);
-    Progress progress(what, mine.size(), std::cerr, progress_options_for_stderr());
-    progress.set_total_cost(my_seconds);
+    double alone_seconds = 0.0;
+    for (const size_t i : alone) alone_seconds += expected[i];
+    ProgressOptions options = progress_options_for_stderr();
+    options.workers = s.jobs;
+    Progress progress(what, mine.size(), std::cerr, options);
+    progress.set_total_cost(my_seconds - alone_seconds, alone_seconds);
     const auto make = [&](size_t i) {
-        progress.started(plan.units[i].label);
-        make_unit(plan, plan.units[i], s);
-        progress.finished(plan.units[i].label, expected[i]);
+        progress.started(plan.units[i].label, expected[i], plan.units[i].timed);
+        if (make_unit(plan, plan.units[i], s)) {
+            progress.finished(plan.units[i].label);
+        } else {
+            progress.skipped(plan.units[i].label);  // made by an earlier run of the shard
+        }
     };
     for_each_parallel(pooled.size(), s.jobs, [&](size_t k) { make(pooled[k]); });
     for (const size_t i : alone) make(i);

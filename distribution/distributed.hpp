@@ -79,8 +79,9 @@ void run_shard(const Job& job, const ShardSettings& settings);
 // cost model scaled to seconds);
 std::vector<double> expected_unit_seconds(const JobPlan& plan,
                                           const std::vector<std::string>& timings);
-// makes one unit into settings.dir (kept when its file is valid and settings.force is off);
-void make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& settings);
+// makes one unit into settings.dir (kept when its file is valid and settings.force is off: then
+// false);
+bool make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& settings);
 // writes settings.dir/shard.json: the job, shard settings.shard and the files of `units`.
 void write_shard_manifest(const JobPlan& plan, const ShardSettings& settings,
                           const std::vector<size_t>& units);

@@ -94,7 +94,7 @@ void serve_and_work(const Ranks& r, Progress& progress) {
     const auto finished = [&](long long unit) {
         if (unit == kNoUnit) return;
         const auto i = static_cast<size_t>(unit);
-        progress.finished(r.plan.units[i].label, r.expected[i]);
+        progress.finished(r.plan.units[i].label);
     };
     std::thread answering([&] {
         try {
@@ -112,7 +112,7 @@ void serve_and_work(const Ranks& r, Progress& progress) {
                     continue;
                 }
                 long long unit = take();
-                if (unit != kNoUnit) progress.started(r.plan.units[unit].label);
+                if (unit != kNoUnit) progress.started(r.plan.units[unit].label, r.expected[unit]);
                 MPI_Send(&unit, 1, MPI_LONG_LONG, status.MPI_SOURCE,
                          kReplyTag + static_cast<int>(message[1]), MPI_COMM_WORLD);
             }
@@ -126,9 +126,9 @@ void serve_and_work(const Ranks& r, Progress& progress) {
             try {
                 for (long long unit = take(); unit != kNoUnit; unit = take()) {
                     const Unit& u = r.plan.units[unit];
-                    progress.started(u.label);
+                    progress.started(u.label, r.expected[unit]);
                     make_unit(r.plan, u, r.settings);
-                    progress.finished(u.label, r.expected[unit]);
+                    progress.finished(u.label);
                 }
             } catch (...) {
                 abort_ranks(0, std::current_exception());

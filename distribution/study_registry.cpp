@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <iostream>
 #include <mutex>
+#include <numeric>
 #include <thread>
 
 #include "benches/study_speed.hpp"
 #include "core/errors.hpp"
+#include "distribution/study_cost.hpp"
 #include "distribution/study_help.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
@@ -127,9 +129,14 @@ void run_named_study(const std::string& name, const StudyOptions& o) {
     for (const auto& entry : static_studies()) {
         if (name == "all" || name == entry.first) chosen.push_back(entry.first);
     }
-    Progress progress("rotbeam study", chosen.size(), std::cerr, progress_options_for_stderr());
+    ProgressOptions options = progress_options_for_stderr();
+    options.workers = 1;
+    Progress progress("rotbeam study", chosen.size(), std::cerr, options);
+    double cost = 0.0;
+    for (const std::string& study : chosen) cost += whole_study_seconds(study, o.quick);
+    progress.set_total_cost(cost);
     for (const std::string& study : chosen) {
-        progress.started(study);
+        progress.started(study, whole_study_seconds(study, o.quick));
         run_study_whole(study, o);
         progress.finished(study);
     }
@@ -189,26 +196,36 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
     for (const auto& entry : static_studies()) {
         if (timed_study(entry.first)) timed.push_back(entry.first);
     }
-    // Progress over every step: the pooled runs and whole studies, the combines, the timed ones.
+    // Progress over every step: the pooled runs and whole studies, the combines, the timed ones,
+    // each weighed by its expected time (priced first: the line starts with its total).
+    std::vector<double> pooled_cost;
+    for (const std::string& name : whole) pooled_cost.push_back(whole_study_seconds(name, o.quick));
+    for (const auto& [p, r] : items) pooled_cost.push_back(study_run_seconds(plans[p][r]));
+    double alone_cost = static_cast<double>(split.size()) * combine_step_seconds();
+    for (const std::string& name : timed) alone_cost += whole_study_seconds(name, o.quick);
+    ProgressOptions options = progress_options_for_stderr();
+    options.workers = jobs;
     Progress progress("rotbeam suite: studies",
                       whole.size() + items.size() + split.size() + timed.size(), std::cerr,
-                      progress_options_for_stderr());
+                      options);
+    progress.set_total_cost(std::accumulate(pooled_cost.begin(), pooled_cost.end(), 0.0),
+                            alone_cost);
     for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
         if (i < whole.size()) {
-            progress.started("study " + whole[i]);
+            progress.started("study " + whole[i], pooled_cost[i]);
             run_study_whole(whole[i], o);
             progress.finished("study " + whole[i]);
         } else {
             const auto [p, r] = items[i - whole.size()];
             const std::string label = split[p].first + " " + plans[p][r].key;
-            progress.started(label);
+            progress.started(label, pooled_cost[i]);
             results[p][r] = execute_run(plans[p][r]);
             progress.finished(label);
         }
     });
     for (size_t p = 0; p < split.size(); ++p) {
         const auto start = std::chrono::steady_clock::now();
-        progress.started("combining " + split[p].first);
+        progress.started("combining " + split[p].first, combine_step_seconds(), true);
         split[p].second.combine(o, results_by_key(plans[p], std::move(results[p])));
         progress.finished("combining " + split[p].first);
         std::cout
@@ -220,7 +237,7 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
             << "\n";
     }
     for (const std::string& name : timed) {
-        progress.started("study " + name);
+        progress.started("study " + name, whole_study_seconds(name, o.quick), true);
         run_study_whole(name, o);
         progress.finished("study " + name);
     }

@@ -234,16 +234,20 @@ void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
                       const std::string& what) {
     double total_cost = 0.0;
     for (const PlannedRun& run : runs) total_cost += run.modelled_seconds;
-    Progress progress(what, runs.size(), std::cerr, progress_options_for_stderr());
+    ProgressOptions options = progress_options_for_stderr();
+    options.workers = jobs;
+    Progress progress(what, runs.size(), std::cerr, options);
     progress.set_total_cost(total_cost);
     for_each_parallel(runs.size(), jobs, [&](size_t i) {
         const PlannedRun& run = runs[i];
         const std::string label = fs::path(run.output).stem().string();
-        progress.started(label);
+        progress.started(label, run.modelled_seconds);
         if (force || !up_to_date(run)) {
             write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
+            progress.finished(label);
+        } else {
+            progress.skipped(label);  // a resumed suite's result: no measure of the speed
         }
-        progress.finished(label, run.modelled_seconds);
     });
 }
 

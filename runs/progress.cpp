@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "runs/time_left.hpp"
+
 namespace rotbeam::cli {
 
 namespace {
@@ -41,7 +43,11 @@ std::string human_seconds(double seconds) {
 }
 
 Progress::Progress(std::string what, size_t total, std::ostream& out, ProgressOptions options)
-    : what_(std::move(what)), total_(total), out_(out), options_(std::move(options)) {
+    : what_(std::move(what)),
+      total_(total),
+      out_(out),
+      options_(std::move(options)),
+      pooled_left_(static_cast<double>(total)) {
     if (!options_.clock) options_.clock = progress_options_for_stderr().clock;
     start_ = now();
     if (options_.ticker) {
@@ -70,24 +76,43 @@ Progress::~Progress() {
 
 double Progress::now() const { return options_.clock(); }
 
-void Progress::started(const std::string& item) {
+void Progress::started(const std::string& item, double cost, bool alone) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    running_.push_back(item);
+    running_.push_back({item, now(), costs_known_ ? cost : 1.0, alone});
     print_locked(false);
 }
 
-void Progress::finished(const std::string& item, double cost) {
+void Progress::finished(const std::string& item) { end(item, true); }
+
+void Progress::skipped(const std::string& item) { end(item, false); }
+
+void Progress::end(const std::string& item, bool worked) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = std::find(running_.begin(), running_.end(), item);
-    if (it != running_.end()) running_.erase(it);
+    // An item that never started is the caller's way to say that it had nothing to do: it tells
+    // nothing of the speed either, nor does one without an expected cost.
+    Running r{item, now(), costs_known_ ? 0.0 : 1.0, false};
+    const auto it = std::find_if(running_.begin(), running_.end(),
+                                 [&](const Running& e) { return e.item == item; });
+    if (it != running_.end()) {
+        r = *it;
+        running_.erase(it);
+    } else {
+        worked = false;
+    }
     ++done_;
-    cost_done_ += cost;
+    (r.alone ? alone_left_ : pooled_left_) -= r.cost;
+    if (worked && r.cost > 0.0) {
+        finished_cost_ += r.cost;
+        finished_seconds_ += now() - r.start;
+    }
     print_locked(false);
 }
 
-void Progress::set_total_cost(double cost) {
+void Progress::set_total_cost(double pooled_seconds, double alone_seconds) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    total_cost_ = cost;
+    costs_known_ = true;
+    pooled_left_ = pooled_seconds;
+    alone_left_ = alone_seconds;
 }
 
 void Progress::poll() {
@@ -106,23 +131,29 @@ std::string Progress::line_locked() const {
     s << what_ << ": " << done_ << "/" << total_ << " done";
     if (!running_.empty()) {
         // The most recently started item is the current one; the others are counted.
-        s << ", running " << running_.back();
+        s << ", running " << running_.back().item;
         if (running_.size() > 1) s << " (+" << running_.size() - 1 << " more)";
     }
     s << ", " << human_seconds(elapsed) << " elapsed, ";
     if (done_ >= total_) {
         s << "nothing left";
-    } else if (done_ == 0 && total_cost_ > elapsed) {
-        // Nothing finished yet: the caller's expected cost (in seconds) is all there is.
-        s << "about " << human_seconds(total_cost_ - elapsed) << " left (expected)";
-    } else if (done_ == 0) {
+        return s.str();
+    }
+    WorkSoFar w;
+    w.elapsed = elapsed;
+    w.pooled_cost_left = pooled_left_;
+    w.alone_cost_left = alone_left_;
+    w.finished_cost = finished_cost_;
+    w.finished_seconds = finished_seconds_;
+    for (const Running& r : running_) w.running.push_back({r.cost, now() - r.start, r.alone});
+    w.workers = options_.workers;
+    w.cost_in_seconds = costs_known_;
+    const std::optional<TimeLeft> left = estimate_time_left(w);
+    if (!left) {
         s << "time left not yet known";
     } else {
-        const bool by_cost = total_cost_ > 0.0 && cost_done_ > 0.0;
-        const double left =
-            by_cost ? elapsed * (total_cost_ - cost_done_) / cost_done_
-                    : elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_);
-        s << "about " << human_seconds(left) << " left";
+        s << "about " << human_seconds(left->seconds) << " left"
+          << (left->expected ? " (expected)" : "");
     }
     return s.str();
 }

@@ -6,9 +6,9 @@
 // one per interval (10 s by default), so that a log shows that work goes on without filling up.
 // The lines go to stderr: stdout keeps the commands' own output (tables, file names).
 //
-// The estimate of the time left is the mean time per finished item times the items left, or from
-// the items' expected run times when the caller knows them (set_total_cost): it is an estimate
-// and printed as "about".
+// The estimate of the time left weighs the items by their expected run times when the caller knows
+// them (set_total_cost, started), else counts them as equal (runs/time_left.hpp); it is an
+// estimate and printed as "about", and "(expected)" while it rests on the cost model alone.
 #pragma once
 
 #include <condition_variable>
@@ -27,6 +27,7 @@ struct ProgressOptions {
     // Monotonic seconds; injectable so that a test can advance time without waiting.
     std::function<double()> clock;
     bool ticker = true;  // a thread that prints while no item starts or ends (long runs)
+    int workers = 0;     // threads running the items at once; 0: unknown (estimated as they run)
 };
 
 // The options for stderr: terminal when stderr is a terminal, the real steady clock, the ticker.
@@ -40,23 +41,33 @@ class Progress {
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
-    // An item starts or finishes (thread-safe). `cost`: its expected run time in seconds, for
-    // the estimate of the time left; 0 for "like the others".
-    void started(const std::string& item);
-    void finished(const std::string& item, double cost = 0.0);
-    // The expected run time of all items in seconds, when the caller knows it: the time left is
-    // then the time spent scaled by the cost left over the cost done, and before the first item
-    // ends, the expected time minus the time spent.
-    void set_total_cost(double seconds);
+    // An item starts, finishes, or is found done already (skipped: a result of an earlier
+    // run; its cost leaves the total and it tells nothing of the speed). Thread-safe. `cost`: its
+    // expected run time in seconds (with set_total_cost; else every item weighs the same).
+    // `alone`: it runs after the pool's items, one at a time (a timed study, a combine step).
+    void started(const std::string& item, double cost = 0.0, bool alone = false);
+    void finished(const std::string& item);
+    void skipped(const std::string& item);
+    // The expected run time of all items in seconds, those of the pool and those run alone, when
+    // the caller knows it: the time left then follows the cost left (runs/time_left.hpp).
+    void set_total_cost(double pooled_seconds, double alone_seconds = 0.0);
     // Prints if a line is due (what the ticker calls every second).
     void poll();
     // The line as it would be printed now (the facts: done/total, current item, elapsed, left).
     std::string line() const;
 
   private:
+    struct Running {
+        std::string item;
+        double start = 0.0, cost = 0.0;
+        bool alone = false;
+    };
+
     void print_locked(bool force);
     std::string line_locked() const;
     double now() const;
+    // finished (worked) or skipped.
+    void end(const std::string& item, bool worked);
 
     std::string what_;
     size_t total_;
@@ -65,8 +76,11 @@ class Progress {
     double start_ = 0.0;
     double last_print_ = -1.0;  // < 0: nothing printed yet
     size_t done_ = 0;
-    double cost_done_ = 0.0, total_cost_ = 0.0;
-    std::vector<std::string> running_;
+    bool costs_known_ = false;
+    // Expected cost of the items not finished (running or not started), of the pool and alone;
+    // of the finished ones and the wall time they ran.
+    double pooled_left_ = 0.0, alone_left_ = 0.0, finished_cost_ = 0.0, finished_seconds_ = 0.0;
+    std::vector<Running> running_;
     mutable std::mutex mutex_;
     std::condition_variable stop_signal_;
     bool stopping_ = false;

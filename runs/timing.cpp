@@ -1,7 +1,5 @@
 #include "timing.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,12 +8,14 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <thread>
 
+#include "core/child_process.hpp"
 #include "core/errors.hpp"
-
-extern char** environ;  // POSIX: the process environment, passed on to the spawned child
 
 namespace rotbeam::cli {
 
@@ -49,49 +49,37 @@ void write_peak_rss() {
 
 // One child run: returns its wall time; sets the child's own peak RSS (reported through
 // ROTBEAM_PEAK_RSS_FILE, see report_peak_rss_at_exit) and exit code. The child is started with
-// posix_spawn (glibc: clone with CLONE_VM | CLONE_VFORK), not fork: fork copies the page tables of
-// this process, which the bench and the studies make large, and the copy was charged to the child
-// (~3 ms of a 12.6 ms 45° bend run). A user's shell pays no such cost.
+// posix_spawn (core/child_process.hpp; glibc: clone with CLONE_VM | CLONE_VFORK), not fork: fork
+// copies the page tables of this process, which the bench and the studies make large, and the
+// copy was charged to the child (~3 ms of a 12.6 ms 45° bend run). A user's shell pays no such
+// cost. It is registered like every child, so a stopped bench leaves no run behind, nor its file.
 double run_child(const std::vector<std::string>& arguments, long& rss_kb, int& exit_code,
                  double& cpu_seconds) {
-    const std::string rss_file = "/tmp/rotbeam-peak-rss-" + std::to_string(getpid()) + ".txt";
-    std::vector<char*> argv;
-    std::string self = "/proc/self/exe";
-    argv.push_back(self.data());
-    std::vector<std::string> copy = arguments;
-    for (std::string& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const std::string variable = std::string(kPeakRssVariable) + "=";
-    std::vector<std::string> environment;
-    for (char** e = environ; *e != nullptr; ++e) {
-        if (std::string(*e).rfind(variable, 0) != 0) environment.emplace_back(*e);
-    }
-    environment.push_back(variable + rss_file);
-    std::vector<char*> envp;
-    for (std::string& e : environment) envp.push_back(e.data());
-    envp.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
-    const Clock::time_point start = Clock::now();
-    pid_t pid = 0;
-    const int spawned =
-        posix_spawn(&pid, self.c_str(), &actions, nullptr, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) throw SolverError("timing: posix_spawn failed");
-    int status = 0;
-    rusage usage{};
-    if (wait4(pid, &status, 0, &usage) != pid) throw SolverError("timing: wait4 failed");
-    const double elapsed = seconds_since(start);
-    std::ifstream reported(rss_file);
+    const std::string rss_file =
+        (std::filesystem::temp_directory_path() /
+         ("rotbeam-peak-rss-" + std::to_string(getpid()) + "-" +
+          std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".txt"))
+            .string();
+    ChildSpec child;
+    child.arguments = {"/proc/self/exe"};
+    child.arguments.insert(child.arguments.end(), arguments.begin(), arguments.end());
+    child.output_path = child.error_path = "/dev/null";
+    child.environment = {std::string(kPeakRssVariable) + "=" + rss_file};
+    child.side_files = {rss_file};
+    Clock::time_point end;
     rss_kb = 0;
-    if (!(reported >> rss_kb)) rss_kb = usage.ru_maxrss;  // an older binary: the kernel's figure
-    std::remove(rss_file.c_str());
-    exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    cpu_seconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-    return elapsed;
+    child.read = [&](const ChildExit& e) {
+        end = Clock::now();
+        std::ifstream reported(rss_file);
+        if (!(reported >> rss_kb)) rss_kb = e.usage.ru_maxrss;  // an older binary: the kernel's
+    };
+    const Clock::time_point start = Clock::now();
+    const ChildExit e = run_child_process(child);
+    if (e.status == -1) throw SolverError("timing: the rotbeam child could not be started");
+    exit_code = WIFEXITED(e.status) ? WEXITSTATUS(e.status) : 128 + WTERMSIG(e.status);
+    cpu_seconds = static_cast<double>(e.usage.ru_utime.tv_sec + e.usage.ru_stime.tv_sec) +
+                  1e-6 * static_cast<double>(e.usage.ru_utime.tv_usec + e.usage.ru_stime.tv_usec);
+    return std::chrono::duration<double>(end - start).count();
 }
 
 Timing summarize(std::vector<double> samples) {

@@ -31,8 +31,9 @@ struct Timing {
 // `budget_seconds` > 0 stops repeating once that much time has been spent (after one run).
 Timing time_in_process(const std::function<void()>& work, int repeats, double budget_seconds = 0.0);
 
-// Whole-process wall time: fork + exec of this executable with `arguments` (stdout/stderr to
-// /dev/null), wait4 for it; the median over `repeats`, and the child's peak RSS.
+// Whole-process wall time: this executable run with `arguments` as a registered child
+// (core/child_process.hpp, stopped with rotbeam; stdout/stderr to /dev/null), waited for; the
+// median over `repeats`, and the child's peak RSS.
 Timing time_whole_process(const std::vector<std::string>& arguments, int repeats,
                           double budget_seconds = 0.0);
 

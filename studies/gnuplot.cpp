@@ -34,23 +34,24 @@ void run_once(const std::string& script, const std::map<std::string, std::string
         ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
          std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".err");
     // Run as a child that a stopping rotbeam kills and waits for (core/child_process.hpp), so it
-    // cannot write a figure's file after the temporaries were removed.
-    std::vector<std::string> arguments{"gnuplot"};
+    // cannot write a figure's file after the temporaries were removed; its error file goes too.
+    ChildSpec child;
+    child.arguments = {"gnuplot"};
     for (const auto& [k, v] : vars) {
-        arguments.push_back("-e");
-        arguments.push_back(k + "=" + gnuplot_string(v));
+        child.arguments.push_back("-e");
+        child.arguments.push_back(k + "=" + gnuplot_string(v));
     }
-    arguments.push_back((fs::path(ROTBEAM_REPORTS_DIR) / script).string());
-    const int status = run_child_process(arguments, errors.string());
+    child.arguments.push_back((fs::path(ROTBEAM_REPORTS_DIR) / script).string());
+    child.error_path = errors.string();
+    child.side_files = {errors.string()};
     std::string last;
-    {
+    child.read = [&](const ChildExit&) {
         std::ifstream in(errors);
         for (std::string line; std::getline(in, line);) {
             if (line.find_first_not_of(" ^") != std::string::npos) last = line;
         }
-    }
-    std::error_code ec;
-    fs::remove(errors, ec);
+    };
+    const int status = run_child_process(child).status;
     if (status != 0) {
         throw std::runtime_error("gnuplot failed on reports/" + script +
                                  (figure.empty() ? "" : " for " + figure) + " (exit status " +

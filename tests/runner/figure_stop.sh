@@ -39,6 +39,9 @@ for signal in TERM INT HUP; do
     fi
     find "$dir/out" -name "*.rotbeam-tmp.*"  # named, if any, before the failure below
     complete_files "$dir/out" "SIG$signal while gnuplot draws"
+    # gnuplot's error file, which rotbeam reads once gnuplot has ended, goes with the stop too.
+    left=$(ls -A "$dir/tmp")
+    [ -z "$left" ] || fail "SIG$signal while gnuplot draws: left in TMPDIR: $left"
     echo "SIG$signal while gnuplot draws: exit $code," \
         "$(find "$dir/out" -name '*.png' | wc -l) figure(s) kept"
 done

@@ -215,9 +215,9 @@ BOOST_AUTO_TEST_CASE(time_left_follows_the_cost_when_known) {
     std::ostringstream out;
     Progress p("rotbeam suite", 3, out, log_options(now, 10.0));
     p.set_total_cost(10.0);
-    p.started("long");
+    p.started("long", 8.0);
     now = 8.0;
-    p.finished("long", 8.0);  // 8 of 10 cost units in 8 s: about 2 s left
+    p.finished("long");  // 8 of 10 cost units in 8 s: about 2 s left
     BOOST_TEST(p.line() == "rotbeam suite: 1/3 done, 8 s elapsed, about 2 s left");
 }
 
@@ -227,7 +227,7 @@ BOOST_AUTO_TEST_CASE(time_left_before_the_first_item_is_the_expected_cost) {
     std::ostringstream out;
     Progress p("rotbeam suite", 1, out, log_options(now, 10.0));
     p.set_total_cost(120.0);
-    p.started("study speed-accuracy");
+    p.started("study speed-accuracy", 120.0);
     now = 30.0;
     BOOST_TEST(p.line() ==
                "rotbeam suite: 0/1 done, running study speed-accuracy, 30 s elapsed, "
