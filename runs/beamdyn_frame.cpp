@@ -52,4 +52,40 @@ void add_beamdyn_frame(const Mat3& root_dcm, nlohmann::json& result) {
     }
 }
 
+bool has_beamdyn_columns(const nlohmann::json& result) {
+    return result.contains("beamdyn_frame") && !result["steps"].empty() &&
+           result["steps"][0].contains("beamdyn");
+}
+
+void write_beamdyn_header(const nlohmann::json& result, std::ostream& os) {
+    const json& b = result["steps"][0]["beamdyn"];
+    for (const auto& [name, point] : b["points"].items()) {
+        for (const char* c : {"TDxr", "TDyr", "TDzr", "RDxr", "RDyr", "RDzr"}) {
+            os << "," << name << "_" << c;
+        }
+    }
+    if (!b.contains("reactions")) return;
+    for (const auto& [name, reaction] : b["reactions"].items()) {
+        for (const char* c : {"Fxr", "Fyr", "Fzr", "Mxr", "Myr", "Mzr"}) {
+            os << "," << name << "_" << c;
+        }
+    }
+}
+
+void write_beamdyn_row(const nlohmann::json& step, std::ostream& os) {
+    const json& b = step["beamdyn"];
+    const auto put = [&os](const json& v) {
+        for (int i = 0; i < 3; ++i) os << "," << v[static_cast<std::size_t>(i)].get<double>();
+    };
+    for (const auto& [name, point] : b["points"].items()) {
+        put(point["TD"]);
+        put(point["RD"]);
+    }
+    if (!b.contains("reactions")) return;
+    for (const auto& [name, reaction] : b["reactions"].items()) {
+        put(reaction["F"]);
+        put(reaction["M"]);
+    }
+}
+
 }  // namespace rotbeam

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <ostream>
 
 #include "core/types.hpp"
 
@@ -23,5 +24,15 @@ Vec3 wiener_milenkovic_of(const Vec3& psi);
 // Adds `beamdyn_frame` = {dcm} to the result and per step `beamdyn` = {points: {name: {TD, RD}},
 // reactions: {name: {F, M}}} (reactions where the step has them).
 void add_beamdyn_frame(const Mat3& root_dcm, nlohmann::json& result);
+
+// The CSV columns of the `beamdyn` block (steps_csv.hpp, history_csv.hpp), named like BeamDyn's
+// channels: per named point <point>_TDxr, _TDyr, _TDzr, _RDxr, _RDyr, _RDzr, then per support
+// <support>_Fxr … _Mzr where the steps have reactions. None when the result has no
+// `beamdyn_frame`.
+bool has_beamdyn_columns(const nlohmann::json& result);
+// ",<column>…" for the `beamdyn` block of steps[0].
+void write_beamdyn_header(const nlohmann::json& result, std::ostream& os);
+// ",<value>…" for one step, in the header's order.
+void write_beamdyn_row(const nlohmann::json& step, std::ostream& os);
 
 }  // namespace rotbeam

@@ -5,12 +5,20 @@
 // the state, so it cannot change a result; a run without one pays one thread-local load per step.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/static_state.hpp"
 #include "core/types.hpp"
 
 namespace rotbeam {
+
+// A turning frame's position at a snapshot's time (docs/rotating-frame.md): the rotation Q(t) about
+// the axis through `center` that turns the motion relative to the frame into the inertial one.
+struct TurningFrame {
+    Mat3 rotation = Mat3::Identity();
+    Vec3 center = Vec3::Zero();
+};
 
 struct FrameSnapshot {
     std::vector<StaticState::NodeFrame> nodes;  // arc-length order per member
@@ -19,6 +27,9 @@ struct FrameSnapshot {
     std::vector<SectionResultants> sections;
     // A mode's amplitude [u; θ] at every node (modal analyses), in the order of `nodes`.
     std::vector<Vec6> mode;
+    // With turning supports (dynamics): the frame at the output time; `nodes` and `sections` are
+    // then the motion relative to it, in its axes.
+    std::optional<TurningFrame> turning;
 };
 
 struct FrameRecorder {
@@ -30,11 +41,19 @@ inline thread_local FrameRecorder* current_frame_recorder = nullptr;
 
 inline bool frames_recorded() { return current_frame_recorder != nullptr; }
 
-// Adds a snapshot of `state` (and a mode's node amplitudes) when a recorder is installed.
-inline void record_frames(const StaticState& state, std::vector<Vec6> mode = {}) {
+// Adds a snapshot when a recorder is installed.
+inline void record_snapshot(FrameSnapshot snapshot) {
+    if (current_frame_recorder != nullptr) {
+        current_frame_recorder->snapshots.push_back(std::move(snapshot));
+    }
+}
+
+// Adds a snapshot of `state` (and a mode's node amplitudes, or the turning frame of a dynamic
+// output) when a recorder is installed.
+inline void record_frames(const StaticState& state, std::vector<Vec6> mode = {},
+                          std::optional<TurningFrame> turning = std::nullopt) {
     if (current_frame_recorder == nullptr) return;
-    current_frame_recorder->snapshots.push_back(
-        {state.node_frames(), state.section_resultants(), std::move(mode)});
+    record_snapshot({state.node_frames(), state.section_resultants(), std::move(mode), turning});
 }
 
 // Installs a recorder for the scope; the previous one is restored on exit.

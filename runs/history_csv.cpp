@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "beamdyn_frame.hpp"
 #include "estimate_columns.hpp"
 
 namespace rotbeam {
@@ -55,6 +56,8 @@ std::string history_csv(const nlohmann::json& result) {
             }
         }
         if (steps[0].contains("energy")) os << ",kinetic_energy,strain_energy";
+        // The points and reactions in BeamDyn's frame (`run --frame beamdyn`, beamdyn_frame.hpp).
+        if (has_beamdyn_columns(result)) write_beamdyn_header(result, os);
         if (estimate) write_estimate_header(result, os);
     }
     os << "\n";
@@ -72,6 +75,7 @@ std::string history_csv(const nlohmann::json& result) {
             os << "," << step["energy"]["kinetic"].get<double>() << ","
                << step["energy"]["strain"].get<double>();
         }
+        if (has_beamdyn_columns(result)) write_beamdyn_row(step, os);
         if (estimate) write_estimate_row(result, step, os);
         os << "\n";
     }

@@ -2,7 +2,8 @@
 // the result JSON's `steps`: one row per output time; per named point the displacement, the
 // principal rotation vector and the unwrapped rotation angle; with turning supports the same
 // relative to the turning frame (`<point>_rel_ux` … `_rel_angle`); then, when the steps carry them,
-// each support's reaction (force and moment on the beam) and the kinetic and strain energy; last,
+// each support's reaction (force and moment on the beam) and the kinetic and strain energy; with
+// `run --frame beamdyn` the points and reactions in BeamDyn's frame (beamdyn_frame.hpp); last,
 // when the run was estimated, the estimate columns in space, in time and combined
 // (estimate_columns.hpp).
 #pragma once

@@ -263,7 +263,11 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                                       {"reactions", relative["reactions"]}};
         }
         result["steps"].push_back(std::move(step));
-        record_frames(problem.statics());
+        if (frames_recorded()) {
+            std::optional<TurningFrame> turning;
+            if (problem.rotating()) turning = TurningFrame{Q, problem.frame_center()};
+            record_frames(problem.statics(), {}, turning);
+        }
     };
     const int stages =
         gauss_legendre_stages(comb::integrator_for(Formulation::displacement, d.integrator));

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "beamdyn_frame.hpp"
 #include "estimate_columns.hpp"
 
 namespace rotbeam {
@@ -20,6 +21,8 @@ std::string steps_csv(const nlohmann::json& result) {
     // After the points: the step's stability assessment (core/static_stability.hpp); the estimate's
     // columns, when estimated, come last (as in every CSV of a result: docs/error-estimates.md).
     const bool stability = steps[0].contains("stability");
+    // Then the step's points in BeamDyn's frame (`run --frame beamdyn`, beamdyn_frame.hpp).
+    const bool beamdyn = has_beamdyn_columns(result);
     os << "load_factor";
     for (const auto& [name, point] : steps[0]["points"].items()) {
         for (const char* c : {"ux", "uy", "uz", "rx", "ry", "rz", "angle"}) {
@@ -27,6 +30,7 @@ std::string steps_csv(const nlohmann::json& result) {
         }
     }
     if (stability) os << ",stability";
+    if (beamdyn) write_beamdyn_header(result, os);
     if (estimate) write_estimate_header(result, os);
     os << "\n";
     for (const nlohmann::json& step : steps) {
@@ -37,6 +41,7 @@ std::string steps_csv(const nlohmann::json& result) {
             os << "," << point["rotation_angle"].get<double>();
         }
         if (stability) os << "," << step["stability"]["assessment"].get<std::string>();
+        if (beamdyn) write_beamdyn_row(step, os);
         if (estimate) write_estimate_row(result, step, os);
         os << "\n";
     }

@@ -1,7 +1,7 @@
 // A static run's load steps as CSV (next to its result JSON, like a dynamic run's history,
 // history_csv.hpp): one row per load step; per named point the displacement, the principal
-// rotation vector and the unwrapped rotation angle, then the estimate columns
-// (estimate_columns.hpp) when the run was estimated.
+// rotation vector and the unwrapped rotation angle, then BeamDyn's frame (`run --frame beamdyn`,
+// beamdyn_frame.hpp) and the estimate columns (estimate_columns.hpp) when the run was estimated.
 #pragma once
 
 #include <nlohmann/json.hpp>

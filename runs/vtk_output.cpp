@@ -13,16 +13,34 @@ namespace rotbeam {
 
 namespace {
 
-// The section frame R R^r(s) of every node (columns d1, d2, d3).
-std::vector<Mat3> section_frames(const Model& model, const FrameSnapshot& snapshot) {
+// The nodes in inertial axes: with a turning frame Q about c (dynamics with turning supports) the
+// position c + Q (x^r + u − c) and the rotation Q R of the motion relative to it, as the result's
+// `points` (docs/rotating-frame.md); without one the snapshot's own.
+struct InertialNodes {
+    std::vector<Vec3> position;
+    std::vector<Mat3> rotation;  // relative to the reference, R = R^c R^rᵀ
+    std::vector<Mat3> frame;     // the section frame R R^r(s) (columns d1, d2, d3)
+};
+
+InertialNodes inertial_nodes(const Model& model, const FrameSnapshot& snapshot) {
     std::vector<ReferenceGeometry> geometry;
     for (size_t m = 0; m < model.members.size(); ++m)
         geometry.emplace_back(model, static_cast<int>(m));
-    std::vector<Mat3> frames;
+    InertialNodes out;
     for (const StaticState::NodeFrame& n : snapshot.nodes) {
-        frames.push_back(n.rotation * geometry[static_cast<size_t>(n.member)].frame(n.s));
+        if (snapshot.turning) {
+            const Mat3& Q = snapshot.turning->rotation;
+            const Vec3& c = snapshot.turning->center;
+            out.position.push_back(c + Q * (n.reference + n.displacement - c));
+            out.rotation.push_back(Q * n.rotation);
+        } else {
+            out.position.push_back(n.reference + n.displacement);
+            out.rotation.push_back(n.rotation);
+        }
+        out.frame.push_back(out.rotation.back() *
+                            geometry[static_cast<size_t>(n.member)].frame(n.s));
     }
-    return frames;
+    return out;
 }
 
 // Every double with 17 significant digits, so that it reads back exactly.
@@ -105,12 +123,13 @@ std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& resu
                                   const FrameSnapshot& snapshot) {
     const std::vector<StaticState::NodeFrame>& nodes = snapshot.nodes;
     const size_t n = nodes.size();
-    const std::vector<Mat3> frames = section_frames(model, snapshot);
+    const InertialNodes inertial = inertial_nodes(model, snapshot);
+    const std::vector<Mat3>& frames = inertial.frame;
     const double half_width = ribbon_half_width(model);
     // Points: the nodes, then the ribbon's edges x ∓ h d2.
     std::vector<Vec3> points(3 * n);
     for (size_t i = 0; i < n; ++i) {
-        const Vec3 x = nodes[i].reference + nodes[i].displacement;
+        const Vec3& x = inertial.position[i];
         points[i] = x;
         points[n + i] = x - half_width * frames[i].col(1);
         points[2 * n + i] = x + half_width * frames[i].col(1);
@@ -143,6 +162,10 @@ std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& resu
           "header_type=\"UInt64\">\n  <UnstructuredGrid>\n      <FieldData>\n";
     const double t = time_value(result, index);
     w.floats("TimeValue", 1, 1, [&](size_t, int) { return t; });
+    if (snapshot.turning) {
+        const Vec3 q = so3::log_map(snapshot.turning->rotation);
+        w.floats("frame_rotation_vector", 1, 3, [&](size_t, int c) { return q[c]; });
+    }
     estimate_field_data(result, index, w);
     os << "      </FieldData>\n    <Piece NumberOfPoints=\"" << points.size()
        << "\" NumberOfCells=\"" << cells << "\">\n      <PointData>\n";
@@ -151,8 +174,16 @@ std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& resu
     const auto per_point = [&](const std::string& name, const std::function<Vec3(size_t)>& f) {
         w.floats(name, points.size(), 3, [&](size_t p, int c) { return f(node_of(p))[c]; });
     };
-    per_point("displacement", [&](size_t i) { return nodes[i].displacement; });
-    per_point("rotation_vector", [&](size_t i) { return so3::log_map(nodes[i].rotation); });
+    // Inertial, like the result's `points`: with a turning frame the position less the reference.
+    per_point("displacement", [&](size_t i) {
+        return snapshot.turning ? Vec3(points[i] - nodes[i].reference) : nodes[i].displacement;
+    });
+    per_point("rotation_vector", [&](size_t i) { return so3::log_map(inertial.rotation[i]); });
+    if (snapshot.turning) {
+        per_point("relative_displacement", [&](size_t i) { return nodes[i].displacement; });
+        per_point("relative_rotation_vector",
+                  [&](size_t i) { return so3::log_map(nodes[i].rotation); });
+    }
     for (int d = 0; d < 3; ++d) {
         per_point("director_" + std::to_string(d + 1),
                   [&](size_t i) { return Vec3(frames[i].col(d)); });
@@ -172,13 +203,19 @@ std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& resu
     if (snapshot.sections.size() == segments.size() && !segments.empty()) {
         const std::vector<SectionResultants>& r = snapshot.sections;
         const size_t k = segments.size();
-        const auto per_cell = [&](const std::string& name, Vec3 SectionResultants::*field) {
-            w.floats(name, cells, 3, [&](size_t c, int i) { return (r[c % k].*field)[i]; });
+        // Inertial components turned from a turning frame's axes; the material ones as they are.
+        const Mat3 Q = snapshot.turning ? snapshot.turning->rotation : Mat3::Identity();
+        const auto per_cell = [&](const std::string& name, Vec3 SectionResultants::*field,
+                                  bool inertial_axes) {
+            w.floats(name, cells, 3, [&](size_t c, int i) {
+                const Vec3& v = r[c % k].*field;
+                return inertial_axes && snapshot.turning ? Vec3(Q * v)[i] : v[i];
+            });
         };
-        per_cell("section_force", &SectionResultants::force);
-        per_cell("section_moment", &SectionResultants::moment);
-        per_cell("section_force_material", &SectionResultants::force_material);
-        per_cell("section_moment_material", &SectionResultants::moment_material);
+        per_cell("section_force", &SectionResultants::force, true);
+        per_cell("section_moment", &SectionResultants::moment, true);
+        per_cell("section_force_material", &SectionResultants::force_material, false);
+        per_cell("section_moment_material", &SectionResultants::moment_material, false);
     }
     os << "      </CellData>\n      <Points>\n";
     w.vectors("position", points);

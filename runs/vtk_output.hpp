@@ -15,6 +15,12 @@
 // estimate_<point>_displacement and _rotation, the estimated error; or a mode's
 // estimate_frequency_hz), with estimate_..._reliable 1 or 0.
 //
+// With turning supports (a dynamic run with `rotating_frame`) the files show the inertial motion,
+// as the result's `points` do: position c + Q(t)(x^r + u − c), rotation Q(t) R, directors and
+// section_force, section_moment turned by Q(t); the motion relative to the turning frame (in its
+// axes) is the point data relative_displacement and relative_rotation_vector, and Q(t) the field
+// data frame_rotation_vector.
+//
 // The files are written by this small writer (ASCII, 17 significant digits: every double is
 // written exactly) rather than by VTK's library, which the fully static program cannot link.
 // Every file is written atomically (core/atomic_file.hpp).

@@ -1,8 +1,11 @@
 // Results in BeamDyn's frame (runs/beamdyn_frame.hpp, `run --frame beamdyn`): the imported
 // roll-up deck's tip, read from the result's `beamdyn` block exactly as BeamDyn prints TipTDxr …
-// TipRDzr, against BeamDyn's own output (tests/data/beamdyn/bd_isotropic_rollup/bd_driver.out).
+// TipRDzr, against BeamDyn's own output (tests/data/beamdyn/bd_isotropic_rollup/bd_driver.out);
+// the same columns in the result's CSV (steps_csv.hpp, history_csv.hpp) against the JSON block
+// and BeamDyn's output.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -12,7 +15,9 @@
 #include "cases/loader/beamdyn_deck.hpp"
 #include "cases/loader/case_loader.hpp"
 #include "runs/beamdyn_frame.hpp"
+#include "runs/history_csv.hpp"
 #include "runs/run_case.hpp"
+#include "runs/steps_csv.hpp"
 #include "tests/cases/beamdyn_output.hpp"
 
 using namespace rotbeam;
@@ -32,6 +37,66 @@ Mat3 root_dcm(const cases::BeamDynDeck& deck) {
     return m;
 }
 
+// A CSV file's columns by header name; a cell that is not a number (a stability assessment) reads
+// as NaN, which equals nothing.
+std::map<std::string, std::vector<double>> csv_columns(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> names;
+    std::istringstream header(line);
+    for (std::string cell; std::getline(header, cell, ',');) names.push_back(cell);
+    std::map<std::string, std::vector<double>> columns;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string cell;
+        for (const std::string& name : names) {
+            std::getline(row, cell, ',');
+            char* end = nullptr;
+            const double x = std::strtod(cell.c_str(), &end);
+            const bool number = !cell.empty() && end == cell.c_str() + cell.size();
+            columns[name].push_back(number ? x : std::nan(""));
+        }
+    }
+    return columns;
+}
+
+// The result of a deck's driver with its `beamdyn` block.
+nlohmann::json run_in_beamdyns_frame(const std::string& driver) {
+    RunRequest request;
+    request.case_path = driver;
+    request.model = load_case(driver);
+    nlohmann::json r = run_case(request);
+    add_beamdyn_frame(root_dcm(cases::read_beamdyn_deck(driver)), r);
+    return r;
+}
+
+// Every BeamDyn-frame column of a CSV equals the result's `beamdyn` block at every step: the CSV
+// writes 17 significant digits, so a double reads back exactly (no tolerance). `group` is
+// "points" or "reactions", `vectors` the block's two vectors per name.
+void check_columns_equal_json(const std::map<std::string, std::vector<double>>& columns,
+                              const nlohmann::json& steps, const std::string& group,
+                              const std::vector<std::string>& vectors) {
+    const nlohmann::json& first = steps[0]["beamdyn"][group];
+    BOOST_TEST(!first.empty());
+    for (const auto& [name, block] : first.items()) {
+        for (const std::string& v : vectors) {
+            for (std::size_t i = 0; i < 3; ++i) {
+                const std::string column = name + "_" + v + "xyz"[i] + "r";
+                BOOST_TEST_CONTEXT(column) {
+                    BOOST_REQUIRE(columns.count(column) == 1);
+                    const std::vector<double>& values = columns.at(column);
+                    BOOST_REQUIRE(values.size() == steps.size());
+                    for (std::size_t k = 0; k < steps.size(); ++k) {
+                        BOOST_TEST(values[k] ==
+                                   steps[k]["beamdyn"][group][name][v][i].get<double>());
+                    }
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(beamdyn_frame)
@@ -49,12 +114,7 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_parameters_are_four_tan_quarter_angle) {
 // this deck (test_beamdyn_import.cpp). The comparison takes the `beamdyn` block as written, with
 // no conversion in the test: TD against TipTD*, RD against TipRD*.
 BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
-    const std::string driver = kDeck + "bd_driver.inp";
-    RunRequest request;
-    request.case_path = driver;
-    request.model = load_case(driver);
-    nlohmann::json r = run_case(request);
-    add_beamdyn_frame(root_dcm(cases::read_beamdyn_deck(driver)), r);
+    const nlohmann::json r = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
     const auto bd = test::last_output_row(kDeck + "bd_driver.out");
     const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
     const char* axes[] = {"xr", "yr", "zr"};
@@ -67,6 +127,35 @@ BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
         }
     }
     BOOST_TEST(r["beamdyn_frame"]["dcm"][0][0].get<double>() == 1.0);
+}
+
+// The load steps' CSV of the roll-up carries tip_TDxr … tip_RDzr: equal to the JSON block at every
+// step, and its last row against BeamDyn's printed TipTD*, TipRD* to the tolerance argued above.
+BOOST_AUTO_TEST_CASE(rollup_csv_has_beamdyns_frame_columns) {
+    const nlohmann::json r = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
+    const auto columns = csv_columns(steps_csv(r));
+    check_columns_equal_json(columns, r["steps"], "points", {"TD", "RD"});
+    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
+    for (const std::string v : {"TD", "RD"}) {
+        for (const char* axis : {"xr", "yr", "zr"}) {
+            const double csv = columns.at("tip_" + v + axis).back();
+            BOOST_TEST_CONTEXT(v << axis << ": " << csv) {
+                BOOST_TEST(std::abs(csv - bd.at("Tip" + v + axis)) <= 5e-9 + 1e-12);
+            }
+        }
+    }
+}
+
+// A dynamic deck with a turning root (its steps carry reactions): the time history's CSV carries
+// the points' TD, RD and the support's F, M in BeamDyn's frame, equal to the JSON block.
+BOOST_AUTO_TEST_CASE(turning_deck_history_csv_has_beamdyns_frame_columns) {
+    const nlohmann::json r = run_in_beamdyns_frame(std::string(ROTBEAM_SOURCE_DIR) +
+                                                   "/tests/data/beamdyn/rotating-cantilever/"
+                                                   "bd_driver.inp");
+    BOOST_REQUIRE(r["steps"].size() > 1);
+    const auto columns = csv_columns(history_csv(r));
+    check_columns_equal_json(columns, r["steps"], "points", {"TD", "RD"});
+    check_columns_equal_json(columns, r["steps"], "reactions", {"F", "M"});
 }
 
 BOOST_AUTO_TEST_SUITE_END()

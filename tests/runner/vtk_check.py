@@ -10,7 +10,11 @@ named point (found by its reference_position, which equals the case's point) is 
 position + the JSON displacement of that step (modes: the mode amplitude equals the JSON's); with a
 `centerline` in the JSON (the displacement formulation's statics), every node equals it; the
 directors are orthonormal and right-handed; the ribbon's edges are the node ± h d2 with one h for
-all nodes.
+all nodes; the ribbon turns with the section as the JSON says: at every named point
+exp(rotation_vector)ᵀ [d1 d2 d3], the reference frame R^r(s), is the same in every file (so twist and
+the turning frame's rotation show); with turning supports (`rotating_frame` in the JSON) the nodes
+are at the inertial position (the JSON's `points`) and relative_displacement equals the JSON's
+`rotating_frame.points` displacement.
 
 Tolerances: every double is written with 17 significant digits, so it reads back exactly. A node's
 position is x^r + u rounded once by rotbeam; here the case's x^r + the JSON's u (also exact) is
@@ -19,7 +23,12 @@ rounded once more: each rounding is at most ε/2 of the magnitude, so the two ag
 both files: within 4ε of the normalized amplitude 1 only as a margin for the decimal round trip.
 The directors are columns of a product of rotation matrices, orthonormal to a few ε: 1e-13 leaves
 room for the ~10 operations per entry and catches any wrong column (an error of order one). The
-ribbon edge x ∓ h d2 is rounded once per component: within 2ε·scale.
+ribbon edge x ∓ h d2 is rounded once per component: within 2ε·scale. The reference frame
+exp(ψ)ᵀ D: ψ is the principal rotation vector of R rounded to 17 digits, exp here (Rodrigues) and
+the product add a few ε per entry; 1e-12 leaves room for the loss near a half turn (the roll-up
+passes π) and still catches a frame off by a turn of 1e-12 rad, far below any visible twist (a
+missing turning frame is off by Ω t, here ≥ 0.01 rad). The relative displacement is the JSON's
+double written once: within ε·scale.
 """
 import json
 import os
@@ -37,6 +46,18 @@ failures = []
 def check(condition, message):
     if not condition:
         failures.append(message)
+
+
+def rotation_matrix(psi):
+    """exp of the rotation vector psi (Rodrigues' formula)."""
+    angle = np.linalg.norm(psi)
+    K = np.array([[0, -psi[2], psi[1]], [psi[2], 0, -psi[0]], [-psi[1], psi[0], 0]])
+    if angle < 1e-8:  # the series to second order: its remainder is below 1e-24
+        return np.eye(3) + K + K @ K / 2
+    return np.eye(3) + np.sin(angle) / angle * K + (1 - np.cos(angle)) / angle**2 * K @ K
+
+
+reference_frames = {}  # per named point: exp(ψ)ᵀ D of the first file
 
 
 def main():
@@ -90,6 +111,15 @@ def check_file(index, mesh, entry, result, case):
             error = np.abs(x[i] - expected).max()
             check(error <= EPS * scale,
                   f"{where}: {name}: node {x[i]} != reference + displacement {expected}")
+        if "modes" not in result and at:
+            check_twist(where, name, data, at[0], point["rotation_vector"])
+        if "rotating_frame" in entry and at:
+            relative = np.array(entry["rotating_frame"]["points"][name]["displacement"])
+            check("relative_displacement" in data, f"{where}: no relative_displacement")
+            if "relative_displacement" in data:
+                got = data["relative_displacement"][at[0]]
+                check(np.abs(got - relative).max() <= EPS * max(np.abs(relative).max(), 1e-300),
+                      f"{where}: {name}: relative displacement {got} != JSON {relative}")
     if "centerline" in entry:
         line = np.array([p[1:] for p in entry["centerline"]])
         check(line.shape == x.shape and np.abs(line - x).max() <= EPS * np.abs(line).max(),
@@ -103,6 +133,17 @@ def check_file(index, mesh, entry, result, case):
     scale = np.abs(mesh.points).max()
     check(np.abs(mesh.points[n:2 * n] - (x - h[:, None] * d[1])).max() <= 2 * EPS * scale and
           np.ptp(h) <= 2 * EPS * scale, f"{where}: ribbon edges are not x -+ h d2")
+
+
+def check_twist(where, name, data, i, psi):
+    """The section frame at a named point's node, turned back by the JSON's rotation, is the same
+    reference frame R^r(s) in every file."""
+    D = np.column_stack([data[f"director_{k}"][i] for k in (1, 2, 3)])
+    reference = rotation_matrix(np.array(psi, dtype=float)).T @ D
+    first = reference_frames.setdefault(name, reference)
+    error = np.abs(reference - first).max()
+    check(error <= 1e-12, f"{where}: {name}: directors do not turn with the JSON rotation "
+          f"(reference frame off by {error:.3g})")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# `run --vtk`: the ParaView files of a static run in both formulations, a short dynamic run and a
-# modal run, read back by meshio (vtk_check.py) and checked against the runs' JSON.
+# `run --vtk`: the ParaView files of a static run in both formulations, a short dynamic run, a
+# modal run and a run with a turning root (the rotating-cantilever BeamDyn deck), read back by
+# meshio (vtk_check.py) and checked against the runs' JSON.
 # Usage: vtk_output.sh ROTBEAM SOURCE_DIR PYTHON (a Python with Debian's python3-meshio)
 set -u
 rotbeam=$1
@@ -8,14 +9,16 @@ src=$2
 python=$3
 . "$(dirname "$0")/scratch.sh"
 
-# check NAME CASE ARGS...: run with --vtk and --json into $work/NAME, then vtk_check.py.
+# check NAME CASE ARGS...: run with --vtk and --json into $work/NAME, then vtk_check.py. CASE is a
+# catalog name or a case file.
 check() {
-    local name=$1 case=$2
+    local name=$1 case=$2 file=$2
     shift 2
+    [[ $case == *.yaml ]] || file="$src/cases/$case.yaml"
     "$rotbeam" run "$case" --quiet --vtk "$work/$name" --json "$work/$name/r.json" "$@" ||
         fail "$name: rotbeam run exit $?"
     "$python" "$(dirname "$0")/vtk_check.py" "$work/$name"/*.pvd "$work/$name/r.json" \
-        "$src/cases/$case.yaml" || fail "$name: vtk_check.py"
+        "$file" || fail "$name: vtk_check.py"
 }
 
 check static-displacement cantilever-moment
@@ -26,6 +29,11 @@ grep -q 'Name="estimate_tip_displacement"' "$work/static-displacement"/*_0006.vt
     fail "static-displacement: no estimate field data"
 check dynamic free-vibration --estimate off --set analysis.end_time=0.02
 check modal joined-beam --formulation displacement --estimate off
+# A root turning at 1 rad/s about x: the inertial motion, the relative one as point data (the deck
+# imported as a case file).
+"$rotbeam" import beamdyn "$src/tests/data/beamdyn/rotating-cantilever/bd_driver.inp" \
+    --out "$work/turning.yaml" >/dev/null || fail "import of the turning deck"
+check turning-displacement "$work/turning.yaml" --estimate off
 # What --vtk cannot write is refused before the run, with nothing written.
 "$rotbeam" run joined-beam --vtk "$work/refused" 2>"$work/err" >/dev/null
 [ $? -eq 2 ] || fail "mixed modal --vtk: not refused with exit 2"
