@@ -171,6 +171,9 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     NewtonOutcome ic;
     if (!start_dae_run(dae, x, xdot, s, output, outcome, ic)) return outcome;
     const long ic_iterations = outcome.newton_iterations;
+    // A start accepted at the Newton's round-off floor is reported as the other schemes report it.
+    StallSummary stalls;
+    stalls.add(ic);
     IdaUser user;
     user.dae = &dae;
     user.x = x;
@@ -212,6 +215,10 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     std::ostringstream m;
     m << "IDA (BDF, max order " << s.max_order << "), " << outcome.steps << " steps, last order "
       << outcome.last_order;
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        m << "; " << stalls.describe("initial-condition solve", s.newton.residual_tolerance);
+    }
     outcome.message = m.str();
     return outcome;
 }

@@ -22,6 +22,7 @@
 #include "tests/mixed/dynamic_models.hpp"
 #include "tests/mixed/initial_conditions.hpp"
 #include "tests/mixed/refusing_system.hpp"
+#include "tests/mixed/stiff_row_system.hpp"
 
 using namespace rotbeam;
 using ThreeParameterTypes = test::ParameterizationTypes<test::ThreeParameters>;
@@ -230,6 +231,24 @@ BOOST_AUTO_TEST_CASE(ida_reports_a_fatal_callback_error_as_a_status) {
     BOOST_TEST(out.message.find("t = ") != std::string::npos);
     BOOST_TEST(out.last_time > 0.4);
     BOOST_TEST(out.last_time <= 0.6);
+}
+
+// A consistent start that the Newton accepts only at its round-off floor (a row whose floor is
+// above the tolerance, tests/mixed/stiff_row_system.hpp) is not a clean start: IDA, which starts
+// from that Newton's state (core/dae_ida.cpp), reports the run stalled at round-off with the
+// stall's numbers, as the fixed-step schemes report their stalled solves, and the answer is still
+// right (x = t, exact for BDF on ẋ = 1, to round-off; y = √2 to one ulp, 2.2e-16).
+BOOST_AUTO_TEST_CASE(ida_reports_a_start_stalled_at_round_off) {
+    test::StiffRowSystem toy;
+    VecX x(2), xdot = VecX::Zero(2);
+    x << 0.0, 1.0;
+    const DaeOutcome out = integrate_ida(toy, x, xdot, toy_settings(), {});
+    BOOST_TEST_MESSAGE(out.message);
+    BOOST_TEST(out.status == SolveStatus::stalled_at_round_off);
+    BOOST_TEST(out.message.find("initial-condition solve stalled at round-off") !=
+               std::string::npos);
+    BOOST_TEST(std::abs(x[0] - 2.0) < 1e-12);
+    BOOST_TEST(std::abs(x[1] - std::sqrt(2.0)) <= 2.3e-16);
 }
 
 // Energy: the undamped cantilever (docs/benchmarks.md §8 section, no load after the start) given a
