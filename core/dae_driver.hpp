@@ -15,11 +15,11 @@
 //    unknowns of an index-1 system.
 // All three start from consistent initial conditions: given the differential unknowns of X, the
 // algebraic unknowns of X and the differential unknowns of Ẋ are solved from F(t₀, X, Ẋ) = 0 (an
-// index-1 DAE: that Jacobian is regular) — by the shared Newton for the fixed-step scheme and by
-// IDACalcIC (IDA_YA_YDP_INIT) for IDA; a start that is already consistent is kept. IDA excludes the
-// algebraic unknowns from its error test (IDASetSuppressAlg): they are functions of the
-// differential state, and for a higher-index system (a statically indeterminate structure) their
-// local error estimates do not shrink with the step.
+// index-1 DAE: that Jacobian is regular) — by the shared scaled Newton for every scheme, IDA
+// included (core/dae_ida.cpp says why not IDACalcIC); a start that is already consistent is kept.
+// IDA excludes the algebraic unknowns from its error test (IDASetSuppressAlg): they are functions
+// of the differential state, and for a higher-index system (a statically indeterminate structure)
+// their local error estimates do not shrink with the step.
 //
 // IDA callbacks are thin trampolines: SingularityError (a parameterization near its singular
 // angle) or a non-finite residual returns 1 (recoverable: IDA cuts the step), any other exception

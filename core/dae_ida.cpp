@@ -1,6 +1,6 @@
 // SUNDIALS IDA for DaeSystem (core/dae_driver.hpp): analytic iteration matrix into KLU, IDASetId,
-// IDASVtolerances, IDASetMaxOrd, IDACalcIC; callbacks are trampolines that never let a C++
-// exception into SUNDIALS.
+// IDASVtolerances, IDASetMaxOrd, started from the shared consistent initial conditions; callbacks
+// are trampolines that never let a C++ exception into SUNDIALS.
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "core/dae_driver.hpp"
+#include "core/dae_fixed_steps.hpp"
 #include "core/errors.hpp"
 #include "core/step_observer.hpp"
 #include "core/sundials_callbacks.hpp"
@@ -120,9 +121,6 @@ void configure(Resources& r, IdaUser& user, const DaeSettings& s, const VecX& x,
     check(IDASetMaxOrd(r.ida, s.max_order), "IDASetMaxOrd");
     check(IDASetMaxNumSteps(r.ida, s.max_steps), "IDASetMaxNumSteps");
     check(IDASetStopTime(r.ida, s.end_time), "IDASetStopTime");
-    // IDACalcIC's Newton on a residual whose algebraic rows are forces: the default limits
-    // (4 iterations per Jacobian, 10 Jacobians) are for nearly consistent starts.
-    check(IDASetMaxNumItersIC(r.ida, 20), "IDASetMaxNumItersIC");
     user.dae->evaluate(s.start_time, x, xdot, user.residual, &user.Jx, &user.Jxd);
     combine_same_pattern(user.Jx, 1.0, user.Jxd, user.J);
     r.A = SUNSparseMatrix(n, n, user.J.nonZeros(), CSC_MAT, r.ctx);
@@ -163,46 +161,28 @@ std::string failure(const char* where, double t, int flag, const IdaUser& user) 
 
 DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings& s,
                          const DaeOutput& output) {
-    ROTBEAM_VERIFY(s.time_step > 0.0 && s.end_time > s.start_time, "bad time interval");
     ROTBEAM_VERIFY(s.max_order >= 1 && s.max_order <= 5, "IDA orders are 1 to 5");
+    // Consistent initial conditions by the shared scaled Newton of the other schemes
+    // (core/dae_driver.hpp), not IDACalcIC: on a very stiff beam started at rest (EA = 1e9)
+    // IDACalcIC's line search fails (IDA_LINESEARCH_FAIL) where this Newton converges, its
+    // stopping test asking each unknown only for the resolution the residual allows
+    // (raise_to_resolution); docs/mixed-dynamics.md, "IDA from rest on a very stiff beam".
+    DaeOutcome outcome;
+    NewtonOutcome ic;
+    if (!start_dae_run(dae, x, xdot, s, output, outcome, ic)) return outcome;
+    const long ic_iterations = outcome.newton_iterations;
+    // A start accepted at the Newton's round-off floor is reported as the other schemes report it.
+    StallSummary stalls;
+    stalls.add(ic);
     IdaUser user;
     user.dae = &dae;
     user.x = x;
     user.xdot = xdot;
     Resources r;
     configure(r, user, s, x, xdot);
-    DaeOutcome outcome;
-    outcome.last_time = s.start_time;
     const double interval = s.output_interval > 0.0 ? s.output_interval : s.time_step;
-    // Differential X given; algebraic X and differential Ẋ computed (the start may be far from
-    // consistent: an initial velocity, a step load). tout1 only sets IDACalcIC's step scale.
-    const bool consistent =
-        already_consistent(dae, s.start_time, x, xdot, s.newton.residual_tolerance);
-    if (!consistent) {
-        // IDACalcIC with the initial-condition split (DaeSystem::initial_condition_differential),
-        // then the integration's id again; the completed rates restart IDA (IDAReInit keeps every
-        // option).
-        fill(r.id, dae.initial_condition_differential(x));
-        check(IDASetId(r.ida, r.id), "IDASetId");
-        const int flag = IDACalcIC(r.ida, IDA_YA_YDP_INIT, s.start_time + interval);
-        if (flag < 0) {
-            outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
-            outcome.message = failure("IDACalcIC", s.start_time, flag, user);
-            statistics(r.ida, outcome);
-            return outcome;
-        }
-        check(IDAGetConsistentIC(r.ida, r.yy, r.yp), "IDAGetConsistentIC");
-        x = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yy), x.size());
-        xdot = Eigen::Map<const VecX>(N_VGetArrayPointer(r.yp), x.size());
-        dae.complete_initial_rates(x, xdot);
-        fill(r.yp, xdot);
-        fill(r.id, dae.differential());
-        check(IDASetId(r.ida, r.id), "IDASetId");
-        check(IDAReInit(r.ida, s.start_time, r.yy, r.yp), "IDAReInit");
-    }
-    if (output) output(s.start_time, x, xdot, 0);
     const long outputs = std::lround((s.end_time - s.start_time) / interval);
-    long iterations_before = 0;
+    long iterations_before = ic_iterations;
     for (long k = 1; k <= outputs; ++k) {
         const double tout =
             k == outputs ? s.end_time : s.start_time + static_cast<double>(k) * interval;
@@ -210,6 +190,7 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
         check_time_limit("at time", tret);
         const int flag = IDASolve(r.ida, tout, &tret, r.yy, r.yp, IDA_NORMAL);
         statistics(r.ida, outcome);
+        outcome.newton_iterations += ic_iterations;
         if (flag < 0) {
             outcome.status = user.singular ? SolveStatus::singular : SolveStatus::diverged;
             std::ostringstream m;
@@ -234,6 +215,10 @@ DaeOutcome integrate_ida(DaeSystem& dae, VecX& x, VecX& xdot, const DaeSettings&
     std::ostringstream m;
     m << "IDA (BDF, max order " << s.max_order << "), " << outcome.steps << " steps, last order "
       << outcome.last_order;
+    if (stalls.count > 0) {
+        outcome.status = SolveStatus::stalled_at_round_off;
+        m << "; " << stalls.describe("initial-condition solve", s.newton.residual_tolerance);
+    }
     outcome.message = m.str();
     return outcome;
 }

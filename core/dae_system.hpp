@@ -27,9 +27,9 @@ class DaeSystem {
                           SparseMatrix* J_x, SparseMatrix* J_xdot) = 0;
     virtual const SparseMatrix& pattern() const = 0;
     virtual const VecX& differential() const = 0;
-    // The split used for consistent initial conditions at state x (IDACalcIC's id and
-    // consistent_initial_conditions): X is solved where 0, Ẋ where 1. The same as differential()
-    // unless a differential direction is not a component (the quaternion's tangential directions:
+    // The split used for consistent initial conditions at state x (consistent_initial_conditions,
+    // every integrator's start): X is solved where 0, Ẋ where 1. The same as differential() unless
+    // a differential direction is not a component (the quaternion's tangential directions:
     // formulations/mixed/mixed_dynamics.hpp), where a chart chosen at x makes that system regular.
     virtual VecX initial_condition_differential(const VecX& /*x*/) const { return differential(); }
     // After consistent initial conditions: sets the rates of directions F does not see (the

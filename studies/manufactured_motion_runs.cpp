@@ -173,20 +173,6 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
         result.forces.push_back(forces);
     };
     const bool ida = spec.integrator == Integrator::ida;
-    if constexpr (P::kSize == 4) {
-        // IDACalcIC's line search fails from the quaternion's exact start (IDA_LINESEARCH_FAIL at
-        // rtol 1e-6, measured); the trapezoidal driver's consistent initialization (same split,
-        // DaeSystem::initial_condition_differential) converges, and IDA then skips IDACalcIC.
-        if (ida) {
-            const NewtonOutcome ic =
-                consistent_initial_conditions(dyn, 0.0, x, xdot, s.newton, s.time_step);
-            if (!ic.converged) {
-                result.status = ic.singular ? "singular" : "diverged";
-                result.message = "initial conditions: " + ic.failure;
-                return;
-            }
-        }
-    }
     const DaeOutcome out = ida ? integrate_ida(dyn, x, xdot, s, output)
                            : spec.integrator == Integrator::radau_iia_3
                                ? integrate_radau_iia(dyn, x, xdot, s, output)

@@ -1,7 +1,7 @@
 // A start of the mixed dynamics far from consistency made consistent twice, for the tests that
-// compare the two ways: by the shared Newton on the initial-condition unknowns
-// (core/dae_driver.hpp) and by IDACalcIC (one IDA step of 1e-3 with tolerances 1e-10, its state
-// at t₀ recorded).
+// compare the two: by the shared Newton on the initial-condition unknowns (core/dae_driver.hpp)
+// and by IDA's start (one IDA step of 1e-3 with tolerances 1e-10, its state at t₀ recorded; IDA
+// starts from that Newton's state, core/dae_ida.cpp, so the two must be the same).
 #pragma once
 
 #include <boost/test/unit_test.hpp>
@@ -12,7 +12,7 @@ namespace rotbeam::test {
 
 struct TwoInitialConditions {
     double r0 = 0.0;    // max scaled residual at the start
-    double r_ic = 0.0;  // the same after IDACalcIC
+    double r_ic = 0.0;  // the same at IDA's start
     double dx = 0.0;    // max |X_ida − X_newton| in units of the state scale
     double dxd = 0.0;   // max |Ẋ_ida − Ẋ_newton| / max |Ẋ_newton|
     VecX x_newton, xd_newton, x_ic, xd_ic;

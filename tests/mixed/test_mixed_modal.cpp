@@ -223,12 +223,12 @@ BOOST_AUTO_TEST_CASE(modes_about_a_follower_loaded_static_state) {
 BOOST_AUTO_TEST_SUITE_END()
 
 // The index of the mixed DAE (docs/mixed-dynamics.md, "Index"): the consistent-initialization
-// matrix (∂F/∂X in the algebraic columns, ∂F/∂Ẋ in the differential ones: IDACalcIC's and
-// consistent_initial_conditions' Newton matrix) is regular for a cantilever (index 1) and loses
-// exactly six ranks on the joined beam, whose two clamps close one kinematic loop (index 3: the
-// closure constrains the differential u, c, the redundant reaction is its multiplier). Rows and
-// columns scaled by the residual and state scales (rates by state scale / 1e-3 s), so the singular
-// values are comparable.
+// matrix (∂F/∂X in the algebraic columns, ∂F/∂Ẋ in the differential ones:
+// consistent_initial_conditions' Newton matrix, every integrator's start) is regular for a
+// cantilever (index 1) and loses exactly six ranks on the joined beam, whose two clamps close one
+// kinematic loop (index 3: the closure constrains the differential u, c, the redundant reaction is
+// its multiplier). Rows and columns scaled by the residual and state scales (rates by state scale /
+// 1e-3 s), so the singular values are comparable.
 template <class Dyn>
 Eigen::VectorXd initial_condition_singular_values(Dyn& dyn, const VecX& x) {
     VecX r;

@@ -1,11 +1,11 @@
 // The mixed dynamics with the quaternion (formulations/mixed/mixed_dynamics.hpp): the
 // unknown count (one support, and a second, prescribed and moving support with the scale ρ),
-// consistent initial conditions from a non-equilibrium start by IDACalcIC and by the Newton on the
-// initial-condition chart, and the norm kept by the Cayley relations along a fixed-step run
-// (∂F/∂X and ∂F/∂Ẋ against central differences, and the radial rate entering nowhere, are the
-// generic harness's: tests/harness/test_jacobians.cpp; no allocation after the first evaluation,
-// with both supports, and the follower-load counters are every parameterization's:
-// tests/mixed/test_mixed_dynamics_jacobian.cpp).
+// consistent initial conditions from a non-equilibrium start by the Newton on the
+// initial-condition chart (IDA starts from it), and the norm kept by the Cayley relations along a
+// fixed-step run (∂F/∂X and ∂F/∂Ẋ against central differences, and the radial rate entering
+// nowhere, are the generic harness's: tests/harness/test_jacobians.cpp; no allocation after the
+// first evaluation, with both supports, and the follower-load counters are every
+// parameterization's: tests/mixed/test_mixed_dynamics_jacobian.cpp).
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
@@ -63,10 +63,10 @@ BOOST_AUTO_TEST_CASE(at_rest_the_residual_is_the_static_one) {
 }
 
 // A start far from consistency (reference configuration, rigid initial velocity, loads on at
-// t₀ = 0.4): IDACalcIC on the initial-condition chart (the largest component of each element q
-// algebraic) and the shared Newton on the same chart give the same consistent state; the rotations
-// and their norms are kept, and the rates come back tangent to the sphere.
-BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
+// t₀ = 0.4): the shared Newton on the initial-condition chart (the largest component of each
+// element q algebraic) makes it consistent and IDA starts from that state; the rotations and their
+// norms are kept, and the rates come back tangent to the sphere.
+BOOST_AUTO_TEST_CASE(ida_starts_a_non_equilibrium_start_consistent) {
     const Model model = test::dynamic_test_model();
     Dynamics dyn(model, 1.0);
     VecX x0 = dyn.from_static_state(form::MixedStatics<Q>(model).state_vector());
@@ -83,8 +83,8 @@ BOOST_AUTO_TEST_CASE(calc_ic_makes_a_non_equilibrium_start_consistent) {
         tangent = std::max(tangent, std::abs(x.segment<4>(col).dot(ic.xd_ic.segment<4>(col))));
     }
     BOOST_TEST_MESSAGE("quaternion: scaled residual before "
-                       << ic.r0 << ", after IDACalcIC " << ic.r_ic << "; IDACalcIC vs Newton: X "
-                       << ic.dx << ", Ẋ " << ic.dxd);
+                       << ic.r0 << ", at IDA's start " << ic.r_ic << "; IDA vs Newton: X " << ic.dx
+                       << ", Ẋ " << ic.dxd);
     BOOST_TEST(ic.r_ic < 1e-8);
     BOOST_TEST(ic.dx < 1e-8);
     BOOST_TEST(ic.dxd < 1e-8);
