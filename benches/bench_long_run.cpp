@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/static_driver.hpp"
@@ -151,6 +152,23 @@ double max_over_min(const std::array<Part, kParts>& parts) {
     return hi / lo;
 }
 
+// The largest total energy (kinetic + strain) of the result's outputs in the first and in the last
+// tenth of [0, end]: a scheme that creates or removes energy under the forced motion shows as a
+// trend between the two (a bounded forced response keeps them within its own band).
+std::pair<double, double> energy_first_last_tenth(const nlohmann::json& result, double end) {
+    double first = kNoValue, last = kNoValue;
+    if (!result.contains("steps")) return {first, last};
+    for (const nlohmann::json& step : result["steps"]) {
+        if (!step.contains("energy") || !step.contains("time")) continue;
+        const double t = step["time"].get<double>();
+        const double e =
+            step["energy"].value("kinetic", kNoValue) + step["energy"].value("strain", kNoValue);
+        if (t <= 0.1 * end && !(e <= first)) first = e;
+        if (t >= 0.9 * end && !(e <= last)) last = e;
+    }
+    return {first, last};
+}
+
 struct Variant {
     std::string label;      // e.g. "joined-beam-dead displacement/quaternion, generalized-α"
     std::string case_name;  // a catalog case with a dynamic analysis at Δt = kTimeStep
@@ -190,6 +208,7 @@ nlohmann::json run_variant(const Variant& v) {
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     const std::array<Part, kParts> parts = split_into_parts(probe);
+    const auto [energy_first, energy_last] = energy_first_last_tenth(result, v.end_time);
     const Part& first = parts.front();
     const Part& last = parts.back();
     const Memory& m1 = probe.memory.front();
@@ -233,6 +252,8 @@ nlohmann::json run_variant(const Variant& v) {
         {"last_over_first_per_iteration", num((last.mean_step_seconds / last.newton_per_step) /
                                               (first.mean_step_seconds / first.newton_per_step))},
         {"max_over_min_median", num(max_over_min(parts))},
+        {"energy_max_first_tenth", num(energy_first)},
+        {"energy_max_last_tenth", num(energy_last)},
         {"first_newton_per_step", num(first.newton_per_step)},
         {"last_newton_per_step", num(last.newton_per_step)},
         {"first_jacobians_per_step", num(first.jacobians_per_step)},
@@ -285,7 +306,10 @@ std::vector<Variant> variants(bool quick) {
     // generalized-α run grows in energy until a step fails (t = 8.3 s), docs/performance.md. The
     // Gauss–Legendre schemes conserve the energy of the free motion and need no dissipation.
     const std::vector<std::string> rho09{"analysis.rho_infinity=0.9"};
+    const Integrator radau = Integrator::radau_iia_3;
     const std::vector<Scheme> schemes{
+        {joined, "mixed/wiener-milenkovic, Radau IIA 3", mixed, radau, fixed_end, 100, {}},
+        {blade, "mixed/wiener-milenkovic, Radau IIA 3", mixed, radau, fixed_end, 100, {}},
         {joined, "displacement/quaternion, generalized-α ρ∞ 0.9", displacement, ga, fixed_end, 100,
          rho09},
         {joined,
@@ -370,7 +394,9 @@ void print_long_run_row(const nlohmann::json& r) {
               << mb(r["hwm_kb_after_last"].get<long>()) << std::setw(8)
               << fixed(d("growth_bytes_per_step"), 0) << std::setw(8)
               << fixed(d("heap_growth_bytes_per_output"), 0) << std::setw(7)
-              << fixed(r["cpu_seconds"].get<double>(), 1) << "\n";
+              << fixed(r["cpu_seconds"].get<double>(), 1) << std::setw(11)
+              << sci(d("energy_max_first_tenth")) << std::setw(11)
+              << sci(d("energy_max_last_tenth")) << "\n";
     if (!has_solution(r["status"].get<std::string>())) {
         std::cout << "    " << r["status"].get<std::string>() << ": "
                   << r["message"].get<std::string>() << "\n";
@@ -388,7 +414,7 @@ nlohmann::json bench_long_run(bool quick) {
         << std::setw(7) << "p10" << std::setw(7) << "/iter" << std::setw(7) << "spread"
         << std::setw(12) << "Newton/st." << std::setw(11) << "Jac./st." << std::setw(9) << "HWM1 MB"
         << std::setw(8) << "HWM10" << std::setw(8) << "B/step" << std::setw(8) << "B/out."
-        << std::setw(7) << "CPU s"
+        << std::setw(7) << "CPU s" << std::setw(11) << "E max 1st" << std::setw(11) << "E max 10th"
         << "\n";
     nlohmann::json rows = nlohmann::json::array();
     for (const Variant& v : variants(quick)) {
@@ -396,17 +422,19 @@ nlohmann::json bench_long_run(bool quick) {
         print_long_run_row(rows.back());
         std::cout << std::flush;
     }
-    std::cout << "  first/last µs: median CPU cost of one step in the first/last tenth of the run "
-                 "(IDA: per output interval / its steps); ratio: last/first; p10: the same of the "
-                 "tenths' 10th "
-                 "percentiles (less sensitive to load); /iter: the same per "
-                 "Newton iteration (means); Newton/st., Jac./st.: Newton iterations and Jacobian "
-                 "evaluations per step, first/last tenth (—: generalized-α does not count its "
-                 "Jacobians); spread: largest/smallest median over the ten tenths; "
-                 "HWM1/HWM10: VmHWM after the first/last tenth; B/step: VmRSS growth from the "
-                 "first to the last tenth per step (with output every step: the result's "
-                 "history); B/out.: the heap in use (mallinfo2) grown over the same span per "
-                 "output (one history entry)\n\n";
+    std::cout
+        << "  first/last µs: median CPU cost of one step in the first/last tenth of the run "
+           "(IDA: per output interval / its steps); ratio: last/first; p10: the same of the "
+           "tenths' 10th "
+           "percentiles (less sensitive to load); /iter: the same per "
+           "Newton iteration (means); Newton/st., Jac./st.: Newton iterations and Jacobian "
+           "evaluations per step, first/last tenth (—: generalized-α does not count its "
+           "Jacobians); spread: largest/smallest median over the ten tenths; "
+           "HWM1/HWM10: VmHWM after the first/last tenth; B/step: VmRSS growth from the "
+           "first to the last tenth per step (with output every step: the result's "
+           "history); B/out.: the heap in use (mallinfo2) grown over the same span per "
+           "output (one history entry); E max 1st/10th: the largest kinetic + strain energy [J] "
+           "of the outputs in the first/last tenth of the run\n\n";
     return {{"name", "long-run"}, {"quick", quick}, {"results", rows}};
 }
 

@@ -1,8 +1,9 @@
-// `rotbeam study speed-accuracy` (statics): error against in-process wall
-// time (median of repeats, timing.hpp) across meshes and orders on the roll-up (λ = 0.8, exact)
-// and the 45° bend (P = 600, continuum reference) for every combination, the Pareto front across
-// combinations, which combination wins at which accuracy (in words), and the "model only what the
-// scene requires" counters of every catalog analysis.
+// `rotbeam study speed-accuracy`: statics — error against in-process wall time (median of
+// repeats, timing.hpp) across meshes and orders on the roll-up (λ = 0.8, exact) and the 45° bend
+// (P = 600, continuum reference) for every combination, the Pareto front across combinations,
+// which combination wins at which accuracy (in words); dynamics — every time scheme on the joined
+// beam and the free vibration (studies/dynamic_speed.hpp); and the "model only what the scene
+// requires" counters of every catalog analysis.
 #include "study_speed.hpp"
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "core/static_driver.hpp"
 #include "runs/catalog.hpp"
 #include "runs/timing.hpp"
+#include "studies/dynamic_speed.hpp"
 #include "studies/study_math.hpp"
 #include "studies/study_plot.hpp"
 
@@ -283,6 +285,7 @@ nlohmann::json study_speed_accuracy(const StudyOptions& o) {
     nlohmann::json out = {
         {"study", "speed-accuracy"}, {"quick", o.quick}, {"cases", nlohmann::json::array()}};
     for (const SpeedCase& c : speed_cases()) out["cases"].push_back(speed_case(o, c, md));
+    out["dynamics"] = dynamic_speed_section(o, md);
     out["counters"] = counters_table(o, md);
     out["assembly_savings"] = assembly_savings(o, md);
     write_text(o, "study-speed-accuracy.md", md.str());

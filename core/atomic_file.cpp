@@ -122,6 +122,15 @@ class InFlight {
         std::lock_guard<std::mutex> lock(in_flight_mutex());
         in_flight().insert(path_);
     }
+    // The same, creating the temporary file under the lock: a stop either comes first (this
+    // write then waits for the exit) or finds the file there to remove. Sets `fd` and, when the
+    // file could not be created, `error`.
+    InFlight(const std::string& path, int& fd, int& error) : path_(path) {
+        std::lock_guard<std::mutex> lock(in_flight_mutex());
+        in_flight().insert(path_);
+        fd = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+        error = fd < 0 ? errno : 0;
+    }
     ~InFlight() {
         std::lock_guard<std::mutex> lock(in_flight_mutex());
         in_flight().erase(path_);
@@ -143,10 +152,11 @@ void write_file_atomically(const std::string& path, const std::string& text) {
         if (ec) throw OutputError(path + ": cannot create the directory: " + ec.message());
     }
     const fs::path temporary = temporary_for(target);
-    const InFlight guard(temporary.string());
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) throw OutputError(path + ": cannot write: " + reason(errno));
-    int error = write_all(fd, text);
+    int fd = -1;
+    int error = 0;
+    const InFlight guard(temporary.string(), fd, error);
+    if (fd < 0) throw OutputError(path + ": cannot write: " + reason(error));
+    error = write_all(fd, text);
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
     if (error != 0) {

@@ -10,6 +10,7 @@
 #include "core/complex_klu.hpp"
 #include "core/convergence.hpp"
 #include "core/errors.hpp"
+#include "core/gauss_collocation_predictor.hpp"
 #include "core/sparse_lu.hpp"
 #include "core/stage_iteration.hpp"
 #include "core/time_stepping.hpp"
@@ -97,7 +98,8 @@ StageTransform transform_of(const Eigen::MatrixXd& A) {
 // are sized once; both KLUs (real and complex) keep their pivot orders and refactor in place.
 class GaussStepper {
   public:
-    GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton);
+    GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton,
+                 bool use_previous);
     // From the problem's step start (q_n, v_n, v˙_n) at time t to t + h; on success the problem's
     // iterate is the step end (q_{n+1}, v_{n+1}, an extrapolated v˙_{n+1}), not yet accepted.
     NewtonOutcome step(double t, double h);
@@ -106,9 +108,13 @@ class GaussStepper {
     // Iteration matrices made (each: three assemblies, a complex and, for s = 3, a real
     // factorization).
     long factorizations() const { return factorizations_; }
+    // The problem's step start is no longer the end of the last converged step (a step rejected,
+    // a state restored): the next step starts from the Taylor polynomial.
+    void forget() { previous_h_ = 0.0; }
 
   private:
     void predict(double h);
+    void extrapolate(double h);
     // The iteration matrix at the stage mean of Z_ (zero: the step start) and t_mid.
     bool factor(double t_mid, double h);
     bool refactor(double t, double h);
@@ -123,7 +129,10 @@ class GaussStepper {
     GaussLegendre tableau_;
     StageTransform transform_;
     NewtonSettings newton_;
-    Eigen::VectorXd extrapolate_;  // ℓ_j(1): the stage polynomial's value at the step end
+    Eigen::VectorXd extrapolate_;   // ℓ_j(1): the stage polynomial's value at the step end
+    bool use_previous_;             // run_gauss_collocation's stage_predictor
+    std::vector<VecX> Z_previous_;  // the last converged step's stages
+    double previous_h_ = 0.0;       // its step (0: none, or not the problem's step start)
     int n_ = 0;
     VecX v_n_, vd_n_, r_, work_, gr_, xr_;
     VecX delta1_, v1_, vd1_;  // the step end
@@ -142,11 +151,13 @@ class GaussStepper {
     long factorizations_ = 0;
 };
 
-GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton)
+GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton,
+                           bool use_previous)
     : problem_(problem),
       tableau_(GaussLegendre::of(stages)),
       transform_(transform_of(tableau_.A)),
       newton_(newton),
+      use_previous_(use_previous),
       n_(problem.size()) {
     const int s = tableau_.stages;
     extrapolate_.resize(s);
@@ -161,16 +172,51 @@ GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const Newton
          {&v_n_, &vd_n_, &r_, &gr_, &xr_, &delta1_, &v1_, &vd1_, &z_mean_, &v_mean_, &l_mean_}) {
         v->setZero(n_);
     }
-    for (auto* v : {&Z_, &K_, &V_, &L_, &R_, &dZ_, &best_Z_}) v->assign(s, VecX::Zero(n_));
+    for (auto* v : {&Z_, &K_, &V_, &L_, &R_, &dZ_, &best_Z_, &Z_previous_}) {
+        v->assign(s, VecX::Zero(n_));
+    }
     gc_.setZero(n_);
     xc_.setZero(n_);
 }
 
-// Δ_i = c_i h v_n + ½ (c_i h)² v˙_n: the Taylor polynomial of the motion (dexp ≈ I).
+// The starting stages: the last converged step's collocation polynomial extrapolated when that
+// step ended at this step's start and was no shorter; else Δ_i = c_i h v_n + ½ (c_i h)² v˙_n, the
+// Taylor polynomial of the motion (dexp ≈ I).
 void GaussStepper::predict(double h) {
+    if (use_previous_ && previous_h_ > 0.0 && h <= previous_h_) {
+        extrapolate(h);
+        return;
+    }
     for (int i = 0; i < tableau_.stages; ++i) {
         const double ch = tableau_.c(i) * h;
         Z_[i] = ch * v_n_ + (0.5 * ch * ch) * vd_n_;
+    }
+}
+
+// Hairer & Wanner, "Solving ODEs II", §IV.8 (starting values): the last step's collocation
+// polynomial u (degree s, u(0) = 0 at its start, u(c_j) = its stage Δ_j, in its time unit h_p)
+// evaluated at this step's stage times, 1 + c_i h / h_p, and moved to this step's chart:
+// Δ_i = u(1 + c_i h / h_p) − u(1). The chart change log(exp(u) exp(−u(1))) = u − u(1) − ½ u × u(1)
+// + … on the rotation rows; u × u(1) vanishes to leading order (both ∝ the angular velocity), so
+// the neglected term is of the order of the extrapolation error itself. Only the iterate's start
+// changes: the converged stages are the same within the Newton tolerance.
+void GaussStepper::extrapolate(double h) {
+    const int s = tableau_.stages;
+    const Eigen::VectorXd& c = tableau_.c;
+    // ℓ_j(x): the Lagrange basis of the nodes {0, c_1, …, c_s} for the node c_j.
+    const auto basis = [&](int j, double x) {
+        double l = x / c(j);
+        for (int m = 0; m < s; ++m) {
+            if (m != j) l *= (x - c(m)) / (c(j) - c(m));
+        }
+        return l;
+    };
+    const double r = h / previous_h_;
+    for (int i = 0; i < s; ++i) {
+        Z_[i].setZero();
+        for (int j = 0; j < s; ++j) {
+            Z_[i] += (basis(j, 1.0 + r * c(i)) - basis(j, 1.0)) * Z_previous_[j];
+        }
     }
 }
 
@@ -324,6 +370,8 @@ NewtonOutcome GaussStepper::iterate(double t, double h) {
         void converged(double rate) {
             g.rate_ = rate;
             g.finish_step(t, h);
+            for (int i = 0; i < g.tableau_.stages; ++i) g.Z_previous_[i] = g.Z_[i];
+            g.previous_h_ = h;
         }
     } stages{*this, t, h, best};
     return iterate_stages(stages, newton_, floor_);
@@ -380,9 +428,9 @@ bool GaussStepper::refactor(double t, double h) {
 class GaussScheme : public StepScheme {
   public:
     GaussScheme(CollocationProblem& problem, int stages, const TimeIntegrationSettings& settings,
-                const NewtonSettings& newton)
+                const NewtonSettings& newton, bool stage_predictor)
         : problem_(problem),
-          stepper_(problem, stages, newton),
+          stepper_(problem, stages, newton, stage_predictor),
           doubling_(settings.tolerance > 0.0),
           length_(settings.length_scale),
           richardson_(std::ldexp(1.0, 2 * stages) - 1.0),
@@ -395,7 +443,7 @@ class GaussScheme : public StepScheme {
         if (!whole.accepted()) return whole;
         problem_.end_step();
         problem_.keep_start(1);
-        problem_.restore_start(0);
+        restore();
         NewtonOutcome first = stepper_.step(t, 0.5 * h);
         if (!first.accepted()) return back(first);
         problem_.end_step();
@@ -414,15 +462,20 @@ class GaussScheme : public StepScheme {
     double local_error(double /*h*/) override {
         return problem_.distance_from_kept(1, length_) / richardson_;
     }
-    void reject() override { problem_.restore_start(0); }
+    void reject() override { restore(); }
     int local_error_order() const override { return order_; }
     int refreshes() const { return stepper_.refreshes(); }
 
   private:
     // A failed half step: back to the accepted state, the failure reported.
     NewtonOutcome back(const NewtonOutcome& failed) {
-        problem_.restore_start(0);
+        restore();
         return failed;
+    }
+    // Back to the accepted state, which is not the end of the stepper's last step.
+    void restore() {
+        problem_.restore_start(0);
+        stepper_.forget();
     }
     static NewtonOutcome worse_of(NewtonOutcome a, const NewtonOutcome& b) {
         a.converged = false;
@@ -457,9 +510,17 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output) {
+    return run_gauss_collocation(problem, stages, settings, newton, on_output, false);
+}
+
+DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
+                                     const TimeIntegrationSettings& settings,
+                                     const NewtonSettings& newton,
+                                     const std::function<void(const TimeStepRecord&)>& on_output,
+                                     bool stage_predictor) {
     require_time_window(settings);
     const double h0 = settings.time_step;
-    GaussScheme scheme(problem, stages, settings, newton);
+    GaussScheme scheme(problem, stages, settings, newton, stage_predictor);
     // The right limit of t_0, as run_generalized_alpha (a load released at t_0).
     constexpr double kRightLimit = 1e-6;
     problem.initialize_acceleration(settings.start_time + kRightLimit * h0);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/potential_hessian.hpp"
 #include "core/sparse_lu.hpp"
 #include "core/time_limit.hpp"
 
@@ -338,15 +339,21 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
     return out;
 }
 
-// The stability of a reported step's state, from the last Jacobian of its Newton solve: the one
-// at the iterate before the final correction, a scaled distance below increment_tolerance from
-// the reported state, so its inertia is the state's unless the state is critical to that
-// precision. A substituted solver (KINSOL) leaves no Jacobian here.
-StaticStability stability_of_step(const StaticSystem& problem, const NewtonWorkspace& workspace,
+// The stability of a reported step's state: the inertia of the Hessian of the potential energy
+// at the state when the system forms one (conservative loads); otherwise that of the last
+// Jacobian of its Newton solve — the one at the iterate before the final correction, a scaled
+// distance below increment_tolerance from the reported state — which is the Hessian only where it
+// is symmetric (the straight states; docs/solver-convergence.md, Stability of the equilibrium). A
+// substituted solver (KINSOL) leaves no Jacobian here.
+StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& workspace,
                                   const StepSolver& solver) {
+    auto* potential = dynamic_cast<PotentialSystem*>(&problem);
+    const PotentialHessian H = potential ? potential->potential_hessian()
+                                         : PotentialHessian{{}, 0.0, "no potential energy formed"};
+    if (H.unavailable.empty()) return assess_potential_stability(H, problem.increment_scale());
     StaticStability s;
     if (solver) {
-        s.reason = "the step solver keeps no tangent to assess";
+        s.reason = "the step solver keeps no tangent to assess; " + H.unavailable;
         return s;
     }
     const SparseMatrix& J = workspace.impl->J;
@@ -354,7 +361,9 @@ StaticStability stability_of_step(const StaticSystem& problem, const NewtonWorks
         s.reason = "no Newton solve was made at this step";
         return s;
     }
-    return assess_stability(J, problem.increment_scale());
+    s = assess_stability(J, problem.increment_scale());
+    if (s.assessment == StaticStability::Assessment::not_assessed) s.reason += "; " + H.unavailable;
+    return s;
 }
 
 }  // namespace

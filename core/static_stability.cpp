@@ -1,9 +1,12 @@
 #include "core/static_stability.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+#include "core/potential_hessian.hpp"
 
 namespace rotbeam {
 
@@ -50,20 +53,36 @@ StaticStability not_assessed(const std::string& why) {
     return s;
 }
 
-}  // namespace
-
-StaticStability assess_stability(const SparseMatrix& tangent, const VecX& increment_scale) {
+// The inertia of `tangent`; a pivot within `scaled_error` (or n ε of the largest scaled entry)
+// of zero is `critical`.
+StaticStability scaled_inertia(const SparseMatrix& tangent, const VecX& increment_scale,
+                               double scaled_error) {
     const SparseMatrix scaled =
         increment_scale.asDiagonal() * tangent * increment_scale.asDiagonal();
     const SparseMatrix transposed = scaled.transpose();
     const double norm = max_abs(scaled);
     if (!(norm > 0.0) || !std::isfinite(norm))
         return not_assessed("the tangent is zero or not finite");
+    // A difference Hessian whose own error (inter-node asymmetry, and the step-halving difference
+    // of its central differences) exceeds kDifferenceLimit of its largest entry is not a matrix
+    // whose pivot signs can be trusted: central differences at h = ε^(1/3) of a smooth energy
+    // err by ~ε^(2/3) ≈ 4e-11 of the entries (measured 5e-12 … 1e-11; an energy interpolated in
+    // the Euler angles 0.03 rad from gimbal lock erred by 2e-8). The limit leaves 4 decades to
+    // the smooth case.
+    constexpr double kDifferenceLimit = 1e-7;
+    if (scaled_error > kDifferenceLimit * norm) {
+        std::ostringstream s;
+        s.precision(2);
+        s << "the difference Hessian is not accurate (error " << scaled_error / norm
+          << " of its largest entry)";
+        return not_assessed(s.str());
+    }
     // Symmetric to round-off: an asymmetry beyond n ε of the largest scaled entry (the zero
     // threshold of the pivots below) is not round-off of a Hessian's assembly, and Sylvester's
-    // count of its symmetric part is then not a criterion. The straight column measures exactly
-    // 0; deformed states of the displacement formulation measure 4e-7 … 1e-4 and are not assessed
-    // (docs/solver-convergence.md, Limit).
+    // count of its symmetric part is then not a criterion. The straight column's Newton tangent
+    // measures exactly 0; at deformed states it measures 4e-7 … 1e-4 (its residual is not the
+    // energy's gradient), so the driver assesses the potential's Hessian there
+    // (core/potential_hessian.hpp; docs/solver-convergence.md, Stability of the equilibrium).
     const double n_eps = static_cast<double>(scaled.rows()) * kEps;
     const double asymmetry = max_abs(scaled - transposed) / norm;
     if (asymmetry > n_eps) {
@@ -99,7 +118,7 @@ StaticStability assess_stability(const SparseMatrix& tangent, const VecX& increm
     // A pivot below n ε ‖S‖ is at the size of the factorization's round-off: its sign, and so
     // the count, is not known (the threshold at which the dense eigenvalues of the same scaled
     // tangent lose their sign, tests/runs/test_static_stability.cpp).
-    const double tiny = n_eps * norm;
+    const double tiny = std::max(n_eps * norm, scaled_error);
     const VecX& d = ldlt.vectorD();
     StaticStability out;
     int zero = 0;
@@ -121,6 +140,17 @@ StaticStability assess_stability(const SparseMatrix& tangent, const VecX& increm
                                           : StaticStability::Assessment::stable;
     }
     return out;
+}
+
+}  // namespace
+
+StaticStability assess_stability(const SparseMatrix& tangent, const VecX& increment_scale) {
+    return scaled_inertia(tangent, increment_scale, 0.0);
+}
+
+StaticStability assess_potential_stability(const PotentialHessian& hessian,
+                                           const VecX& increment_scale) {
+    return scaled_inertia(hessian.matrix, increment_scale, hessian.scaled_error);
 }
 
 }  // namespace rotbeam

@@ -1,18 +1,20 @@
-// The stability of a converged static equilibrium, read from the inertia of its tangent.
+// The stability of a converged static equilibrium, read from the inertia of a symmetric matrix.
 //
-// At a conservative (dead) load the consistent tangent of the displacement formulation is the
-// Hessian of the potential energy on the free unknowns: symmetric, and the equilibrium is stable
-// when it is positive definite. By Sylvester's law of inertia the number of its negative
+// At conservative loads the equilibrium is stable when the Hessian of the potential energy on the
+// free unknowns is positive definite. By Sylvester's law of inertia the number of its negative
 // eigenvalues, the number of directions in which the energy decreases, is that of any congruent
-// matrix: of S = D ½(J + Jᵀ) D (D the increment scales, which equilibrate displacement and
-// rotation columns) and of the diagonal D_LDL of a sparse LDLᵀ of S (P S Pᵀ = L D_LDL Lᵀ). A
-// negative pivot count is therefore the count of unstable directions, at the cost of one sparse
-// factorization of the Jacobian the Newton solve already has (docs/solver-convergence.md,
-// Stability of the equilibrium).
+// matrix: of S = D H D (D the increment scales, which equilibrate displacement and rotation
+// columns) and of the diagonal D_LDL of a sparse LDLᵀ of S (P S Pᵀ = L D_LDL Lᵀ). A negative pivot
+// count is therefore the count of unstable directions (docs/solver-convergence.md, Stability of
+// the equilibrium). The driver passes the Hessian a system forms (core/potential_hessian.hpp);
+// otherwise the Newton tangent, which is that Hessian only where it is symmetric to round-off
+// (the displacement formulation's straight states: its residual tests with the interpolated
+// spin, and is not the energy's gradient at deformed ones).
 //
-// Not assessed, and said so: a tangent that is not symmetric (follower loads, the mixed
-// formulation), where no energy and no Sylvester count exist; an LDLᵀ that is not accurate (it
-// does not pivot for stability: an indefinite S may grow its entries).
+// Not assessed, and said so: a tangent that is not symmetric (follower loads, dead moments, the
+// mixed formulation, deformed states without a potential), where no Sylvester count is vouched
+// for; an LDLᵀ that is not accurate (it does not pivot for stability: an indefinite S may grow its
+// entries).
 #pragma once
 
 #include <string>

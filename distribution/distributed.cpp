@@ -15,9 +15,9 @@
 #include "distribution/study_registry.hpp"
 #include "distribution/sweep_runs.hpp"
 #include "runs/catalog.hpp"
+#include "runs/estimate_cost.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
-#include "runs/run_cost.hpp"
 
 namespace rotbeam::cli {
 
@@ -32,7 +32,7 @@ struct StudyCost {
     double quick, full;
 };
 constexpr StudyCost kStudyCosts[] = {
-    {"manufactured-time", 42.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
+    {"manufactured-time", 21.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
     {"speed-accuracy", 120.0, 600.0},        {"joined-beam-dynamics", 60.0, 1200.0},
     {"joined-beam-agreement", 30.0, 1200.0}, {"free-vibration-time", 20.0, 300.0},
 };
@@ -50,7 +50,8 @@ double whole_study_seconds(const std::string& name, bool quick) {
 double study_run_seconds(const StudyRun& run) {
     if (run.kind == StudyRun::Kind::continuum_reference) return kContinuumReferenceSeconds;
     try {
-        return modelled_seconds(build_model(run.spec));
+        return modelled_seconds(build_model(run.spec),
+                                run.kind == StudyRun::Kind::estimated_case_run);
     } catch (const InputError&) {
         return kFixedSeconds;  // a combination that does not exist: refused at once
     }

@@ -11,6 +11,7 @@
 
 #include "benches/study_speed.hpp"
 #include "core/errors.hpp"
+#include "distribution/study_help.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 #include "studies/studies.hpp"
@@ -31,6 +32,62 @@ const std::vector<std::pair<std::string, StudyFunction>>& static_studies() {
         {"joined-beam-agreement", study_joined_beam_agreement},
     };
     return table;
+}
+
+namespace {
+
+// One line per registered study for `rotbeam study --help` (docs/studies.md has each in full).
+struct StudySummary {
+    const char* name;
+    const char* summary;
+};
+constexpr StudySummary kStudySummaries[] = {
+    {"convergence",
+     "h- and p-refinement of every combination on the roll-up, the 45° bend and the precessing "
+     "helix: observed orders against the exact solution or the continuum reference"},
+    {"singularity",
+     "every combination and interpolation on the roll-up to λ = 4 and the helices to κL = 4π: "
+     "the largest rotation reached and how each run stops"},
+    {"extremes",
+     "slenderness 10 … 1e5 (shear locking) and loads down to 1e-10 of the benchmark's against "
+     "the linear Timoshenko oracle; Newton at the extremes"},
+    {"manufactured-time",
+     "observed orders in time of every integrator, and in space, against the manufactured "
+     "motion"},
+    {"free-vibration-time",
+     "the time integrators on the undamped free vibration: observed orders per component and "
+     "the energy drift"},
+    {"effectivity",
+     "estimated / true error of every estimate over refinement sequences, every combination, "
+     "on the roll-up, the manufactured rod, the 45° bend, the precessing helix and the joined "
+     "beam's frequencies; the band [0.5, 2] where asymptotic, and the estimator failures"},
+    {"speed-accuracy",
+     "per combination the cheapest discretization of each bench target, its time against its "
+     "error, and the Pareto front"},
+    {"joined-beam-modal", "frequency convergence of the joined beam, every combination"},
+    {"joined-beam-dynamics",
+     "the joined beam's 0–2 s response, dead and follower load: error against CPU time across "
+     "Δt and IDA tolerances (run by name, not by the suite)"},
+    {"joined-beam-agreement",
+     "the mixed and displacement formulations' 0–2 s joined-beam responses at converged Δt and "
+     "mesh agree (run by name, not by the suite)"},
+};
+
+}  // namespace
+
+std::string study_help_text() {
+    std::string text =
+        "Studies, written to --out (study-NAME.md, .json, figures; docs/studies.md). `rotations`: "
+        "sweep the rotation angle from 0 to 4π about a generic axis for every parameterization: "
+        "parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference errors, and where each "
+        "is defined (to --json).";
+    for (const std::string& name : study_names()) {
+        const auto* s = std::find_if(std::begin(kStudySummaries), std::end(kStudySummaries),
+                                     [&](const StudySummary& e) { return name == e.name; });
+        ROTBEAM_VERIFY(s != std::end(kStudySummaries), "study_help_text: no summary of " + name);
+        text += " `" + name + "`: " + s->summary + ".";
+    }
+    return text + " `all`: every one of them.";
 }
 
 std::vector<std::string> study_names() {

@@ -23,10 +23,10 @@
 #include "reports/report.hpp"
 #include "runs/accuracy_run.hpp"
 #include "runs/catalog.hpp"
+#include "runs/estimate_cost.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 #include "runs/run_case.hpp"
-#include "runs/run_cost.hpp"
 
 namespace rotbeam::cli {
 
@@ -97,8 +97,8 @@ std::vector<PlannedRun> modal_variants(const std::string& name, const std::strin
     return variants;
 }
 
-// The cost model's expected time of the run (run_cost.hpp); a combination that does not exist
-// for the case costs only the fixed part.
+// The cost model's expected time of the run (run_cost.hpp), its estimate included when it has
+// one; a combination that does not exist for the case costs only the fixed part.
 double run_cost(const PlannedRun& run) {
     std::vector<std::string> overrides = {"discretization.rotation=" + run.rotation,
                                           "discretization.formulation=" + run.formulation};
@@ -108,7 +108,7 @@ double run_cost(const PlannedRun& run) {
         if (run.elements_per_member > 0) {
             for (Member& m : model.members) m.elements = run.elements_per_member;
         }
-        return modelled_seconds(model);
+        return modelled_seconds(model, run.estimate && model.analysis.estimate);
     } catch (const InputError&) {
         return kFixedSeconds;
     }

@@ -1,5 +1,6 @@
 // Dynamic and modal analyses of the displacement formulation (analyses.hpp). This file
 // holds the parameterization switch for them, as make_problem.cpp does for statics.
+#include <cmath>
 #include <iostream>
 
 #include "analyses.hpp"
@@ -15,6 +16,8 @@
 #include "formulations/displacement/displacement_dynamics.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/displacement/gyroscopic_modal.hpp"
+#include "formulations/mixed/mixed_modal.hpp"
 #include "frame_recorder.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
@@ -70,16 +73,48 @@ std::vector<Vec6> node_amplitudes(const form::Mesh& mesh, const VecX& shape) {
     return out;
 }
 
+// Modes of M ẍ + G ẋ + K x = 0 about a state at rest in the turning frame, from the first-order
+// pencil (formulations/displacement/gyroscopic_modal.hpp) by the shift-invert Arnoldi of the
+// mixed formulation's modal analysis; each mode's shape is the displacement half of its
+// eigenvector, phase removed (largest component real), real part. `add_mode(shape, mode)`.
+template <class AddMode>
+void gyroscopic_modes(const form::GyroscopicPencil& pencil, int count, const AddMode& add_mode,
+                      nlohmann::json& result) {
+    const form::DaeModalSolution s = form::solve_dae_modal(pencil.A, pencil.B, count);
+    const Eigen::Index n = pencil.scaling.size();
+    for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
+        VecXc x = pencil.scaling.cast<std::complex<double>>().asDiagonal() * s.shapes[i].head(n);
+        Eigen::Index peak = 0;
+        x.cwiseAbs().maxCoeff(&peak);
+        if (std::abs(x[peak]) > 0.0) x *= std::abs(x[peak]) / x[peak];
+        const std::complex<double> mode(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]);
+        add_mode(VecX(x.real()), {s.frequencies_hz[i], s.growth_rates[i], mode, s.checks[i]});
+        result["modes"].back()["growth_rate"] = s.growth_rates[i];
+        const std::complex<double> omega2 = -mode * mode;
+        result["modes"].back()["omega_squared"] = {omega2.real(), omega2.imag()};
+    }
+    result["modal"] = {
+        {"solver",
+         "first-order form of (s²M + sG + K)φ = 0, shift-invert Arnoldi on "
+         "(A + σB)⁻¹B, σ = 0, sparse LU"},
+        {"arnoldi_vectors", s.arnoldi_vectors},
+        {"rotating_frame",
+         "modes about the steady rotating state: centrifugal stiffening and spin softening in K, "
+         "the Coriolis (gyroscopic) coupling in G (docs/rotating-frame.md)"}};
+}
+
 template <class P>
 void modal(const Model& model, bool trace, nlohmann::json& result) {
     form::DisplacementStatics<P> problem(model);
     result["dofs"] = problem.size();
+    double lambda = 0.0;  // the load factor of the state (none: the undeformed state at λ = 0)
     if (model.analysis.modal.about_static_state && has_static_load(model)) {
         std::vector<double> loads = model.analysis.statics.load_factors;
         if (loads.empty()) loads = {1.0};
         const StaticSolve solve =
             solve_static(model, problem, loads, StaticRecording{}, trace, result);
         if (!static_state_usable(solve.outcome, result)) return;
+        lambda = loads.back();
     }
     VecX r;
     SparseMatrix K;
@@ -87,31 +122,43 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     const form::Mesh mass_mesh = form::build_mass_mesh(model);
     const SparseMatrix M = form::assemble_mass_matrix(
         model, mass_mesh, [&](int node) { return P::matrix(problem.node_rotation(node)); });
-    const form::ModalSolution s = form::solve_modal(K, M, model.analysis.modal.modes);
     result["modes"] = nlohmann::json::array();
     std::vector<CheckedMode> checked;
-    for (size_t i = 0; i < s.pairs.size(); ++i) {
-        const form::ModalPair& p = s.pairs[i];
-        result["modes"].push_back(mode_json(model, problem.mesh(), s.shapes[i], p.frequency_hz));
-        result["modes"].back()["omega_squared"] = {p.omega2.real(), p.omega2.imag()};
+    // One mode into `modes` (points, stations, frames) and `checked`.
+    const auto add_mode = [&](const VecX& shape, const CheckedMode& mode) {
+        result["modes"].push_back(mode_json(model, problem.mesh(), shape, mode.frequency_hz));
         std::vector<NodeDisplacement> nodes;
         for (const form::MeshNode& n : problem.mesh().nodes) {
-            nodes.push_back({n.x0, n.dof < 0 ? Vec3::Zero() : Vec3(s.shapes[i].segment<3>(n.dof))});
+            nodes.push_back({n.x0, n.dof < 0 ? Vec3::Zero() : Vec3(shape.segment<3>(n.dof))});
         }
         result["modes"].back()["stations"] = station_displacements(model, nodes);
-        if (frames_recorded()) record_frames(problem, node_amplitudes(problem.mesh(), s.shapes[i]));
-        checked.push_back({p.frequency_hz, p.growth_rate,
-                           std::complex<double>(p.growth_rate, 2.0 * kPi * p.frequency_hz),
-                           p.check});
-    }
-    result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
-                       {"stiffness_asymmetry", s.asymmetry},
-                       {"mass_rule", choice_name(model.discretization.displacement.mass_rule)}};
-    if (model.rotating_frame.active()) {
-        result["modal"]["rotating_frame"] =
-            "modes of K(Ω) − ω²M about the steady rotating state: centrifugal stiffening and spin "
-            "softening in K, Coriolis (gyroscopic) coupling 2Ω × u˙ not included "
-            "(docs/rotating-frame.md)";
+        if (frames_recorded()) record_frames(problem, node_amplitudes(problem.mesh(), shape));
+        checked.push_back(mode);
+    };
+    // The frame's Ω² is scaled by the load factor of the state, as in the statics.
+    if (model.rotating_frame.active() && lambda != 0.0) {
+        if (lambda < 0.0) {
+            throw InputError(
+                "analysis.load_factors: a modal analysis in a rotating frame needs a "
+                "positive last load factor (it scales Ω²)");
+        }
+        const Vec3 omega = std::sqrt(lambda) * model.rotating_frame.angular_velocity;
+        const SparseMatrix G = form::gyroscopic_matrix(M, omega);
+        gyroscopic_modes(form::gyroscopic_pencil(K, G, M), model.analysis.modal.modes, add_mode,
+                         result);
+        result["modal"]["mass_rule"] = choice_name(model.discretization.displacement.mass_rule);
+    } else {
+        const form::ModalSolution s = form::solve_modal(K, M, model.analysis.modal.modes);
+        for (size_t i = 0; i < s.pairs.size(); ++i) {
+            const form::ModalPair& p = s.pairs[i];
+            add_mode(s.shapes[i],
+                     {p.frequency_hz, p.growth_rate,
+                      std::complex<double>(p.growth_rate, 2.0 * kPi * p.frequency_hz), p.check});
+            result["modes"].back()["omega_squared"] = {p.omega2.real(), p.omega2.imag()};
+        }
+        result["modal"] = {{"solver", s.symmetric ? "symmetric (K symmetric to round-off)" : "QZ"},
+                           {"stiffness_asymmetry", s.asymmetry},
+                           {"mass_rule", choice_name(model.discretization.displacement.mass_rule)}};
     }
     result["counters"] = counters_json(problem.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);

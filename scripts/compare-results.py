@@ -42,6 +42,7 @@ EXCLUDED = {
     "wall_ratio": "error estimate: the companions' wall time over the run's (estimate.cost)",
     "repeats": "speed study: how many repeats fit its time budget",
     "front": "speed study: the Pareto front of time against error (which points, in what order)",
+    "winners": "speed study: the cheapest run reaching each accuracy level (chosen by its time)",
 }
 
 TEMPORARY_MARKER = ".rotbeam-tmp."

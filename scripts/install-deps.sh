@@ -5,7 +5,8 @@
 # report's Markdown to HTML; chromium and python3-websockets run the report's browser test
 # (tests/reports/browser_check.py); python3-meshio reads the ParaView files back in a test;
 # openmpi-bin and libopenmpi-dev give the build its second program, rotbeam-mpi (mpirun -np N
-# rotbeam-mpi suite, docs/distributed-runs.md). Idempotent: `apt-get update` runs only when something must be installed.
+# rotbeam-mpi suite, docs/distributed-runs.md); ccache is CI's compiler cache kept between runs (.ci/run).
+# Idempotent: `apt-get update` runs only when something must be installed.
 set -euo pipefail
 
 packages=(
@@ -15,7 +16,7 @@ packages=(
   gnuplot-nox clang-tidy python3-meshio
   libcmark-gfm-dev libcmark-gfm-extensions-dev
   chromium python3-websockets
-  clang-14 libclang-rt-14-dev llvm-14
+  clang-14 libclang-rt-14-dev llvm-14 ccache
   openmpi-bin libopenmpi-dev
 )
 

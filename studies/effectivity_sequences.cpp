@@ -4,10 +4,12 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/oracles/manufactured.hpp"
 #include "core/oracles/rollup.hpp"
 #include "estimates/accuracy_scale.hpp"
 #include "estimates/estimator_failure.hpp"
 #include "estimates/point_difference.hpp"
+#include "manufactured_rod_case.hpp"
 #include "runs/mode_matching.hpp"
 
 namespace rotbeam::cli {
@@ -60,6 +62,7 @@ Combination modal_reference_combination() {
 
 ReferenceKind reference_of(const std::string& case_name) {
     if (case_name == "cantilever-moment") return ReferenceKind::rollup_exact;
+    if (case_name == kManufacturedRodCase) return ReferenceKind::manufactured_exact;
     if (case_name == "joined-beam") return ReferenceKind::converged_modes;
     return ReferenceKind::continuum;
 }
@@ -72,10 +75,18 @@ json reference_point_json(const Vec3& u, const Mat3& R) {
 
 // The reference state of `point` at load factor `lambda`, null where there is none.
 json reference_point(const EffectivitySequence& s, const std::vector<json>& references,
-                     double length, const std::string& point, double lambda) {
+                     const Model& model, const std::string& point, double lambda) {
     if (s.reference == ReferenceKind::rollup_exact) {
         if (point != "tip") return nullptr;
-        const oracle::RollupState exact = oracle::rollup_tip(length, lambda);
+        const oracle::RollupState exact = oracle::rollup_tip(member_length(model), lambda);
+        return reference_point_json(exact.displacement, exact.rotation);
+    }
+    if (s.reference == ReferenceKind::manufactured_exact) {
+        // The rod lies along +x from the origin: a point's arc length is its x.
+        const int p = model.point_index(point);
+        if (p < 0) return nullptr;
+        const oracle::ManufacturedRod::State exact =
+            manufactured_rod().state(model.points[static_cast<size_t>(p)].position.x(), lambda);
         return reference_point_json(exact.displacement, exact.rotation);
     }
     for (const json& step : references.at(0).value("steps", json::array())) {
@@ -96,14 +107,13 @@ LevelQuantities static_quantities(const EffectivitySequence& s, const json& resu
                                   const std::vector<json>& references) {
     LevelQuantities out;
     const Model model = build_model(s.spec(0));
-    const double length = member_length(model);
     const double floor = estimate::kFailureFloor * estimate::reference_length(model);
     for (const json& step : result.value("steps", json::array())) {
         if (!step.contains("estimate") || !step.contains("points")) continue;
         const double lambda = step["load_factor"].get<double>();
         for (const auto& [point, e] : step["estimate"].items()) {
             if (!e.contains("displacement") || !step["points"].contains(point)) continue;
-            const json ref = reference_point(s, references, length, point, lambda);
+            const json ref = reference_point(s, references, model, point, lambda);
             if (ref.is_null()) continue;
             const estimate::PointDifference d =
                 estimate::point_difference(step["points"][point], ref);
@@ -165,7 +175,7 @@ RunSpec EffectivitySequence::spec(size_t level) const {
 }
 
 std::vector<EffectivitySequence> effectivity_sequences(bool quick) {
-    std::vector<std::string> cases = {"cantilever-moment", "bend-45"};
+    std::vector<std::string> cases = {"cantilever-moment", "bend-45", kManufacturedRodCase};
     if (!quick) cases.insert(cases.end(), {"helix-precessing", "joined-beam"});
     std::vector<EffectivitySequence> out;
     for (const std::string& c : cases) {
@@ -190,6 +200,7 @@ std::vector<EffectivitySequence> effectivity_sequences(bool quick) {
 std::vector<RunSpec> reference_specs(const EffectivitySequence& s) {
     switch (s.reference) {
         case ReferenceKind::rollup_exact:
+        case ReferenceKind::manufactured_exact:
             return {};
         case ReferenceKind::continuum:
             return {RunSpec{s.case_name, {}, {}, 0}};

@@ -2,8 +2,11 @@
 // independent reference × every combination × the formulation's estimate strategy, and the
 // quantities of one level's result against the reference (effectivity_rows.hpp).
 //
-// References: the roll-up's exact tip (core/oracles/rollup.hpp, cantilever-moment), the continuum
-// reference (core/continuum) for the 45° bend and the precessing helix, and for the joined beam's
+// References: the roll-up's exact tip (core/oracles/rollup.hpp, cantilever-moment), the exact
+// state of the static manufactured rod at its interior points (core/oracles/manufactured.hpp,
+// kManufacturedRodCase; its root and tip are clamped and prescribed, exact by construction), the
+// continuum reference (core/continuum) for the 45° bend and the precessing helix, and for the
+// joined beam's
 // frequencies the displacement formulation at convergence (order 8 on 10 elements per member,
 // consistent mass; its distance to order 7 sets the floor of the true error, as in
 // tests/estimates/test_effectivity_modal.cpp).
@@ -18,7 +21,7 @@
 
 namespace rotbeam::cli {
 
-enum class ReferenceKind { rollup_exact, continuum, converged_modes };
+enum class ReferenceKind { rollup_exact, manufactured_exact, continuum, converged_modes };
 
 struct EffectivitySequence {
     std::string case_name;  // catalog name
@@ -36,12 +39,13 @@ struct EffectivitySequence {
     }
 };
 
-// The study's sequences: the quick form (the roll-up and the bend, the quaternion with both
-// formulations, three to four levels) or the full one (every combination, every case).
+// The study's sequences: the quick form (the roll-up, the bend and the manufactured rod, the
+// quaternion with both formulations, three to four levels) or the full one (every combination,
+// every case).
 std::vector<EffectivitySequence> effectivity_sequences(bool quick);
 
 // The runs a sequence's reference needs (a continuum solve, or the converged modal runs):
-// their RunSpecs, the first the reference itself. Empty for the exact roll-up.
+// their RunSpecs, the first the reference itself. Empty for the exact roll-up and manufactured rod.
 std::vector<RunSpec> reference_specs(const EffectivitySequence& s);
 
 // Every estimated quantity of `result` with a reference value: points' displacements and rotations

@@ -3,28 +3,21 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "core/atomic_file.hpp"
+#include "core/child_process.hpp"
 
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// `text` as one word for the shell: single-quoted, each ' written as '\''.
-std::string shell_word(const std::string& text) {
-    std::string s = "'";
-    for (char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return s + "'";
-}
 
 // `text` as a gnuplot string literal: single-quoted, each ' doubled (no escapes are expanded).
 std::string gnuplot_string(const std::string& text) {
@@ -40,13 +33,15 @@ void run_once(const std::string& script, const std::map<std::string, std::string
         fs::temp_directory_path() /
         ("rotbeam-gnuplot-" + std::to_string(::getpid()) + "-" +
          std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".err");
-    // (Built with a stream: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string&&.)
-    std::ostringstream command;
-    command << "gnuplot";
-    for (const auto& [k, v] : vars) command << " -e " << shell_word(k + "=" + gnuplot_string(v));
-    command << " " << shell_word((fs::path(ROTBEAM_REPORTS_DIR) / script).string()) << " 2>"
-            << shell_word(errors.string());
-    const int status = std::system(command.str().c_str());
+    // Run as a child that a stopping rotbeam kills and waits for (core/child_process.hpp), so it
+    // cannot write a figure's file after the temporaries were removed.
+    std::vector<std::string> arguments{"gnuplot"};
+    for (const auto& [k, v] : vars) {
+        arguments.push_back("-e");
+        arguments.push_back(k + "=" + gnuplot_string(v));
+    }
+    arguments.push_back((fs::path(ROTBEAM_REPORTS_DIR) / script).string());
+    const int status = run_child_process(arguments, errors.string());
     std::string last;
     {
         std::ifstream in(errors);

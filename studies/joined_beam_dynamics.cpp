@@ -86,7 +86,7 @@ RunSpec response_spec(const Combination& c, const TimeSetting& s, const Response
     return RunSpec{w.case_name, c, response_overrides(c, s, w), w.elements};
 }
 
-JointResponse joint_response(const nlohmann::json& result) {
+JointResponse joint_response(const nlohmann::json& result, const std::string& point) {
     JointResponse r;
     if (!has_solution(result.value("status", "")) || !converged_steps_exist(result)) return r;
     const auto add = [](History& h, double t, const nlohmann::json& v) {
@@ -97,7 +97,7 @@ JointResponse joint_response(const nlohmann::json& result) {
     };
     for (const auto& step : result["steps"]) {
         const double t = step["time"].get<double>();
-        const nlohmann::json& joint = step["points"]["joint"];
+        const nlohmann::json& joint = step["points"][point];
         add(r.displacement, t, joint["displacement"]);
         add(r.rotation, t, joint["rotation_vector"]);
     }
@@ -222,6 +222,7 @@ nlohmann::json reference_key(const Combination& c, const ResponseWindow& w, doub
         {"integrator", choice_name(richardson ? fixed_step_integrator(c.formulation)
                                               : reference_integrator(c.formulation))}};
     if (!richardson) key["method"] = "finer of two fixed steps";
+    if (w.point != "joint") key["point"] = w.point;  // the joined beam's keys are unchanged
     return key;
 }
 
@@ -319,7 +320,7 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
     ref.cpu_seconds = thread_cpu_seconds() - start;
     ref.version = kGitDescribe;
     ref.how = reference_how(c, w, coarse_step, scheme, "the finer run");
-    const JointResponse hc = joint_response(rc), hf = joint_response(rf);
+    const JointResponse hc = joint_response(rc, w.point), hf = joint_response(rf, w.point);
     if (hc.size() == 0 || hf.size() == 0 || hc.size() != hf.size()) {
         ref.status = "reference runs failed: " + rc.value("status", "") + " / " +
                      rf.value("status", "") + " " + rf.value("message", "").substr(0, 120);

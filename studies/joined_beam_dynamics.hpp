@@ -43,10 +43,11 @@ struct ResponseWindow {
     std::string case_name = "joined-beam-dead";
     double end_time = 2.0;
     double output_interval = 0.002;
-    int elements = 10;      // per member (the paper's mesh)
-    int order = 1;          // displacement element order
-    std::string mass_rule;  // displacement: "" = the case's (consistent); "midpoint" = the
-                            // mixed element's inertia (the cross-formulation check)
+    int elements = 10;            // per member (the paper's mesh)
+    int order = 1;                // displacement element order
+    std::string mass_rule;        // displacement: "" = the case's (consistent); "midpoint" = the
+                                  // mixed element's inertia (the cross-formulation check)
+    std::string point = "joint";  // the case's named point whose histories are measured
 };
 
 ResponseWindow full_window();
@@ -63,8 +64,8 @@ struct JointResponse {
     std::size_t size() const { return displacement.size(); }
 };
 
-// Empty unless the run converged.
-JointResponse joint_response(const nlohmann::json& result);
+// Empty unless the run converged. `point`: the named point (the joined beam's joint by default).
+JointResponse joint_response(const nlohmann::json& result, const std::string& point = "joint");
 History joint_history(const nlohmann::json& result);  // its displacement
 
 // The time error of a response: the larger of its displacement's and its rotation's

@@ -10,6 +10,7 @@
 #include "core/oracles/rollup.hpp"
 #include "core/results.hpp"
 #include "gnuplot.hpp"
+#include "manufactured_rod_case.hpp"
 #include "parameterizations/registry.hpp"
 #include "runs/catalog.hpp"
 #include "runs/continuum_json.hpp"
@@ -25,7 +26,41 @@ std::vector<Combination> all_combinations(bool with_interpolation) {
     return comb::all_combinations(with_interpolation);
 }
 
+oracle::ManufacturedRod manufactured_rod() {
+    oracle::ManufacturedRod rod;
+    rod.stiffness = oracle::manufactured_section();
+    return rod;
+}
+
+namespace {
+
+Model manufactured_rod_model(const RunSpec& spec) {
+    Model model = oracle::manufactured_model(
+        manufactured_rod(), spec.elements > 0 ? spec.elements : 2, kManufacturedRodSteps);
+    const Combination& c = spec.combination;
+    model.discretization.formulation = c.formulation;
+    model.discretization.rotation = c.rotation;
+    if (c.interpolation) model.discretization.displacement.interpolation = *c.interpolation;
+    if (c.wm_map) model.discretization.mixed.wm_map = *c.wm_map;
+    const std::string order_key = "discretization.order=";
+    for (const std::string& o : spec.overrides) {
+        if (o.rfind(order_key, 0) != 0) {
+            throw InputError(std::string(kManufacturedRodCase) + ": " + o +
+                             ": only discretization.order=N applies to the built-in model");
+        }
+        try {
+            model.discretization.order = std::stoi(o.substr(order_key.size()));
+        } catch (const std::exception&) {
+            throw InputError(std::string(kManufacturedRodCase) + ": " + o + ": not an order");
+        }
+    }
+    return model;
+}
+
+}  // namespace
+
 Model build_model(const RunSpec& spec) {
+    if (spec.case_name == kManufacturedRodCase) return manufactured_rod_model(spec);
     const Combination& c = spec.combination;
     std::vector<std::string> overrides = {
         "discretization.formulation=" + std::string(choice_name(c.formulation)),

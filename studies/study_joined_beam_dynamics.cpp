@@ -19,6 +19,7 @@
 
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "dynamic_speed.hpp"
 #include "joined_beam_dynamics.hpp"
 #include "runs/parallel.hpp"
 #include "runs/timing.hpp"
@@ -29,74 +30,6 @@
 namespace rotbeam::cli {
 
 namespace {
-
-struct DynamicPoint {
-    std::string combination, series, scheme;
-    TimeSetting setting;
-    std::string status;
-    double cpu = kNoValue, wall = kNoValue, error = kNoValue;
-    double spent = 0.0;  // CPU time of the first run, also when it failed (the figure's x)
-    int dofs = 0, newton = 0, repeats = 0;
-    long steps = 0;
-};
-
-// One setting: the first run gives the history (and its error); runs cheaper than 1 s CPU are
-// repeated up to 3 times (2 s budget) for the median.
-DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const ResponseWindow& w,
-                           const JointResponse& reference) {
-    DynamicPoint p;
-    p.combination = c.label();
-    p.scheme = s.scheme();
-    p.series = c.label() + "/" + p.scheme;
-    p.setting = s;
-    const RunSpec spec = response_spec(c, s, w);
-    std::vector<double> cpu, wall;
-    nlohmann::json first;
-    for (int i = 0; i < 3; ++i) {
-        const double c0 = thread_cpu_seconds();
-        const Timing t = time_in_process(
-            [&] {
-                nlohmann::json r = run_spec(spec);
-                if (i == 0) first = std::move(r);
-            },
-            1);
-        cpu.push_back(thread_cpu_seconds() - c0);
-        wall.push_back(t.median_seconds);
-        const double spent = std::accumulate(cpu.begin(), cpu.end(), 0.0);
-        if (!has_solution(first.value("status", "")) || cpu.back() > 1.0 || spent > 2.0) break;
-    }
-    p.status = first.value("status", "error");
-    p.dofs = first.value("dofs", 0);
-    p.newton = dynamic_newton_iterations(first);
-    p.steps = dynamic_steps(first);
-    p.repeats = static_cast<int>(cpu.size());
-    p.spent = cpu.front();
-    if (has_solution(p.status)) {
-        p.cpu = median(cpu);
-        p.wall = median(wall);
-        p.error = response_error(joint_response(first), reference);
-    } else {
-        p.status += ": " + first.value("message", "").substr(0, 100);
-    }
-    return p;
-}
-
-nlohmann::json point_json(const DynamicPoint& p) {
-    auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
-    return {{"combination", p.combination},
-            {"integrator", choice_name(p.setting.integrator)},
-            {"scheme", p.scheme},
-            {"time_step", p.setting.time_step},
-            {"tolerance", p.setting.tolerance},
-            {"status", p.status},
-            {"cpu_seconds", num(p.cpu)},
-            {"wall_seconds", num(p.wall)},
-            {"repeats", p.repeats},
-            {"time_error", num(p.error)},
-            {"dofs", p.dofs},
-            {"newton_iterations", p.newton},
-            {"steps", p.steps}};
-}
 
 nlohmann::json reference_json(const ReferenceResponse& r) {
     return {{"how", r.how},
@@ -126,69 +59,9 @@ void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cach
     });
 }
 
-std::string seconds_text(double s) {
-    if (!std::isfinite(s)) return "—";
-    std::ostringstream t;
-    t.precision(3);
-    t << s << " s";
-    return t.str();
-}
-
 }  // namespace
 
 namespace {
-
-// The Pareto front of (CPU time, time error) across every run, its table and data file.
-nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoint>& points,
-                             const std::string& front_file, std::ostringstream& md) {
-    std::vector<double> cost, error;
-    for (const DynamicPoint& p : points) {
-        cost.push_back(p.cpu);
-        error.push_back(p.error);
-    }
-    const std::vector<bool> front = pareto_front(cost, error);
-    std::vector<const DynamicPoint*> on;
-    for (size_t i = 0; i < points.size(); ++i)
-        if (front[i]) on.push_back(&points[i]);
-    std::sort(on.begin(), on.end(),
-              [](const DynamicPoint* a, const DynamicPoint* b) { return a->cpu < b->cpu; });
-    std::ostringstream data;
-    data.precision(10);
-    md << "Pareto front (no other run is both cheaper in CPU time and more accurate):\n\n"
-          "| combination | integrator | Δt / tolerance | steps | Newton | CPU | wall | time error "
-          "|\n"
-          "|---|---|---|---|---|---|---|---|\n";
-    nlohmann::json out = nlohmann::json::array();
-    for (const DynamicPoint* p : on) {
-        data << p->cpu << " " << std::max(p->error, 1e-17) << "\n";
-        md << "| " << p->combination << " | " << p->scheme << " | " << p->setting.label() << " | "
-           << p->steps << " | " << p->newton << " | " << seconds_text(p->cpu) << " | "
-           << seconds_text(p->wall) << " | " << sci(p->error) << " |\n";
-        out.push_back(point_json(*p));
-    }
-    md << "\n";
-    write_text(o, front_file, data.str());
-    return out;
-}
-
-void winners_in_words(const std::vector<DynamicPoint>& points, std::ostringstream& md) {
-    md << "Cheapest run reaching each time-error level (CPU time):\n\n";
-    for (double level : {1e-1, 1e-2, 1e-3, 1e-4}) {
-        const DynamicPoint* best = nullptr;
-        for (const DynamicPoint& p : points) {
-            if (std::isfinite(p.error) && p.error <= level && (!best || p.cpu < best->cpu))
-                best = &p;
-        }
-        md << "- ≤ " << sci(level, 0) << ": ";
-        if (best) {
-            md << best->combination << " with " << best->scheme << " " << best->setting.label()
-               << ", " << seconds_text(best->cpu) << " CPU (error " << sci(best->error) << ")\n";
-        } else {
-            md << "no run reached it\n";
-        }
-    }
-    md << "\n";
-}
 
 void sweep_table(const std::vector<DynamicPoint>& points, std::ostringstream& md) {
     md << "Every run (time error against the combination's own same-mesh reference):\n\n"
@@ -198,8 +71,8 @@ void sweep_table(const std::vector<DynamicPoint>& points, std::ostringstream& md
     for (const DynamicPoint& p : points) {
         md << "| " << p.combination << " | " << p.scheme << " | " << p.setting.label() << " | "
            << markdown_cell(p.status) << " | " << p.dofs << " | " << p.steps << " | " << p.newton
-           << " | " << seconds_text(p.cpu) << " | " << seconds_text(p.wall) << " | " << p.repeats
-           << " | " << sci(p.error) << " |\n";
+           << " | " << cpu_seconds_text(p.cpu) << " | " << cpu_seconds_text(p.wall) << " | "
+           << p.repeats << " | " << sci(p.error) << " |\n";
     }
     md << "\n";
 }
@@ -266,7 +139,8 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
     nlohmann::json refs = nlohmann::json::object();
     const auto reference_row = [&](const ReferenceResponse& r) {
         md << "| " << r.how << " | " << sci(r.step_difference) << " | " << markdown_cell(r.status)
-           << " | " << (r.from_cache ? "cached (" + r.version + ")" : seconds_text(r.cpu_seconds))
+           << " | "
+           << (r.from_cache ? "cached (" + r.version + ")" : cpu_seconds_text(r.cpu_seconds))
            << " |\n";
     };
     for (const auto& [label, r] : same_mesh) {
@@ -295,7 +169,7 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
        << sci(cross) << ".\n"
        << "- Two integrators: mixed (WM) IDA at rtol = atol = " << sci(tight.tolerance, 0) << " ("
        << ida.value("status", "") << ", " << dynamic_steps(ida) << " steps, "
-       << seconds_text(ida_cpu)
+       << cpu_seconds_text(ida_cpu)
        << " CPU) against the mixed Radau reference: " << sci(ida_vs_reference) << ".\n"
        << "- Space error of the paper mesh (" << w.elements
        << " elements per member) against the displacement formulation with order-"
@@ -341,15 +215,6 @@ const char* load_words(const std::string& load) {
                               : "dead joint force 1e5 sin(20t) N (fixed vertical direction)";
 }
 
-// The figure's panel of a run: its formulation and scheme (the parameterizations of one panel
-// give the same errors to 2–3 digits and would hide each other on one set of axes).
-std::string panel_title(const TimeSetting& s, Formulation formulation) {
-    const std::string f(choice_name(formulation));
-    if (s.integrator == Integrator::ida) return f + ", IDA (BDF ≤ 2), tolerances";
-    if (s.integrator == Integrator::generalized_alpha) return f + ", generalized-α ρ∞ = 1, Δt";
-    return f + ", " + s.scheme() + (s.tolerance > 0.0 ? ", tolerances" : ", Δt");
-}
-
 void measure_load(const StudyOptions& o, LoadStudy& l) {
     const ResponseWindow& w = l.window;
     const bool sweep_quick = o.quick || l.quick_sweep;
@@ -364,7 +229,7 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     // Panels in the order of the table: per formulation, its schemes in the sweep's order.
     for (const Formulation f : comb::formulations()) {
         for (const TimeSetting& s : time_settings(f, sweep_quick))
-            l.figure.panel(panel_title(s, f));
+            l.figure.panel(dynamic_panel_title(s, f));
     }
     // Every (combination, setting) run, measured by a pool of threads (each run single-threaded,
     // its cost its own thread's CPU time), kept in the order of the list.
@@ -404,11 +269,11 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
             auto& [setting, series] = by_scheme.try_emplace(s.scheme(), s, Series{}).first->second;
             series.label = p.series;
             series.add(s.tolerance > 0.0 ? s.tolerance : s.time_step, p.dofs, p.cpu, p.error);
-            if (!std::isfinite(p.error)) l.figure.add_failure(panel_title(s, f), p.spent);
+            if (!std::isfinite(p.error)) l.figure.add_failure(dynamic_panel_title(s, f), p.spent);
         }
         for (const auto& [scheme, entry] : by_scheme) {
             const auto& [s, series] = entry;
-            l.figure.add(panel_title(s, f),
+            l.figure.add(dynamic_panel_title(s, f),
                          write_series(o,
                                       "data/joined_beam_dynamic_" + l.load + "_" +
                                           std::to_string(l.figure.files.size()) + ".dat",
@@ -432,12 +297,12 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     l.json["references"] = reference_checks(o, sweep_quick, w, l.same_mesh, md);
     l.front_file = "data/joined_beam_dynamic_front_" + l.load + ".dat";
     l.json["front"] = dynamic_front(o, points, l.front_file, md);
-    winners_in_words(points, md);
+    l.json["winners"] = winners_in_words(points, md);
     md << "![joined-beam-dynamics-" << l.load << ".png](joined-beam-dynamics-" << l.load
        << ".png)\n\n";
     sweep_table(points, md);
     l.json["points"] = nlohmann::json::array();
-    for (const DynamicPoint& p : points) l.json["points"].push_back(point_json(p));
+    for (const DynamicPoint& p : points) l.json["points"].push_back(dynamic_point_json(p));
 }
 
 }  // namespace
@@ -503,20 +368,20 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
                           {"follower_vs_dead", load_difference},
                           {"loads", nlohmann::json::object()}};
     for (LoadStudy& l : loads) {
-        plot_panels(
-            o, l.figure,
-            {{"xcol", "3"},
-             {"ycol", "4"},
-             {"xlabel", "thread CPU time of the run, median of repeats [s]"},
-             {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
-             {"plottitle", "Joined beam, " + l.load + " load, 0–" + seconds_text(base.end_time) +
-                               ": time error vs CPU time, one panel per formulation and "
-                               "integrator, the Pareto front of all runs in every panel"},
-             {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
-             {"logx", "1"},
-             {"logy", "1"},
-             {"extra", out_path(o, l.front_file)},
-             {"extratitle", "Pareto front (all runs)"}});
+        plot_panels(o, l.figure,
+                    {{"xcol", "3"},
+                     {"ycol", "4"},
+                     {"xlabel", "thread CPU time of the run, median of repeats [s]"},
+                     {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
+                     {"plottitle", "Joined beam, " + l.load + " load, 0–" +
+                                       cpu_seconds_text(base.end_time) +
+                                       ": time error vs CPU time, one panel per formulation and "
+                                       "integrator, the Pareto front of all runs in every panel"},
+                     {"outbase", out_path(o, "joined-beam-dynamics-" + l.load)},
+                     {"logx", "1"},
+                     {"logy", "1"},
+                     {"extra", out_path(o, l.front_file)},
+                     {"extratitle", "Pareto front (all runs)"}});
         md << l.md.str();
         out["loads"][l.load] = l.json;
     }

@@ -16,6 +16,7 @@
 #include "core/errors.hpp"
 #include "core/results.hpp"
 #include "distribution/distributed.hpp"
+#include "distribution/study_help.hpp"
 #include "distribution/study_registry.hpp"
 #include "estimates/stated_accuracy.hpp"
 #include "parameterizations/registry.hpp"
@@ -499,14 +500,7 @@ int command_study(const Args& args) {
         "NAME",
         1,
         1,
-        "Studies. `rotations`: sweep the rotation angle from 0 to 4π about a generic axis for "
-        "every "
-        "parameterization: parameter norm, σ_min(H), ‖H⁺‖, round-trip and finite-difference "
-        "errors, and where each is defined. `convergence`, `singularity`, `extremes`, "
-        "`speed-accuracy`: the static studies of docs/studies.md; `joined-beam-modal` (frequency "
-        "convergence), `joined-beam-dynamics` (0–2 s response, dead and follower load: error "
-        "vs CPU time across Δt and IDA tolerances); `all`: every one of them. Written to --out "
-        "(study-NAME.md, .json, figures).",
+        study_help_text(),
         {{"json", "FILE", "write the study JSON to FILE (rotations; default: standard output)"},
          {"samples", "N", "angles in the sweep, 2 to 20000 (default 721, rotations)"},
          {"out", "DIR", "output folder of the static studies (default out)"},

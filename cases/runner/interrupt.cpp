@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/atomic_file.hpp"
+#include "core/child_process.hpp"
 
 namespace rotbeam::cli {
 
@@ -21,6 +22,9 @@ bool ignored_by_parent(int signal) {
 }
 
 [[noreturn]] void stop(int signal) {
+    // The children first: a gnuplot still drawing would otherwise create a figure's temporary
+    // after they were removed.
+    stop_child_processes();
     stop_writes_and_remove_temporaries();
     const std::string line = std::string("\nrotbeam: stopped by SIG") + sigabbrev_np(signal) +
                              "; finished results are kept, no partial file was left\n";

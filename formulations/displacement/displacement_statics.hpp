@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/model.hpp"
+#include "core/potential_hessian.hpp"
 #include "core/static_state.hpp"
 #include "formulations/displacement/calculate_rotating_frame_forces.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
@@ -34,7 +35,7 @@
 namespace rotbeam::form {
 
 template <param::RotationParameterization P>
-class DisplacementStatics : public StaticProblem {
+class DisplacementStatics : public StaticProblem, public PotentialSystem {
   public:
     using Params = param::Params<P::kSize>;
 
@@ -53,6 +54,11 @@ class DisplacementStatics : public StaticProblem {
     bool start_from(const NodalField& field) override;
 
     void set_load_factor(double lambda) override;
+    // The potential energy, its gradient (the Galerkin one, not the residual) and Hessian
+    // (displacement_statics_energy.hpp).
+    std::optional<double> potential_energy() override;
+    PotentialHessian potential_hessian() override;
+    bool potential_gradient(VecX& gradient);
     // Dynamics: every load multiplied by its own time function at t (gravity by 1), λ = 1; the
     // residual scale stays the one of λ = 1. Prescribed motion is not time-dependent here (the
     // dynamic problem rejects non-zero prescribed motion).
@@ -175,6 +181,8 @@ class DisplacementStatics : public StaticProblem {
     void distributed_load(const MeshElement& e, const QuadraturePoint& qp, const Mat3& R,
                           bool jacobian, Vec6& f, Eigen::Matrix<double, 6, 3>& df_dpsi);
     void assemble_point_loads(VecX& r, SparseMatrix* J);
+    std::string no_potential_reason() const;
+    bool element_energy(int element, double& energy, VecX& gradient);
     // The steady rotating frame's inertial force at one quadrature point (zero without one).
     RotatingFrameForces rotating_frame_forces(const MeshElement& e, const QuadraturePoint& qp,
                                               const double* N, const Mat3& R);

@@ -7,7 +7,7 @@
 #include <boost/test/unit_test.hpp>
 #include <vector>
 
-#include "core/gauss_collocation.hpp"
+#include "core/gauss_collocation_predictor.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/so3.hpp"
 #include "core/static_driver.hpp"
@@ -24,10 +24,12 @@ struct TipHistory {
 };
 
 // The time scheme: `stages` > 0 the Gauss–Legendre collocation with that many stages, else
-// generalized-α with `rho_infinity`.
+// generalized-α with `rho_infinity`; `stage_predictor` as
+// run_gauss_collocation's (core/gauss_collocation_predictor.hpp).
 struct TimeScheme {
     int stages = 0;
     double rho_infinity = 1.0;
+    bool stage_predictor = true;
 };
 
 // Outputs every `output` (0: every step); the energy recorded at each when `record_energy`.
@@ -51,9 +53,10 @@ TipHistory simulate(const Model& model, TimeScheme scheme, double dt, double end
     const auto on_output = [&](const TimeStepRecord&) {
         if (record_energy) h.energy.push_back(d.energy().total());
     };
-    const DynamicOutcome out = scheme.stages > 0
-                                   ? run_gauss_collocation(d, scheme.stages, ts, newton, on_output)
-                                   : run_generalized_alpha(d, ts, newton, on_output);
+    const DynamicOutcome out =
+        scheme.stages > 0
+            ? run_gauss_collocation(d, scheme.stages, ts, newton, on_output, scheme.stage_predictor)
+            : run_generalized_alpha(d, ts, newton, on_output);
     BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
     const int tip = model.point_index("tip");
     h.u = d.point_state(tip).displacement;

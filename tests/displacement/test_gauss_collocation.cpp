@@ -115,11 +115,13 @@ BOOST_AUTO_TEST_CASE(a_contracting_simplified_newton_is_not_stalled_at_round_off
 }
 
 // Every accepted stage solve of the joined beam (dead load, Gauss 2, case step 1 ms, 0–0.1 s,
-// default tolerances 1e-12) ends at a scaled residual ≤ 1e-11. Bound: continuing the simplified
-// Newton past each stall of 0–2 s, the residual reached ≤ 1.34e-12 (median 5.8e-13) on every
-// step, so the attainable floor is ~1e-12; 10× that leaves room for the floor's scatter between
-// iterations and still fails the rule written for full Newton, which accepted 9.1e-10 at
-// t = 0.055 s (and up to 3.75e-9 over 0–2 s) while the iteration was still contracting.
+// default tolerances 1e-12) is accepted either by the contraction test (core/stage_iteration.hpp:
+// its error bound θ/(1 − θ) η ≤ 1e-12 in place of the residual) or at a scaled residual ≤ 1e-11.
+// Bound: continuing the simplified Newton past each stall of 0–2 s, the residual reached
+// ≤ 1.34e-12 (median 5.8e-13) on every step, so the attainable floor is ~1e-12; 10× that leaves
+// room for the floor's scatter between iterations and still fails the rule written for full
+// Newton, which accepted 9.1e-10 at t = 0.055 s (and up to 3.75e-9 over 0–2 s) while the
+// iteration was still contracting.
 BOOST_AUTO_TEST_CASE(gauss_stage_solves_stall_only_at_the_attainable_floor) {
     Model m = load_case(std::string(ROTBEAM_SOURCE_DIR) + "/cases/joined-beam-dead.yaml");
     form::DisplacementDynamics<param::Quaternion> d(m);
@@ -132,21 +134,28 @@ BOOST_AUTO_TEST_CASE(gauss_stage_solves_stall_only_at_the_attainable_floor) {
     const DynamicOutcome out = run_gauss_collocation(d, 2, ts, newton, {});
     BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
     BOOST_TEST(out.steps == 100);
-    // The last iteration printed for each step is the accepted one.
-    const std::regex line(R"(stage iteration (\d+): residual (\S+),)");
+    // The accepting iteration of each step says by which criterion.
+    const std::regex line(
+        R"(stage iteration \d+: residual (\S+), correction \S+, accepted: (\S+))");
     std::istringstream in(trace.str());
     std::string l;
-    double worst = 0.0, last = 0.0;
-    int steps = 0;
+    double worst = 0.0;
+    int steps = 0, contracted = 0;
     std::smatch match;
     while (std::getline(in, l)) {
         if (!std::regex_search(l, match, line)) continue;
-        if (match[1] == "1" && steps++ > 0) worst = std::max(worst, last);
-        last = std::stod(match[2]);
+        ++steps;
+        if (match[2] == "contraction") {
+            ++contracted;
+            continue;
+        }
+        worst = std::max(worst, std::stod(match[1]));
     }
-    worst = std::max(worst, last);
     BOOST_TEST(steps == 100);
-    std::printf("joined beam, Gauss 2, 0-0.1 s: largest accepted stage residual %.3e\n", worst);
+    std::printf(
+        "joined beam, Gauss 2, 0-0.1 s: %d steps accepted by contraction, the others at a "
+        "stage residual <= %.3e\n",
+        contracted, worst);
     BOOST_TEST(worst <= 1e-11);
 }
 
@@ -162,6 +171,39 @@ BOOST_AUTO_TEST_CASE(the_output_interval_does_not_change_the_motion) {
     BOOST_TEST(every_step.newton_iterations == sparse.newton_iterations);
     BOOST_TEST((every_step.u - sparse.u).cwiseAbs().maxCoeff() == 0.0);
     BOOST_TEST((every_step.R - sparse.R).cwiseAbs().maxCoeff() == 0.0);
+}
+
+// The starting stages extrapolated from the previous step's collocation polynomial (Hairer &
+// Wanner §IV.8; core/gauss_collocation_predictor.hpp) against the Taylor start at the step start
+// (the default), on the same run: the free vibration at 1 ms (the coarse mesh of
+// free_vibration(), Newton tolerances 1e-14), 0–0.2 s, the stage iterations summed over the 200
+// steps (an instrumented count, not a timing). Measured 2026-11-27: 2 stages 748 (extrapolated) /
+// 693 (Taylor), 3 stages 692 / 705: the extrapolation saves nothing here, because what the first
+// iterations remove is the axial and shear modes' content (ωh ≈ 10 at 1 ms, ~2e-11 m, above the
+// tolerance), which no polynomial extrapolates; hence the Taylor start is the default, and this
+// test asserts that the default is not the worse start by more than 5 % (an extrapolation that
+// starts saving iterations must become the default). The answer: each run's stages are within
+// the increment tolerance 1e-14 (of the 1 m length scale and 1 rad) of the exact stages at every
+// step, and the undamped motion carries a perturbation without growth, so the two tips differ by
+// at most 2 × 200 × 1e-14 = 4e-12 (m, rad); measured 1.5e-13 m, 5.2e-13 rad.
+BOOST_AUTO_TEST_CASE(the_stage_predictor_keeps_the_answer_and_the_default_start_is_not_worse) {
+    const Model m = free_vibration();
+    for (const int stages : {2, 3}) {
+        const TipHistory with =
+            simulate<param::Quaternion>(m, {stages, 1.0, true}, 1e-3, 0.2, 0.0, false);
+        const TipHistory without =
+            simulate<param::Quaternion>(m, {stages, 1.0, false}, 1e-3, 0.2, 0.0, false);
+        const double du = (with.u - without.u).cwiseAbs().maxCoeff();
+        const double dr = so3::log_map(with.R * without.R.transpose()).norm();
+        std::printf(
+            "Gauss-Legendre %d, 0-0.2 s at 1 ms: stage iterations %ld (extrapolated) / %ld "
+            "(Taylor start); tips differ by %.2e m, %.2e rad\n",
+            stages, with.newton_iterations, without.newton_iterations, du, dr);
+        BOOST_TEST(static_cast<double>(without.newton_iterations) <=
+                   1.05 * static_cast<double>(with.newton_iterations));
+        BOOST_TEST(du <= 4e-12);
+        BOOST_TEST(dr <= 4e-12);
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

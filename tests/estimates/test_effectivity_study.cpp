@@ -1,5 +1,6 @@
 // The effectivity study's quick form (studies/study_effectivity.cpp, docs/error-estimates.md): the
-// roll-up against its exact solution and the 45° bend against the continuum reference, the
+// roll-up and the static manufactured rod against their exact solutions and the 45° bend against
+// the continuum reference, the
 // displacement formulation's p+1 estimate over orders 3 … 6 on two elements and the mixed one's
 // h/2, h/4 estimate over 4, 8, 16 elements, each level a `rotbeam run` with its estimate.
 //
@@ -17,11 +18,13 @@
 // - Enough asymptotic rows per sequence, so that the band is actually checked.
 // A halved estimate (effectivity ~0.43 … 0.5 on the p rows) fails the band: checked by halving the
 // error of estimates/quantity_estimate.cpp's p and h estimates.
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
 
 #include "core/static_driver.hpp"
+#include "studies/manufactured_rod_case.hpp"
 #include "studies/studies.hpp"
 
 namespace rotbeam {
@@ -30,8 +33,9 @@ namespace {
 
 using json = nlohmann::json;
 
-// Asymptotic rows per sequence at least: 2 quantities × the load steps (roll-up 7, bend 3) at the
-// classifiable levels (p: orders 3 and 4; h: 4 elements), less those at the floor.
+// Asymptotic rows per sequence at least: 2 quantities × the load steps (roll-up 7, bend 3; the
+// manufactured rod 3 points × 20) at the classifiable levels (p: orders 3 and 4; h: 4 elements),
+// less those at the floor.
 constexpr int kMinAsymptoticRows = 4;
 
 bool regime_shown(const std::string& strategy, const json& row) {
@@ -53,9 +57,23 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
     o.out_dir = (std::filesystem::temp_directory_path() / "rotbeam-test-effectivity").string();
     std::filesystem::remove_all(o.out_dir);
     const json out = cli::run_split_study(cli::effectivity_study(), o, 2);
-    BOOST_TEST_REQUIRE(out["sequences"].size() == 4u);  // 2 cases × 2 formulations
-    int band_checked = 0;
+    BOOST_TEST_REQUIRE(out["sequences"].size() == 6u);  // 3 cases × 2 formulations
+    int band_checked = 0, manufactured = 0;
     for (const json& s : out["sequences"]) {
+        // The manufactured rod's rows are its interior points against the exact state: the three
+        // named points q1, mid, q3 (root and tip are exact by construction, at the floor).
+        if (s["case"] == cli::kManufacturedRodCase) {
+            ++manufactured;
+            for (const char* point : {"q1 ", "mid ", "q3 "}) {
+                BOOST_TEST(std::any_of(s["rows"].begin(), s["rows"].end(),
+                                       [&](const json& row) {
+                                           return row["quantity"].get<std::string>().rfind(
+                                                      point, 0) == 0 &&
+                                                  row["asymptotic"].get<bool>();
+                                       }),
+                           "manufactured rod: no asymptotic row at " << point);
+            }
+        }
         const std::string label =
             s["case"].get<std::string>() + " " + s["combination"].get<std::string>();
         for (const json& status : s["statuses"]) {
@@ -88,6 +106,7 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
         BOOST_TEST(asymptotic >= kMinAsymptoticRows, label << ": " << asymptotic);
         band_checked += asymptotic;
     }
+    BOOST_TEST(manufactured == 2);  // both formulations
     BOOST_TEST_MESSAGE("effectivity study (quick): " << band_checked << " asymptotic rows");
     BOOST_TEST(out["unexplained_failures"] == 0);
     BOOST_TEST(out["band_violations"] == 0);

@@ -48,6 +48,15 @@ for command in $commands; do
 done
 [ -n "$commands" ] || fail "the completion offers no command"
 
+# `study --help` names every registered study: the names `rotbeam study` offers for an unknown one.
+"$rotbeam" study no-such-study >/dev/null 2>"$work/err" && fail "study no-such-study: exit 0"
+studies=$(sed -n 's/.*(available: \(.*\))$/\1/p' "$work/err" | tr -d ,)
+[ -n "$studies" ] || fail "study no-such-study names no available study: $(cat "$work/err")"
+"$rotbeam" study --help >"$work/help" || fail "study --help: exit $?"
+for name in $studies; do
+    grep -q "\`$name\`" "$work/help" || fail "study --help does not list the study $name"
+done
+
 # Every JSON file carries the schema version --version names: a run's result and verify's table.
 schema=$(sed -n 's/.*(JSON schema_version \([0-9]*\)).*/\1/p' "$work/version")
 [ -n "$schema" ] || fail "--version names no JSON schema_version: $(head -1 "$work/version")"

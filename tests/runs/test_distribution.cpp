@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "runs/estimate_cost.hpp"
 #include "runs/progress.hpp"
 #include "runs/shards.hpp"
 
@@ -69,6 +70,67 @@ BOOST_AUTO_TEST_CASE(expected_seconds_prefers_measurements_and_scales_the_model)
     BOOST_TEST(e[2] == 10.0);
     const std::vector<double> none = expected_seconds({1.0, 3.0}, {std::nullopt, std::nullopt});
     BOOST_TEST(none[1] == 3.0);
+}
+
+// A run with its error estimate is priced with it (runs/estimate_cost.hpp): the cost model's ratio
+// with/without the estimate against the ratio measured on `rotbeam run … --quiet` (baseline binary
+// bdc24a0, 2026-11-27; docs/distributed-runs.md, "Cost model"), callgrind instructions for the
+// static and modal runs, CPU seconds (/usr/bin/time, user + sys) for the dynamic ones. The warm-
+// started static displacement companions (and the mixed modal ones) are one measured factor per
+// strategy, within 1.5× of each ratio measured; the others are priced from their plan, within
+// 1.2× of the measured ratio. 1.6×
+// either way bounds both; the plain pricing (ratio 1) misses every strategy but the high-order p+1.
+BOOST_AUTO_TEST_CASE(an_estimated_run_is_priced_with_its_estimate) {
+    struct Measured {
+        const char* run;
+        Formulation formulation;
+        AnalysisKind kind;
+        int order;
+        double without, with;
+    };
+    const Measured measured[] = {
+        {"bend-45, 2 x order 2", Formulation::displacement, AnalysisKind::static_, 2, 48464041,
+         139925270},
+        {"bend-45, 2 x order 4", Formulation::displacement, AnalysisKind::static_, 4, 131241746,
+         169133779},
+        {"cantilever-moment, 2 x order 3", Formulation::displacement, AnalysisKind::static_, 3,
+         63802086, 135209467},
+        {"bend-45, 2 x order 6", Formulation::displacement, AnalysisKind::static_, 6, 269658517,
+         295499595},
+        {"bend-45, 2 x order 8", Formulation::displacement, AnalysisKind::static_, 8, 443557679,
+         478328677},
+        {"cantilever-moment, 2 x order 6", Formulation::displacement, AnalysisKind::static_, 6,
+         223426074, 272228608},
+        {"bend-45, mixed 4", Formulation::mixed, AnalysisKind::static_, 1, 115890707, 785109996},
+        {"joined-beam modes, 2 x order 2", Formulation::displacement, AnalysisKind::modal, 2,
+         6980388, 32687009},
+        {"joined-beam modes, 2 x order 6", Formulation::displacement, AnalysisKind::modal, 6,
+         54694284, 131493292},
+        {"joined-beam modes, mixed 5", Formulation::mixed, AnalysisKind::modal, 1, 37415076,
+         1101593552},
+        {"bend-45, mixed 16", Formulation::mixed, AnalysisKind::static_, 1, 455117521, 3124700133},
+        {"free-vibration, displacement", Formulation::displacement, AnalysisKind::dynamic, 2, 0.31,
+         1.66},
+        {"joined-beam-dead, displacement", Formulation::displacement, AnalysisKind::dynamic, 1,
+         1.38, 6.47},
+        {"free-vibration, mixed", Formulation::mixed, AnalysisKind::dynamic, 1, 0.56, 5.01},
+    };
+    for (const Measured& m : measured) {
+        Model model;
+        model.members.resize(1);
+        model.members[0].elements = 2;
+        model.discretization.formulation = m.formulation;
+        model.discretization.order = m.order;
+        model.analysis.kind = m.kind;
+        model.analysis.statics.load_factors = {1.0, 2.0};
+        model.analysis.modal.modes = 5;
+        model.analysis.dynamics.time_step = 0.01;
+        model.analysis.dynamics.end_time = 1.0;
+        const double priced = modelled_seconds(model, true) / modelled_seconds(model, false);
+        const double ratio = m.with / m.without;
+        BOOST_TEST(priced <= 1.6 * ratio, m.run << ": priced " << priced << ", measured " << ratio);
+        BOOST_TEST(priced >= ratio / 1.6, m.run << ": priced " << priced << ", measured " << ratio);
+    }
 }
 
 // FNV-1a 64 of "a" is af63dc4c8601ec8c (the published test vector of the FNV reference code).
