@@ -108,8 +108,8 @@ nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn
     std::vector<NodeDisplacement> nodes;
     const form::MixedLayout& layout = dyn.layout();
     for (int n = 0; n < dyn.node_count(); ++n) {
-        nodes.push_back({layout.nodes[static_cast<size_t>(n)].reference,
-                         Vec3(node_mode(dyn, x0, shape, peak, n).head<3>())});
+        const Vec6 a = node_mode(dyn, x0, shape, peak, n);
+        nodes.push_back({layout.nodes[static_cast<size_t>(n)].reference, Vec3(a.head<3>())});
     }
     return {{"frequency_hz", frequency_hz},
             {"growth_rate", growth_rate},
@@ -128,7 +128,8 @@ void record_mode_frames(const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
     for (const form::MixedFrameNode& n : dyn.frame_nodes()) {
         amplitudes.push_back(node_mode(dyn, x0, shape, peak, n.node));
     }
-    record_snapshot({dyn.node_frames(x0, 0.0), dyn.section_resultants(x0), std::move(amplitudes)});
+    record_snapshot({dyn.node_frames(x0, 0.0), dyn.section_resultants(x0), std::move(amplitudes),
+                     std::nullopt});
 }
 
 template <class P>
