@@ -19,14 +19,7 @@ import xml.etree.ElementTree as ET
 import meshio
 import numpy as np
 
-
-def exp_so3(psi):
-    """exp of the rotation vector psi (Rodrigues' formula)."""
-    angle = np.linalg.norm(psi)
-    K = np.array([[0, -psi[2], psi[1]], [psi[2], 0, -psi[0]], [-psi[1], psi[0], 0]])
-    if angle < 1e-8:  # the series to second order: its remainder is below 1e-24
-        return np.eye(3) + K + K @ K / 2
-    return np.eye(3) + np.sin(angle) / angle * K + (1 - np.cos(angle)) / angle**2 * K @ K
+from vtk_check import rotation_matrix  # exp of a rotation vector
 
 
 def read_series(pvd):
@@ -82,7 +75,7 @@ def main():
         amplitude = max(amplitude, np.abs(a["displacement"]).max())
         position = max(position, np.linalg.norm(a["position"][i] - b["position"][j], axis=1).max())
         for k, l in pairs:
-            error = exp_so3(a["rotation_vector"][k]) - exp_so3(b["rotation_vector"][l])
+            error = rotation_matrix(a["rotation_vector"][k]) - rotation_matrix(b["rotation_vector"][l])
             rotation = max(rotation, np.abs(error).max())
     if modal:
         print(f"vtk_compare: {len(a_series)} modes, {shared} shared nodes: mode shapes (largest "
