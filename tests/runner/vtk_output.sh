@@ -52,6 +52,14 @@ same=(--elements 8 --set analysis.rho_infinity=1 --estimate off)
 check turning-linear "$work/turning-undamped.yaml" "${linear[@]}" "${same[@]}"
 check turning-mixed "$work/turning-undamped.yaml" --formulation mixed "${same[@]}" \
     --set discretization.mass_rule=midpoint
+# The modes (quaternion) about the deck's static state in the turning frame, at t = 0: the files'
+# geometry is the JSON's static step.
+"$python" -c 'import sys
+s = open(sys.argv[1]).read()
+open(sys.argv[2], "w").write(s[:s.index("analysis:")] + "analysis:\n  type: modal\n  modes: 4\n"
+    "  about_static_state: true\n" + s[s.index("discretization:"):])' \
+    "$work/turning-undamped.yaml" "$work/turning-modal.yaml" || fail "turning modal case"
+check turning-modal-mixed "$work/turning-modal.yaml" --formulation mixed --elements 8 --estimate off
 # compare A B TOLERANCE: the largest difference relative to the motion (or of the unit-normalized
 # mode shapes, or of a rotation matrix entry) at most TOLERANCE. A file that shows another
 # time's state, nodes out of order, another mode or misses the turning frame is off by the motion
