@@ -19,7 +19,8 @@ import xml.etree.ElementTree as ET
 import meshio
 import numpy as np
 
-from vtk_check import rotation_matrix  # exp of a rotation vector
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from vtk_check import rotation_matrix  # exp of a rotation vector  # noqa: E402
 
 
 def read_series(pvd):
