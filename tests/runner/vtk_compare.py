@@ -20,7 +20,7 @@ import meshio
 import numpy as np
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from vtk_check import rotation_matrix  # exp of a rotation vector  # noqa: E402
+from vtk_check import rotation_matrix  # noqa: E402 (exp of a rotation vector)
 
 
 def read_series(pvd):
