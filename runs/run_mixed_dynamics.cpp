@@ -18,6 +18,7 @@
 #include "formulations/mixed/mixed_dynamics_of.hpp"
 #include "formulations/mixed/mixed_modal.hpp"
 #include "formulations/mixed/mixed_statics_of.hpp"
+#include "frame_recorder.hpp"
 #include "modal_checks.hpp"
 #include "mode_matching.hpp"
 #include "parameterizations/registry.hpp"
@@ -62,47 +63,73 @@ bool static_state(const Model& model, bool trace, nlohmann::json& result, VecX& 
     return static_state_usable(solve.outcome, result);
 }
 
-// Named points' displacement and rotation amplitudes of one mode: the phase removed by dividing by
-// the largest free-node component, real part, largest component 1; rotations as spatial rotation
-// increments H_s(ĉ₀) δĉ (3 × 3, or 3 × 4 for the quaternion's q̂).
+// The largest free-node component of a mode: dividing by it removes the phase.
 template <class P>
-nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
-                         const form::VecXc& shape, double frequency_hz, double growth_rate) {
-    constexpr int K = P::kSize;
+std::complex<double> mode_peak(const form::MixedDynamicsOf<P>& dyn, const form::VecXc& shape) {
     std::complex<double> peak = 0.0;
     for (int n = 0; n < dyn.node_count(); ++n) {
         if (dyn.supported(n)) continue;
-        for (int k = 0; k < 3 + K; ++k) {
+        for (int k = 0; k < 3 + P::kSize; ++k) {
             const std::complex<double> v = shape[dyn.node_column(n) + k];
             if (std::abs(v) > std::abs(peak)) peak = v;
         }
     }
+    return peak;
+}
+
+// A mode's [u; θ] amplitude at node n: real part after dividing by the peak, θ the spatial
+// rotation increment H_s(ĉ₀) δĉ (3 × 3, or 3 × 4 for the quaternion's q̂); zero at a support.
+template <class P>
+Vec6 node_mode(const form::MixedDynamicsOf<P>& dyn, const VecX& x0, const form::VecXc& shape,
+               std::complex<double> peak, int n) {
+    constexpr int K = P::kSize;
+    Vec3 d = Vec3::Zero(), r = Vec3::Zero();
+    if (!dyn.supported(n) && std::abs(peak) > 0.0) {
+        const int c = dyn.node_column(n);
+        param::Params<K> dq;
+        for (int k = 0; k < 3; ++k) d[k] = (shape[c + k] / peak).real();
+        for (int k = 0; k < K; ++k) dq[k] = (shape[c + 3 + k] / peak).real();
+        r = P::spatial_tangent(x0.segment<K>(c + 3)) * dq;
+    }
+    return (Vec6() << d, r).finished();
+}
+
+// Named points' displacement and rotation amplitudes of one mode (node_mode), largest component 1.
+template <class P>
+nlohmann::json mode_json(const Model& model, const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
+                         const form::VecXc& shape, double frequency_hz, double growth_rate) {
+    const std::complex<double> peak = mode_peak(dyn, shape);
     nlohmann::json points = nlohmann::json::object();
     for (size_t i = 0; i < model.points.size(); ++i) {
-        Vec3 d = Vec3::Zero(), r = Vec3::Zero();
-        const int n = static_cast<int>(i);
-        if (!dyn.supported(n) && std::abs(peak) > 0.0) {
-            const int c = dyn.node_column(n);
-            param::Params<K> dq;
-            for (int k = 0; k < 3; ++k) d[k] = (shape[c + k] / peak).real();
-            for (int k = 0; k < K; ++k) dq[k] = (shape[c + 3 + k] / peak).real();
-            r = P::spatial_tangent(x0.segment<K>(c + 3)) * dq;
-        }
-        points[model.points[i].name] = {{"displacement", vec3(d)}, {"rotation", vec3(r)}};
+        const Vec6 a = node_mode(dyn, x0, shape, peak, static_cast<int>(i));
+        points[model.points[i].name] = {{"displacement", vec3(Vec3(a.head<3>()))},
+                                        {"rotation", vec3(Vec3(a.tail<3>()))}};
     }
     std::vector<NodeDisplacement> nodes;
     const form::MixedLayout& layout = dyn.layout();
     for (int n = 0; n < dyn.node_count(); ++n) {
-        Vec3 d = Vec3::Zero();
-        if (!dyn.supported(n) && std::abs(peak) > 0.0) {
-            for (int k = 0; k < 3; ++k) d[k] = (shape[dyn.node_column(n) + k] / peak).real();
-        }
-        nodes.push_back({layout.nodes[static_cast<size_t>(n)].reference, d});
+        const Vec6 a = node_mode(dyn, x0, shape, peak, n);
+        nodes.push_back({layout.nodes[static_cast<size_t>(n)].reference, Vec3(a.head<3>())});
     }
     return {{"frequency_hz", frequency_hz},
             {"growth_rate", growth_rate},
             {"points", points},
             {"stations", station_displacements(model, nodes)}};
+}
+
+// The frames of the state a mode is about and the mode's amplitude at every node, in their order
+// (mixed_node_frames.hpp), when a recorder is installed (run --vtk).
+template <class P>
+void record_mode_frames(const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
+                        const form::VecXc& shape) {
+    if (!frames_recorded()) return;
+    const std::complex<double> peak = mode_peak(dyn, shape);
+    std::vector<Vec6> amplitudes;
+    for (const form::MixedFrameNode& n : dyn.frame_nodes()) {
+        amplitudes.push_back(node_mode(dyn, x0, shape, peak, n.node));
+    }
+    record_snapshot({dyn.node_frames(x0, 0.0), dyn.section_resultants(x0), std::move(amplitudes),
+                     std::nullopt});
 }
 
 template <class P>
@@ -125,6 +152,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
         result["modes"].push_back(
             mode_json<P>(model, dyn, x0, s.shapes[i], s.frequencies_hz[i], s.growth_rates[i]));
+        record_mode_frames(dyn, x0, s.shapes[i]);
         checked.push_back({s.frequencies_hz[i], s.growth_rates[i],
                            std::complex<double>(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]),
                            s.checks[i]});
@@ -298,6 +326,11 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
                                       {"points", relative["points"]}};
         }
         result["steps"].push_back(std::move(step));
+        if (frames_recorded()) {
+            std::optional<TurningFrame> turning;
+            if (dyn.rotating()) turning = TurningFrame{Q, dyn.frame_center()};
+            record_snapshot({dyn.node_frames(xs, t), dyn.section_resultants(xs), {}, turning});
+        }
         if constexpr (P::kSize == 4) track_norm_drift(dyn.norm_drift(xs, t), drift);
     };
     const DaeOutcome out = integrate(integrator, dyn, x, xdot, s, output);

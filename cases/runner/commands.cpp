@@ -317,11 +317,6 @@ void check_vtk_request(const ParsedArguments& a, const Model& model) {
             "run: --vtk: not with accuracy control (analysis.accuracy or --accuracy), whose "
             "attempts are several runs; run the chosen discretization without it");
     }
-    if (model.discretization.formulation == Formulation::mixed &&
-        model.analysis.kind != AnalysisKind::static_) {
-        throw InputError(
-            "run: --vtk: the mixed formulation gives node frames for static analyses only");
-    }
 }
 
 // The recorded frames of every step (or mode) the result reports: none of a run whose steps were

@@ -46,6 +46,7 @@
 #include "formulations/mixed/mixed_element.hpp"
 #include "formulations/mixed/mixed_frame_terms.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
+#include "formulations/mixed/mixed_node_frames.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 #include "parameterizations/concept.hpp"
 #include "parameterizations/parameter_constraint.hpp"
@@ -109,6 +110,14 @@ class MixedDynamics : public DaeSystem {
     PointState point_state(const VecX& x, double t, int point_index) const;
     // As MixedStatics<P>::rotation_stations, in state x at time t.
     std::vector<StaticProblem::RotationStation> rotation_stations(const VecX& x, double t) const;
+    // As MixedStatics<P>::node_frames and section_resultants (mixed_node_frames.hpp), in state x
+    // at time t; with a turning frame in its axes (the motion relative to it).
+    std::vector<StaticState::NodeFrame> node_frames(const VecX& x, double t) const;
+    std::vector<SectionResultants> section_resultants(const VecX& x) const;
+    // The node frames' nodes (mixed_frame_nodes), e.g. for a mode's amplitudes in their order.
+    std::vector<MixedFrameNode> frame_nodes() const {
+        return mixed_frame_nodes(layout_, element_count());
+    }
     double max_rotation_angle(const VecX& x) const;
     // max | |q| − 1 | at the nodes (conserved by the Cayley relations) and in the elements
     // (cos(δ/4) by construction), in state x at time t.

@@ -433,6 +433,26 @@ std::vector<StaticProblem::RotationStation> MixedDynamics<P>::rotation_stations(
 }
 
 template <param::RotationParameterization P>
+std::vector<StaticState::NodeFrame> MixedDynamics<P>::node_frames(const VecX& x, double t) const {
+    return mixed_node_frames(layout_, element_count(), [&](int node, Vec3& u_hat, Mat3& R) {
+        Params c_hat;
+        node_motion(x, t, node, u_hat, c_hat);
+        R = P::matrix(c_hat);
+    });
+}
+
+template <param::RotationParameterization P>
+std::vector<SectionResultants> MixedDynamics<P>::section_resultants(const VecX& x) const {
+    return mixed_section_resultants(layout_, element_count(),
+                                    [&](int e, Mat3& R, Vec3& F, Vec3& M) {
+                                        const int o = element_column(e);
+                                        R = P::matrix(x.segment<K>(o + numbering_.c()));
+                                        F = x.segment<3>(o + numbering_.F());
+                                        M = x.segment<3>(o + numbering_.M());
+                                    });
+}
+
+template <param::RotationParameterization P>
 double MixedDynamics<P>::max_rotation_angle(const VecX& x) const {
     double angle = 0.0;
     for (int e = 0; e < element_count(); ++e) {

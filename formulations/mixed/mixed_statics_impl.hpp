@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "formulations/displacement/calculate_rotating_frame_forces.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
+#include "formulations/mixed/mixed_node_frames.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
 
 namespace rotbeam::form {
@@ -267,24 +268,15 @@ std::vector<StaticProblem::RotationStation> MixedStatics<P>::rotation_stations()
     return out;
 }
 
-// Start node, then per element its end node; the elements of a member are of equal arc length,
-// so an end node's arc length is twice the mid-point's minus the start node's.
+// The node frames in the order of mixed_frame_nodes (mixed_node_frames.hpp).
 template <param::RotationParameterization P>
 std::vector<StaticProblem::NodeFrame> MixedStatics<P>::node_frames() const {
-    std::vector<NodeFrame> out;
-    Vec3 u_hat;
-    Params c_hat;
-    auto add = [&](int member, double s, int node) {
-        node_motion(node, u_hat, c_hat);
-        out.push_back({member, s, layout_.nodes[static_cast<std::size_t>(node)].reference, u_hat,
-                       P::matrix(c_hat)});
-    };
-    for (int e = 0; e < numbering_.element_count; ++e) {
-        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
-        if (out.empty() || out.back().member != el.member) add(el.member, 0.0, el.start_node);
-        add(el.member, 2.0 * el.s_mid - out.back().s, el.end_node);
-    }
-    return out;
+    return mixed_node_frames(layout_, numbering_.element_count,
+                             [this](int node, Vec3& u_hat, Mat3& R) {
+                                 Params c_hat;
+                                 node_motion(node, u_hat, c_hat);
+                                 R = P::matrix(c_hat);
+                             });
 }
 
 template <param::RotationParameterization P>
@@ -332,14 +324,13 @@ std::vector<MixedElementResultants> MixedStatics<P>::resultants() const {
 // F and M are element unknowns in the deformed material frame (seed 002 Eq. 45's b axes).
 template <param::RotationParameterization P>
 std::vector<SectionResultants> MixedStatics<P>::section_resultants() const {
-    std::vector<SectionResultants> out;
-    for (int e = 0; e < numbering_.element_count; ++e) {
-        const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
-        const MixedElementState<K> st = element_state(e);
-        const Mat3 A = P::matrix(st.c) * el.Cab;
-        out.push_back({el.member, el.s_mid, A * st.F, A * st.M, st.F, st.M});
-    }
-    return out;
+    return mixed_section_resultants(layout_, numbering_.element_count,
+                                    [this](int e, Mat3& R, Vec3& F, Vec3& M) {
+                                        const MixedElementState<K> st = element_state(e);
+                                        R = P::matrix(st.c);
+                                        F = st.F;
+                                        M = st.M;
+                                    });
 }
 
 }  // namespace rotbeam::form

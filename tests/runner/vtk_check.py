@@ -7,7 +7,8 @@ usage: vtk_check.py PVD RESULT.json CASE.yaml
 Checks: the .pvd lists one file per reported step (or mode) with its load factor, time or mode
 number; every file reads; the line cells join the nodes of each member in order; the node at every
 named point (found by its reference_position, which equals the case's point) is at the case's
-position + the JSON displacement of that step (modes: the mode amplitude equals the JSON's); with a
+position + the JSON displacement of that step (modes: the mode amplitude equals the JSON's, the
+position that of the last static step about which the modes are); with a
 `centerline` in the JSON (the displacement formulation's statics), every node equals it; the
 directors are orthonormal and right-handed; the ribbon's edges are the node ± h d2 with one h for
 all nodes; the ribbon turns with the section as the JSON says: at every named point
@@ -24,9 +25,10 @@ both files: within 4ε of the normalized amplitude 1 only as a margin for the de
 The directors are columns of a product of rotation matrices, orthonormal to a few ε: 1e-13 leaves
 room for the ~10 operations per entry and catches any wrong column (an error of order one). The
 ribbon edge x ∓ h d2 is rounded once per component: within 2ε·scale. The reference frame
-exp(ψ)ᵀ D: ψ is the principal rotation vector of R rounded to 17 digits, exp here (Rodrigues) and
-the product add a few ε per entry; 1e-12 leaves room for the loss near a half turn (the roll-up
-passes π) and still catches a frame off by a turn of 1e-12 rad, far below any visible twist (a
+exp(ψ)ᵀ D (and the rotation, exp of the file's rotation_vector against exp of the JSON's): ψ is
+the principal rotation vector of R rounded to 17 digits, exp here (Rodrigues) and the product add
+a few ε per entry; 1e-12 leaves room for the loss near a half turn (the roll-up passes π) and
+still catches a frame off by a turn of 1e-12 rad, far below any visible twist (a
 missing turning frame is off by Ω t, here ≥ 0.01 rad). The relative displacement is the JSON's
 double written once: within ε·scale.
 """
@@ -98,7 +100,11 @@ def check_file(index, mesh, entry, result, case):
         at = [i for i in range(n) if np.array_equal(ref[i], x0)]
         check(len(at) > 0, f"{where}: no node at the point {name}")
         if "modes" in result:
-            u = data["displacement"][at[0]] if at else x0 * 0  # the state the mode is about
+            # The state the mode is about: the last static step's where the result has one (a
+            # modal analysis about a static state), else the file's own.
+            u = data["displacement"][at[0]] if at else x0 * 0
+            if result.get("steps"):
+                u = np.array(result["steps"][-1]["points"][name]["displacement"], dtype=float)
             for i in at:
                 check(np.abs(data["mode_displacement"][i] - point["displacement"]).max() <= 4 * EPS,
                       f"{where}: {name}: mode amplitude {data['mode_displacement'][i]} != "
@@ -112,7 +118,13 @@ def check_file(index, mesh, entry, result, case):
             check(error <= EPS * scale,
                   f"{where}: {name}: node {x[i]} != reference + displacement {expected}")
         if "modes" not in result and at:
+            check_rotation(where, name, data, at[0], point["rotation_vector"])
             check_twist(where, name, data, at[0], point["rotation_vector"])
+        if "modes" in result and "rotation" in point:
+            for i in at:
+                check(np.abs(data["mode_rotation"][i] - point["rotation"]).max() <= 4 * EPS,
+                      f"{where}: {name}: mode rotation {data['mode_rotation'][i]} != "
+                      f"{point['rotation']}")
         if "rotating_frame" in entry and at:
             relative = np.array(entry["rotating_frame"]["points"][name]["displacement"])
             check("relative_displacement" in data, f"{where}: no relative_displacement")
@@ -120,6 +132,9 @@ def check_file(index, mesh, entry, result, case):
                 got = data["relative_displacement"][at[0]]
                 check(np.abs(got - relative).max() <= EPS * max(np.abs(relative).max(), 1e-300),
                       f"{where}: {name}: relative displacement {got} != JSON {relative}")
+    if "stations" in entry:
+        check_stations(where, ref, data["mode_displacement"][:n], member,
+                       entry["stations"], case)
     if "centerline" in entry:
         line = np.array([p[1:] for p in entry["centerline"]])
         check(line.shape == x.shape and np.abs(line - x).max() <= EPS * np.abs(line).max(),
@@ -133,6 +148,48 @@ def check_file(index, mesh, entry, result, case):
     scale = np.abs(mesh.points).max()
     check(np.abs(mesh.points[n:2 * n] - (x - h[:, None] * d[1])).max() <= 2 * EPS * scale and
           np.ptp(h) <= 2 * EPS * scale, f"{where}: ribbon edges are not x -+ h d2")
+
+
+def check_rotation(where, name, data, i, psi):
+    """The rotation at a named point's node is the JSON's: exp of the file's rotation_vector (the
+    principal value) equals exp of the JSON's (continued along the beam, so it may differ by a
+    multiple of 2π in angle)."""
+    got = rotation_matrix(np.array(data["rotation_vector"][i], dtype=float))
+    error = np.abs(got - rotation_matrix(np.array(psi, dtype=float))).max()
+    check(error <= 1e-12, f"{where}: {name}: rotation off the JSON's by {error:.3g}")
+
+
+def check_stations(where, ref, amplitude, member, stations, case):
+    """A mode's `stations` (the JSON's shape along every member: the node amplitudes interpolated
+    linearly along the member's chord at equally spaced stations, runs/mode_matching.cpp) from
+    the file's mode_displacement at the nodes, the same interpolation, up to one scale factor (the
+    displacement formulation's stations are of the unnormalized shape). Tolerance: the amplitudes
+    are the same doubles in both (or the JSON's divided by the peak, one rounding); a station's
+    chord parameter t is computed here by other arithmetic than rotbeam's, a few ε apart, which
+    moves the interpolated value by a few ε times the slope |Δu|/Δt ≤ 2 × the element count (≤ 20
+    here) of the largest amplitude: 64 ε of it. A wrong node order, mode or normalization is off
+    by order one (measured: one member's interior amplitudes reversed, 0.64 of 0.78)."""
+    got = []
+    per_member = len(stations) // (3 * len(case["members"]))
+    for m, spec in enumerate(case["members"].values()):
+        a = np.array(case["points"][spec["from"]], dtype=float)
+        d = np.array(case["points"][spec["to"]], dtype=float) - a
+        on = sorted(((ref[i] - a) @ d / (d @ d), i) for i in range(len(ref)) if member[i] == m)
+        t_nodes = np.array([t for t, _ in on])
+        u_nodes = np.array([amplitude[i] for _, i in on])
+        for k in range(per_member):
+            t = k / (per_member - 1)
+            j = 1
+            while j + 1 < len(on) and t_nodes[j] < t:
+                j += 1
+            w = (t - t_nodes[j - 1]) / (t_nodes[j] - t_nodes[j - 1])
+            got.extend((1 - w) * u_nodes[j - 1] + w * u_nodes[j])
+    got, want = np.array(got), np.array(stations, dtype=float)
+    scale = (got @ want) / (got @ got) if got @ got > 0 else 0.0
+    error = np.abs(scale * got - want).max()
+    check(len(got) == len(want) and error <= 64 * EPS * np.abs(want).max(),
+          f"{where}: mode_displacement along the members differs from the JSON stations by "
+          f"{error:.3g} (of {np.abs(want).max():.3g})")
 
 
 def check_twist(where, name, data, i, psi):
