@@ -10,7 +10,7 @@
 # Usage: mpi_suite.sh ROTBEAM COMPARE_RESULTS_PY MPIEXEC ROTBEAM_MPI JOBS2_SUITE
 # JOBS2_SUITE: `rotbeam suite --quick --jobs 2` of the same program (the ctest fixture quick_suite),
 # the one-process side of the suite's comparison: the command this test would otherwise run itself
-# (a whole quick suite, ~4.5 CPU-minutes; docs/quality-checks.md, Time).
+# (a whole quick suite, ~105 CPU-s; docs/quality-checks.md, Time).
 set -u
 mpiexec=$3
 rotbeam_mpi=$4
