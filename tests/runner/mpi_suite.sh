@@ -7,10 +7,14 @@
 # no work folder left behind, rank 0 alone printing the summary.
 # --oversubscribe: three ranks on a machine with fewer cores. As root (CI's container) Open MPI
 # needs OMPI_ALLOW_RUN_AS_ROOT and its confirmation.
-# Usage: mpi_suite.sh ROTBEAM COMPARE_RESULTS_PY MPIEXEC ROTBEAM_MPI
+# Usage: mpi_suite.sh ROTBEAM COMPARE_RESULTS_PY MPIEXEC ROTBEAM_MPI JOBS2_SUITE
+# JOBS2_SUITE: `rotbeam suite --quick --jobs 2` of the same program (the ctest fixture quick_suite),
+# the one-process side of the suite's comparison: the command this test would otherwise run itself
+# (a whole quick suite, ~105 CPU-s; docs/quality-checks.md, Time).
 set -u
 mpiexec=$3
 rotbeam_mpi=$4
+jobs2=$5
 # rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 if [ "$(id -u)" -eq 0 ]; then
@@ -18,25 +22,32 @@ if [ "$(id -u)" -eq 0 ]; then
 fi
 sweep_file=$(cd "$(dirname "$0")/../.." && pwd)/cases/sweeps/rollup-load-elements.yaml
 
-# Each job once in one process (the static program, two threads) and once over three ranks (one
-# thread each, the default under mpirun): the same files, no work folder left, the summary line
-# from rank 0 only.
-check() {  # check NAME ROTBEAM_ARGUMENTS...
-    local name=$1
-    shift
-    "$rotbeam" "$@" --jobs 2 --out "$work/one-$name" >/dev/null 2>"$work/err1.txt" ||
-        fail "$name: one process failed: $(tail -1 "$work/err1.txt")"
+# Each job over three ranks (one thread each, the default under mpirun) against one process (the
+# static program, two threads: `--jobs 2 --out ONE`): the same files, no work folder left, the
+# summary line from rank 0 only. ONE is made here unless given (the suite's is the fixture's).
+check() {  # check NAME ONE|"" ROTBEAM_ARGUMENTS...
+    local name=$1 one=$2
+    shift 2
+    if [ -z "$one" ]; then
+        one="$work/one-$name"
+        "$rotbeam" "$@" --jobs 2 --out "$one" >/dev/null 2>"$work/err1.txt" ||
+            fail "$name: one process failed: $(tail -1 "$work/err1.txt")"
+    fi
     "$mpiexec" --oversubscribe -np 3 "$rotbeam_mpi" "$@" --out "$work/ranks-$name" \
         >"$work/out3.txt" 2>"$work/err3.txt" ||
         fail "$name: mpirun -np 3 failed: $(tail -3 "$work/err3.txt")"
-    same "$work/one-$name" "$work/ranks-$name" "$name over 3 ranks"
+    same "$one" "$work/ranks-$name" "$name over 3 ranks"
     complete_files "$work/ranks-$name" "$name over 3 ranks"
     [ -e "$work/ranks-$name/.rotbeam-ranks" ] && fail "$name: the work folder was left in the output"
     n=$(grep -c "units on 3 ranks" "$work/out3.txt")
     [ "$n" -eq 1 ] || fail "$name: the summary line printed $n times (rank 0 only)"
 }
-check suite suite --quick
-check sweep sweep "$sweep_file"
+if [ -f "$jobs2/index.md" ]; then
+    check suite "$jobs2" suite --quick
+else
+    fail "no --jobs 2 suite in $jobs2 (the fixture quick_suite failed?)"
+fi
+check sweep "" sweep "$sweep_file"
 
 [ $failures -eq 0 ] && echo "mpi_suite: mpirun -np 3 = one process (suite --quick whole, a sweep)"
 exit $((failures > 0))

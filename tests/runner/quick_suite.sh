@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `rotbeam suite --quick --jobs 2` once, into OUT (removed first), for the checks that read its
 # results and report instead of running the same suite again (test_report_complete,
-# test_suite_resume; docs/quality-checks.md, "Time"). The ctest fixture `quick_suite`.
+# test_suite_resume, test_report_full_disk, test_mpi_suite; docs/quality-checks.md, "Time"). The
+# ctest fixture `quick_suite`.
 # Usage: quick_suite.sh ROTBEAM OUT
 set -u
 rotbeam=$1
