@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/errors.hpp"
+
 namespace rotbeam {
 
 namespace {
@@ -13,17 +15,33 @@ using ComplexSparseMatrix = Eigen::SparseMatrix<Complex>;
 
 constexpr double kUnitRoundOff = std::numeric_limits<double>::epsilon() / 2.0;
 
-ComplexSparseMatrix quadratic_at(const QuadraticPencil& p, Complex s) {
-    const ComplexSparseMatrix M = p.M.cast<Complex>(), G = p.G.cast<Complex>(),
-                              K = p.K.cast<Complex>();
-    ComplexSparseMatrix Q = (s * s) * M + s * G + K;
-    Q.makeCompressed();
-    return Q;
-}
-
-VecXc derivative_times(const QuadraticPencil& p, Complex s, const VecXc& x) {
-    return (2.0 * s) * (p.M.cast<Complex>() * x) + p.G.cast<Complex>() * x;
-}
+// M, G, K in complex arithmetic, all three on the union of their patterns (in the same order),
+// so that Q(s) is formed entry by entry: cast once per pair, not once per product.
+struct ComplexPencil {
+    ComplexSparseMatrix M, G, K;
+    explicit ComplexPencil(const QuadraticPencil& p) {
+        const SparseMatrix zero = 0.0 * SparseMatrix(p.M + p.G + p.K);  // the union pattern
+        M = SparseMatrix(p.M + zero).cast<Complex>();
+        G = SparseMatrix(p.G + zero).cast<Complex>();
+        K = SparseMatrix(p.K + zero).cast<Complex>();
+        M.makeCompressed();
+        G.makeCompressed();
+        K.makeCompressed();
+        ROTBEAM_VERIFY(M.nonZeros() == K.nonZeros() && G.nonZeros() == K.nonZeros(),
+                       "one pattern for M, G, K");
+    }
+    ComplexSparseMatrix at(Complex s) const {
+        ComplexSparseMatrix Q = K;
+        const Eigen::Index n = Q.nonZeros();
+        Eigen::Map<VecXc>(Q.valuePtr(), n) = (s * s) * Eigen::Map<const VecXc>(M.valuePtr(), n) +
+                                             s * Eigen::Map<const VecXc>(G.valuePtr(), n) +
+                                             Eigen::Map<const VecXc>(K.valuePtr(), n);
+        return Q;
+    }
+    VecXc derivative_times(Complex s, const VecXc& x) const {
+        return (2.0 * s) * VecXc(M * x) + VecXc(G * x);
+    }
+};
 
 // The root of a s² + b s + c = 0 nearest `near` (a ≠ 0), without the cancellation of −b ± √·.
 Complex nearest_root(Complex a, Complex b, Complex c, Complex near) {
@@ -36,10 +54,10 @@ Complex nearest_root(Complex a, Complex b, Complex c, Complex near) {
 
 // The conservative functional's root nearest `near` (header comment): m ω² + g ω − k = 0 with
 // s = iω when g² + 4mk ≥ 0 (Re s exactly 0), else the complex pair (±√(−g² − 4mk) − i g)/2m.
-Complex conservative_root(const QuadraticPencil& p, const VecXc& x, Complex near) {
-    const double m = x.dot(p.M.cast<Complex>() * x).real();
-    const double g = x.dot(p.G.cast<Complex>() * x).imag();
-    const double k = x.dot(p.K.cast<Complex>() * x).real();
+Complex conservative_root(const ComplexPencil& p, const VecXc& x, Complex near) {
+    const double m = x.dot(VecXc(p.M * x)).real();
+    const double g = x.dot(VecXc(p.G * x)).imag();
+    const double k = x.dot(VecXc(p.K * x)).real();
     const double d = g * g + 4.0 * m * k;
     if (d < 0.0) {
         const double re = std::sqrt(-d) / (2.0 * m), im = -g / (2.0 * m);
@@ -55,19 +73,16 @@ Complex conservative_root(const QuadraticPencil& p, const VecXc& x, Complex near
                : Complex(0.0, w2);
 }
 
-Complex rayleigh_root(const QuadraticPencil& p, const VecXc& x, const VecXc& y, Complex near) {
-    if (p.conservative) return conservative_root(p, x, near);
-    const ComplexSparseMatrix M = p.M.cast<Complex>(), G = p.G.cast<Complex>(),
-                              K = p.K.cast<Complex>();
-    return nearest_root(y.dot(M * x), y.dot(G * x), y.dot(K * x), near);
+Complex rayleigh_root(const ComplexPencil& c, bool conservative, const VecXc& x, const VecXc& y,
+                      Complex near) {
+    if (conservative) return conservative_root(c, x, near);
+    return nearest_root(y.dot(VecXc(c.M * x)), y.dot(VecXc(c.G * x)), y.dot(VecXc(c.K * x)), near);
 }
 
-}  // namespace
-
-double quadratic_eigenvalue_error(const QuadraticPencil& p, std::complex<double> s, const VecXc& x,
-                                  const VecXc& y) {
-    const double slope = std::abs(y.dot(derivative_times(p, s, x)));
-    const VecXc r = quadratic_at(p, s) * x;
+double eigenvalue_error(const QuadraticPencil& p, const ComplexPencil& c, Complex s, const VecXc& x,
+                        const VecXc& y) {
+    const double slope = std::abs(y.dot(c.derivative_times(s, x)));
+    const VecXc r = c.at(s) * x;
     // |y|ᵀ(|s|²|M| + |s||G| + |K|)|x|: the entries' absolute values times the vectors' moduli.
     const VecX ax = x.cwiseAbs(), ay = y.cwiseAbs();
     const double as = std::abs(s);
@@ -79,53 +94,62 @@ double quadratic_eigenvalue_error(const QuadraticPencil& p, std::complex<double>
     return numerator / slope + kUnitRoundOff * as;
 }
 
+}  // namespace
+
+double quadratic_eigenvalue_error(const QuadraticPencil& p, std::complex<double> s, const VecXc& x,
+                                  const VecXc& y) {
+    return eigenvalue_error(p, ComplexPencil(p), s, x, y);
+}
+
 RefinedQuadraticPair refine_quadratic_pair(const QuadraticPencil& p, std::complex<double> s0,
                                            const VecXc& x0) {
+    const ComplexPencil c(p);
     RefinedQuadraticPair out;
     out.s = s0;
     out.x = x0.normalized();
     out.y = out.x;
     Eigen::SparseLU<ComplexSparseMatrix> lu;
+    lu.analyzePattern(c.K);                                            // the pattern of every Q(s)
+    const ComplexSparseMatrix Mt = c.M.adjoint(), Gt = c.G.adjoint();  // real: Mᵀ, Gᵀ
     for (int step = 0; step < kMaxQuadraticRefinementSteps; ++step) {
-        const ComplexSparseMatrix Q = quadratic_at(p, out.s);
-        lu.compute(Q);
+        lu.factorize(c.at(out.s));
         // An exactly singular Q(s) (no pivot): s is an eigenvalue to working precision already.
         if (lu.info() != Eigen::Success) break;
-        const VecXc x = lu.solve(derivative_times(p, out.s, out.x)).normalized();
+        const VecXc x = lu.solve(c.derivative_times(out.s, out.x)).normalized();
+        // Q(s)ᴴ y' = Q'(s)ᴴ y, Q'(s)ᴴ = 2 s̄ Mᵀ + Gᵀ.
         const VecXc y =
             lu.adjoint()
-                .solve(VecXc((2.0 * std::conj(out.s)) * (p.M.transpose().cast<Complex>() * out.y) +
-                             p.G.transpose().cast<Complex>() * out.y))
+                .solve(VecXc((2.0 * std::conj(out.s)) * VecXc(Mt * out.y) + VecXc(Gt * out.y)))
                 .normalized();
         if (!x.allFinite() || !y.allFinite()) break;
-        const Complex s = rayleigh_root(p, x, y, out.s);
+        const Complex s = rayleigh_root(c, p.conservative, x, y, out.s);
         const double moved = std::abs(s - out.s);
         out.s = s;
         out.x = x;
         out.y = y;
         out.steps = step + 1;
-        if (moved <= quadratic_eigenvalue_error(p, out.s, out.x, out.y)) break;
+        if (moved <= eigenvalue_error(p, c, out.s, out.x, out.y)) break;
     }
-    out.error = quadratic_eigenvalue_error(p, out.s, out.x, out.y);
+    out.error = eigenvalue_error(p, c, out.s, out.x, out.y);
     // How far s₀ may be from its eigenvalue: the Cauchy–Schwarz form of the estimate, a bound to
     // first order whatever direction the Arnoldi pair's residual has.
     const VecXc x0n = x0.normalized();
     const double start_bound =
-        (quadratic_at(p, s0) * x0n).norm() / std::abs(out.y.dot(derivative_times(p, s0, x0n)));
+        (c.at(s0) * x0n).norm() / std::abs(out.y.dot(c.derivative_times(s0, x0n)));
 
-    EigenpairCheck& c = out.check;
+    EigenpairCheck& check = out.check;
     const double as = std::abs(out.s);
-    const VecXc r = quadratic_at(p, out.s) * out.x;
-    c.backward_error = r.norm() / (as * as * p.M.norm() + as * p.G.norm() + p.K.norm());
-    c.error_estimate = as > 0.0 ? out.error / as : out.error;
-    if (!(std::isfinite(as) && c.backward_error <= kBackwardErrorTolerance)) {
-        c.failure = "backward error";
+    const VecXc r = c.at(out.s) * out.x;
+    check.backward_error = r.norm() / (as * as * p.M.norm() + as * p.G.norm() + p.K.norm());
+    check.error_estimate = as > 0.0 ? out.error / as : out.error;
+    if (!(std::isfinite(as) && check.backward_error <= kBackwardErrorTolerance)) {
+        check.failure = "backward error";
     } else if (!std::isfinite(out.error)) {
-        c.failure = "error estimate";  // a defective eigenvalue: no first-order estimate exists
+        check.failure = "error estimate";  // a defective eigenvalue: no first-order estimate exists
     } else if (!(std::abs(out.s - s0) <= start_bound + out.error)) {
-        c.failure = "refinement";
+        check.failure = "refinement";
     }
-    c.accepted = c.failure.empty();
+    check.accepted = check.failure.empty();
     return out;
 }
 
