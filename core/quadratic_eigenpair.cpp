@@ -60,7 +60,8 @@ Complex conservative_root(const ComplexPencil& p, const VecXc& x, Complex near) 
     const double k = x.dot(VecXc(p.K * x)).real();
     const double d = g * g + 4.0 * m * k;
     if (d < 0.0) {
-        const double re = std::sqrt(-d) / (2.0 * m), im = -g / (2.0 * m);
+        // im: +0 for a real x (g = 0), not −0 (a frequency of −0 Hz in the output).
+        const double re = std::sqrt(-d) / (2.0 * m), im = g != 0.0 ? -g / (2.0 * m) : 0.0;
         return std::abs(Complex(re, im) - near) <= std::abs(Complex(-re, im) - near)
                    ? Complex(re, im)
                    : Complex(-re, im);
