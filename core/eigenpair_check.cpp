@@ -116,6 +116,7 @@ std::string describe(const EigenpairCheck& c) {
     s.precision(2);
     s << std::scientific << "backward error " << c.backward_error;
     if (c.error_bound >= 0.0) s << ", error bound " << c.error_bound;
+    if (c.error_estimate >= 0.0) s << ", error estimate " << c.error_estimate;
     if (c.mass_orthogonality >= 0.0) s << ", mass orthogonality " << c.mass_orthogonality;
     if (c.mass_participation >= 0.0) s << ", mass participation " << c.mass_participation;
     if (!c.accepted) s << " (" << c.failure << " check failed)";

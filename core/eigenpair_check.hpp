@@ -19,6 +19,8 @@
 // - Mass participation (non-symmetric pencils): |xᴴBx| / (‖B‖₁ ‖x‖²). An eigenvector of an
 //   infinite (or nearly infinite) eigenvalue of a singular B has xᴴBx ≈ 0: its "frequency" is
 //   round-off, whatever its backward error.
+// - Error estimate (quadratic problems, core/quadratic_eigenpair.hpp): the first-order error of
+//   the eigenvalue s relative to |s|, from the pair's residual and its left eigenvector.
 #pragma once
 
 #include <complex>
@@ -48,6 +50,7 @@ inline constexpr double kMassParticipationTolerance = 1e-10;
 struct EigenpairCheck {
     double backward_error = 0.0;       // η
     double error_bound = -1.0;         // relative bound on λ (symmetric definite); −1: none
+    double error_estimate = -1.0;      // first-order relative error of λ (quadratic); −1: none
     double mass_orthogonality = -1.0;  // symmetric definite; −1: not applicable
     double mass_participation = -1.0;  // non-symmetric; −1: not applicable
     bool accepted = false;

@@ -8,12 +8,23 @@ namespace rotbeam {
 namespace {
 
 // |Re s| below this fraction of |s| is the eigensolver's round-off (an undamped structure at rest
-// has Re s = 0; the Arnoldi iteration leaves ≲ 1e-9 |s|), not a growth or decay rate.
+// has Re s = 0; the Arnoldi iteration leaves ≲ 1e-9 |s|), not a growth or decay rate: the
+// threshold of the pairs without an error estimate of their own.
 constexpr double kRoundOffGrowth = 1e-8;
+
+// A growth rate |Re s| above what the eigenvalue's error allows: its own first-order estimate
+// (check.error_estimate, relative to |s|: core/quadratic_eigenpair.hpp) when it has one.
+bool grows_or_decays(const CheckedMode& m) {
+    const double allowed = m.check.error_estimate >= 0.0 ? m.check.error_estimate : kRoundOffGrowth;
+    return std::abs(m.growth_rate) > allowed * std::abs(m.s);
+}
 
 nlohmann::json check_json(const EigenpairCheck& c) {
     nlohmann::json j = {{"backward_error", c.backward_error}, {"accepted", c.accepted}};
     if (c.error_bound >= 0.0) j["error_bound"] = c.error_bound;
+    if (c.error_estimate >= 0.0 && std::isfinite(c.error_estimate)) {
+        j["error_estimate"] = c.error_estimate;
+    }
     if (c.mass_orthogonality >= 0.0) j["mass_orthogonality"] = c.mass_orthogonality;
     if (c.mass_participation >= 0.0) j["mass_participation"] = c.mass_participation;
     if (!c.accepted) j["failed"] = c.failure;
@@ -34,7 +45,7 @@ void report_checked_modes(const std::vector<CheckedMode>& modes, const std::stri
         j["s"] = {m.s.real(), m.s.imag()};
         j["growth_rate"] = m.growth_rate;
         j["check"] = check_json(m.check);
-        if (std::abs(m.growth_rate) > kRoundOffGrowth * std::abs(m.s)) ++complex_pairs;
+        if (grows_or_decays(m)) ++complex_pairs;
         if (m.check.accepted) {
             accepted.push_back(m.frequency_hz);
             j["frequency_hz"] = m.frequency_hz;

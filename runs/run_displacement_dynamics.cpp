@@ -73,31 +73,36 @@ std::vector<Vec6> node_amplitudes(const form::Mesh& mesh, const VecX& shape) {
     return out;
 }
 
-// Modes of M ẍ + G ẋ + K x = 0 about a state at rest in the turning frame, from the first-order
-// pencil (formulations/displacement/gyroscopic_modal.hpp) by the shift-invert Arnoldi of the
-// mixed formulation's modal analysis; each mode's shape is the displacement half of its
+// Modes of M ẍ + G ẋ + K x = 0 about a state at rest in the turning frame: the first-order
+// pencil's shift-invert Arnoldi, each pair refined on the quadratic problem and checked there
+// (formulations/displacement/gyroscopic_modal.hpp); each mode's shape is its displacement
 // eigenvector, phase removed (largest component real), real part. `add_mode(shape, mode)`.
 template <class AddMode>
-void gyroscopic_modes(const form::GyroscopicPencil& pencil, int count, const AddMode& add_mode,
-                      nlohmann::json& result) {
-    const form::DaeModalSolution s = form::solve_dae_modal(pencil.A, pencil.B, count);
-    const Eigen::Index n = pencil.scaling.size();
-    for (size_t i = 0; i < s.frequencies_hz.size(); ++i) {
-        VecXc x = pencil.scaling.cast<std::complex<double>>().asDiagonal() * s.shapes[i].head(n);
+void gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G, const SparseMatrix& M,
+                      int count, const AddMode& add_mode, nlohmann::json& result) {
+    const form::GyroscopicModes s = form::solve_gyroscopic_modes(K, G, M, count);
+    for (const form::GyroscopicMode& m : s.modes) {
+        VecXc x = m.shape;
         Eigen::Index peak = 0;
         x.cwiseAbs().maxCoeff(&peak);
         if (std::abs(x[peak]) > 0.0) x *= std::abs(x[peak]) / x[peak];
-        const std::complex<double> mode(s.growth_rates[i], 2.0 * kPi * s.frequencies_hz[i]);
-        add_mode(VecX(x.real()), {s.frequencies_hz[i], s.growth_rates[i], mode, s.checks[i]});
-        result["modes"].back()["growth_rate"] = s.growth_rates[i];
-        const std::complex<double> omega2 = -mode * mode;
-        result["modes"].back()["omega_squared"] = {omega2.real(), omega2.imag()};
+        const double frequency_hz = m.s.imag() / (2.0 * kPi);
+        add_mode(VecX(x.real()), {frequency_hz, m.s.real(), m.s, m.check});
+        nlohmann::json& j = result["modes"].back();
+        j["growth_rate"] = m.s.real();
+        const std::complex<double> omega2 = -m.s * m.s;
+        j["omega_squared"] = {omega2.real(), omega2.imag()};
+        j["refinement"] = {{"arnoldi_s", {m.arnoldi_s.real(), m.arnoldi_s.imag()}},
+                           {"steps", m.refinement_steps}};
     }
     result["modal"] = {
         {"solver",
          "first-order form of (s²M + sG + K)φ = 0, shift-invert Arnoldi on "
-         "(A + σB)⁻¹B, σ = 0, sparse LU"},
+         "(A + σB)⁻¹B, σ = 0, sparse LU; each pair refined on the quadratic problem"},
         {"arnoldi_vectors", s.arnoldi_vectors},
+        {"refinement", s.conservative ? "conservative (M, K symmetric, G skew): one-sided "
+                                        "Rayleigh functional, a stable s on the imaginary axis"
+                                      : "two-sided Rayleigh functional"},
         {"rotating_frame",
          "modes about the steady rotating state: centrifugal stiffening and spin softening in K, "
          "the Coriolis (gyroscopic) coupling in G (docs/rotating-frame.md)"}};
@@ -144,8 +149,7 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
         }
         const Vec3 omega = std::sqrt(lambda) * model.rotating_frame.angular_velocity;
         const SparseMatrix G = form::gyroscopic_matrix(M, omega);
-        gyroscopic_modes(form::gyroscopic_pencil(K, G, M), model.analysis.modal.modes, add_mode,
-                         result);
+        gyroscopic_modes(K, G, M, model.analysis.modal.modes, add_mode, result);
         result["modal"]["mass_rule"] = choice_name(model.discretization.displacement.mass_rule);
     } else {
         const form::ModalSolution s = form::solve_modal(K, M, model.analysis.modal.modes);

@@ -121,7 +121,7 @@ ModalSolution solve_modal(const SparseMatrix& K_sparse, const SparseMatrix& M_sp
     ModalSolution s;
     const double kmax = K.cwiseAbs().maxCoeff();
     s.asymmetry = kmax > 0.0 ? (K - K.transpose()).cwiseAbs().maxCoeff() / kmax : 0.0;
-    s.symmetric = s.asymmetry <= 1e-10;
+    s.symmetric = s.asymmetry <= kStiffnessSymmetryTolerance;
     std::optional<Eigen::LLT<MatX>> llt;
     if (s.symmetric) llt = mass_cholesky(M);
     std::vector<Eigenpair> pairs = s.symmetric ? symmetric_pairs(K, *llt) : general_pairs(K, M);

@@ -36,6 +36,10 @@
 
 namespace rotbeam::form {
 
+// K (scaled by D) counts as symmetric when ‖K − Kᵀ‖_max ≤ this × ‖K‖_max: assembled from a
+// potential's Hessian it is symmetric to ~1e-15; a follower load's stiffness is not, by orders.
+inline constexpr double kStiffnessSymmetryTolerance = 1e-10;
+
 // One eigenpair K φ = ω² M φ. Oscillation e^{st} with s² = −ω²: `growth_rate` = |Re s| (zero for
 // a real ω² > 0; the growing member of the pair ±Re s for a complex ω² — flutter — and for a
 // negative ω² — divergence, f = 0), `frequency_hz` = Im s / 2π = Re √ω² / 2π.

@@ -1,12 +1,18 @@
 #include "formulations/displacement/gyroscopic_modal.hpp"
 
+#include <algorithm>
 #include <map>
+#include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/quadratic_eigenpair.hpp"
+#include "core/shift_invert_arnoldi.hpp"
 #include "core/so3.hpp"
 #include "formulations/displacement/calculate_inertial_forces.hpp"
+#include "formulations/displacement/displacement_modal.hpp"
 
 namespace rotbeam::form {
 
@@ -75,6 +81,75 @@ GyroscopicPencil gyroscopic_pencil(const SparseMatrix& K, const SparseMatrix& G,
     p.B.resize(2 * n, 2 * n);
     p.B.setFromTriplets(b.begin(), b.end());
     return p;
+}
+
+namespace {
+
+// ‖S ∓ Sᵀ‖_max / ‖S‖_max: the asymmetry (sign −1) or the departure from skew symmetry (+1).
+double gyroscopic_structure_defect(const SparseMatrix& S, double sign) {
+    const double largest = S.coeffs().cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) return 0.0;
+    const SparseMatrix d = S + sign * SparseMatrix(S.transpose());
+    return d.nonZeros() > 0 ? d.coeffs().cwiseAbs().maxCoeff() / largest : 0.0;
+}
+
+}  // namespace
+
+GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G,
+                                       const SparseMatrix& M, int count) {
+    ROTBEAM_VERIFY(count > 0, "modal analysis: a positive mode count");
+    const GyroscopicPencil pencil = gyroscopic_pencil(K, G, M);
+    const auto D = pencil.scaling.asDiagonal();
+    const SparseMatrix Ks = D * K * D, Gs = D * G * D, Ms = D * M * D;
+    GyroscopicModes out;
+    out.conservative = gyroscopic_structure_defect(Ks, -1.0) <= kStiffnessSymmetryTolerance &&
+                       gyroscopic_structure_defect(Gs, 1.0) <= kStiffnessSymmetryTolerance &&
+                       gyroscopic_structure_defect(Ms, -1.0) <= kStiffnessSymmetryTolerance;
+
+    const Eigen::Index n = K.rows();
+    // Each mode is a conjugate (or a ±) pair of Ritz values; two spare pairs guard against a
+    // pair split at the edge of the requested set (as the mixed formulation's modal analysis).
+    const int nev = std::min(2 * count + 4, static_cast<int>(2 * n) - 2);
+    const ShiftInvertRitz ritz = shift_invert_arnoldi(pencil.A, pencil.B, nev, 0.0);
+    out.arnoldi_vectors = ritz.arnoldi_vectors;
+    struct Candidate {
+        std::complex<double> s;
+        Eigen::Index index;
+    };
+    std::vector<Candidate> kept;
+    for (Eigen::Index i = 0; i < ritz.theta.size(); ++i) {
+        const std::optional<std::complex<double>> s = ritz_eigenvalue(ritz, i, 0.0);
+        if (!s) continue;
+        const bool real = std::abs(s->imag()) <= kRealEigenvalueTolerance * std::abs(*s);
+        if (real ? s->real() > 0.0 : s->imag() > 0.0) kept.push_back({*s, i});
+    }
+    if (static_cast<int>(kept.size()) < count) {
+        std::ostringstream m;
+        m << "modal analysis about the rotating state (Arnoldi): only " << kept.size()
+          << " modes found, " << count << " requested";
+        throw SolverError(m.str());
+    }
+    std::sort(kept.begin(), kept.end(),
+              [](const Candidate& a, const Candidate& b) { return a.s.imag() < b.s.imag(); });
+    kept.resize(static_cast<size_t>(count));
+
+    const QuadraticPencil q{Ms, Gs, Ks, out.conservative};
+    for (const Candidate& c : kept) {
+        const RefinedQuadraticPair r =
+            refine_quadratic_pair(q, c.s, ritz.vectors.col(c.index).head(n));
+        GyroscopicMode m;
+        m.s = r.s;
+        m.arnoldi_s = c.s;
+        m.shape = pencil.scaling.cast<std::complex<double>>().asDiagonal() * r.x;
+        m.check = r.check;
+        m.error = r.error;
+        m.refinement_steps = r.steps;
+        out.modes.push_back(std::move(m));
+    }
+    std::stable_sort(
+        out.modes.begin(), out.modes.end(),
+        [](const GyroscopicMode& a, const GyroscopicMode& b) { return a.s.imag() < b.s.imag(); });
+    return out;
 }
 
 }  // namespace rotbeam::form

@@ -16,10 +16,25 @@
 // The quadratic eigenproblem (s² M + s G + K) φ = 0 is solved in first-order form for
 // y = [x; ẋ], scaled by D = diag(M)^(−1/2) as the modal solver scales its pencil,
 //   A = [0, −I; DKD, DGD],   B = [I, 0; 0, DMD],   A y = −s B y,
-// by the shift-invert Arnoldi of the mixed formulation's modal analysis with its eigenpair checks
-// (formulations/mixed/mixed_modal.hpp). The frequency is Im s / 2π, Re s the growth rate.
+// by the shift-invert Arnoldi of the mixed formulation's modal analysis (core/
+// shift_invert_arnoldi.hpp, σ = 0: the modes nearest s = 0). Its eigenvalues are accurate to
+// round-off relative to the largest |s| of the pencil (~1e6 1/s for a stiff section with small
+// rotary inertia), not to their own size: Re s of a conservative system was left at up to
+// 1.8e-6 1/s. So each pair is refined on the quadratic problem itself with the exact (scaled)
+// matrices, and carries its own error estimate (core/quadratic_eigenpair.hpp): for a conservative
+// system (K symmetric and G skew to kStiffnessSymmetryTolerance, M symmetric) the refinement puts
+// a stable s on the imaginary axis exactly.
+//
+// Kept: one of each conjugate pair of oscillatory eigenvalues (Im s > 0) and the growing member
+// of each real pair (s > 0, f = 0: divergence; a gyroscopic system's spectrum is symmetric about
+// the imaginary axis, so −s is found with it); a real s < 0 without damping is dropped, as it
+// was before. The frequency is Im s / 2π, Re s the growth rate.
 #pragma once
 
+#include <complex>
+#include <vector>
+
+#include "core/eigenpair_check.hpp"
 #include "core/nonlinear_system.hpp"
 #include "core/types.hpp"
 
@@ -37,5 +52,25 @@ struct GyroscopicPencil {
 };
 GyroscopicPencil gyroscopic_pencil(const SparseMatrix& K, const SparseMatrix& G,
                                    const SparseMatrix& M);
+
+struct GyroscopicMode {
+    std::complex<double> s;          // refined: Im s > 0, or a real s > 0 (divergence)
+    std::complex<double> arnoldi_s;  // the Arnoldi iteration's, before refinement
+    VecXc shape;                     // φ in the problem's unknowns
+    EigenpairCheck check;            // on the quadratic problem (core/quadratic_eigenpair.hpp)
+    double error = 0.0;              // first-order error estimate of s, absolute (1/time)
+    int refinement_steps = 0;
+};
+
+struct GyroscopicModes {
+    std::vector<GyroscopicMode> modes;  // ascending Im s: divergences first
+    int arnoldi_vectors = 0;
+    bool conservative = false;  // the refinement's structure (header comment)
+};
+
+// The `count` modes nearest s = 0 (header comment), refined and checked. Throws SolverError as
+// gyroscopic_pencil, when K is singular, or when fewer than `count` modes are found.
+GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G,
+                                       const SparseMatrix& M, int count);
 
 }  // namespace rotbeam::form

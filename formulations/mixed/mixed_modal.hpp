@@ -9,8 +9,9 @@
 // solver applies. Shift-invert with a real shift σ: (A + σB)⁻¹ B φ = θ φ with θ = 1/(σ − s), so the
 // s nearest σ have the largest |θ| and the infinite ones map to θ = 0 and drop out by themselves.
 // Arnoldi (Spectra's GenEigsSolver, implicitly restarted) on that operator with a sparse LU of
-// A + σB (Eigen's SparseLU, factorized once). σ = 0 (the lowest |s|) needs A itself regular: it is
-// the static tangent augmented by the momentum rows, regular at a stable equilibrium.
+// A + σB (Eigen's SparseLU, factorized once; core/shift_invert_arnoldi.hpp). σ = 0 (the lowest |s|)
+// needs A itself regular: it is the static tangent augmented by the momentum rows, regular at a
+// stable equilibrium.
 //
 // An undamped structure has s = ±iω pairs; one of each pair is kept (Im s > 0) and reported as
 // f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms).

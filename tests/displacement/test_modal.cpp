@@ -3,8 +3,11 @@
 // rotary inertia included), for every mass rule, and a follower load makes K non-symmetric so the
 // QZ path is taken. The joined beam's Table III (ANSYS column, 10 linear elements, one-point
 // stiffness, consistent mass) is gated by `rotbeam verify`.
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,7 @@
 #include "core/static_driver.hpp"
 #include "formulations/displacement/displacement_modal.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
+#include "formulations/displacement/gyroscopic_modal.hpp"
 #include "parameterizations/quaternion.hpp"
 #include "parameterizations/rotation_vector.hpp"
 #include "tests/displacement/modal_state.hpp"
@@ -74,19 +78,29 @@ double worst_pair_error(const form::ModalSolution& s, const std::vector<double>&
     return worst;
 }
 
-// The lowest four modes of the 8 × p2 steel cantilever about its static equilibrium under a
+// The tangent K and mass M of the 8 × p steel cantilever about its static equilibrium under a
 // follower tip force `axial` along the beam (negative: compressive), quaternion rotations.
-form::ModalSolution modes_under_follower_tip_force(double axial) {
-    Model model = steel_cantilever(8, 2, "consistent");
+struct FollowerLoadedState {
+    SparseMatrix K, M;
+};
+FollowerLoadedState state_under_follower_tip_force(double axial, int order) {
+    Model model = steel_cantilever(8, order, "consistent");
     PointLoad f;
     f.point = 1;
     f.force = Vec3(axial, 0.0, 0.0);
     f.frame = LoadFrame::follower;
     model.point_loads = {f};
     form::DisplacementStatics<param::Quaternion> problem(model);
-    SparseMatrix M;
-    const SparseMatrix K = test::tangent_and_mass_at_equilibrium(model, problem, {1.0}, M);
-    return form::solve_modal(K, M, 4);
+    FollowerLoadedState s;
+    s.K = test::tangent_and_mass_at_equilibrium(model, problem, {1.0}, s.M);
+    return s;
+}
+
+// Its lowest four modes at p = 2 by the modal solver without gyroscopic terms (QZ: K is not
+// symmetric).
+form::ModalSolution modes_under_follower_tip_force(double axial) {
+    const FollowerLoadedState s = state_under_follower_tip_force(axial, 2);
+    return form::solve_modal(s.K, s.M, 4);
 }
 
 }  // namespace
@@ -260,6 +274,55 @@ BOOST_AUTO_TEST_CASE(past_the_flutter_load_a_complex_pair_is_reported_with_its_g
         }
     }
     BOOST_TEST(complex_pairs >= 2);  // one coalesced pair in each bending plane
+}
+
+// Beck's column through the solver of the modes about a spinning state
+// (formulations/displacement/gyroscopic_modal.hpp) at Ω = 0 (G = 0): the first-order pencil's
+// Arnoldi, each pair refined on the quadratic problem by the two-sided functional (K is not
+// symmetric: no conservative structure) with its own error estimate, which the run's
+// flutter/divergence verdict reads (runs/modal_checks.cpp). Closed form: flutter at
+// P = 20.05 EI/L² (Beck 1952) = 3509 N here; the 8 × p4 model's frequencies are within 2.7e-5 of
+// the Timoshenko beam's (above), and shear and rotary inertia change the Euler–Bernoulli value by
+// a relative 1e-5 (EI/(κGA L²), ρI/(ρA L²)): far inside the ±3 % bracket used. At 0.97 P every
+// |Re s| is within its eigenvalue's error estimate, so no growth would be reported (measured
+// |Re s| ≤ 1.3e-9 1/s, estimates ≥ 4.2e-8 1/s: their floor, the round-off of the stiff matrices'
+// entries, is 2e-10 to 4e-10 |s|). At 1.03 P the lowest four modes are the coalesced pairs of the
+// two bending planes (equal: a square section), each kept twice — the growing and the decaying
+// member of ±s, ±s̄ with Im s > 0 — all with |Re s| (25.5 1/s) far above its estimate, and s agrees
+// with the QZ of the modal solver without gyroscopic terms (s = i√ω²) to 1e-8: the dense solver's
+// floor on this cantilever's stiffness (≤ 5e-9 on the frequencies at p = 6, above; the refined s
+// estimates its own error at 3e-10); measured 1.6e-9.
+BOOST_AUTO_TEST_CASE(beck_flutter_is_reported_by_the_gyroscopic_solver_above_its_load_only) {
+    const double critical = 20.05 * kE * kI;  // L = 1
+    for (const double factor : {0.97, 1.03}) {
+        const FollowerLoadedState state = state_under_follower_tip_force(-factor * critical, 4);
+        const SparseMatrix G(state.K.rows(), state.K.cols());
+        const form::GyroscopicModes g = form::solve_gyroscopic_modes(state.K, G, state.M, 4);
+        BOOST_TEST(!g.conservative);
+        const form::ModalSolution qz = form::solve_modal(state.K, state.M, 4);
+        int growing = 0;
+        for (size_t i = 0; i < g.modes.size(); ++i) {
+            const form::GyroscopicMode& m = g.modes[i];
+            BOOST_TEST_MESSAGE("P/P_cr " << factor << ": s = " << m.s << " (Arnoldi " << m.arnoldi_s
+                                         << "), error estimate " << m.error << ", "
+                                         << describe(m.check));
+            BOOST_TEST(m.check.accepted);
+            if (std::abs(m.s.real()) > m.error) {
+                ++growing;
+                BOOST_TEST(std::abs(m.s.real()) > 1e6 * m.error);
+                // The QZ pair of the same ω² (the nearest).
+                double nearest = std::numeric_limits<double>::infinity();
+                for (const form::ModalPair& p : qz.pairs) {
+                    const std::complex<double> s =
+                        std::complex<double>(0.0, 1.0) * std::sqrt(p.omega2);
+                    nearest = std::min({nearest, std::abs(s - m.s), std::abs(-std::conj(s) - m.s)});
+                }
+                BOOST_TEST_MESSAGE("  QZ: relative difference " << nearest / std::abs(m.s));
+                BOOST_TEST(nearest <= 1e-8 * std::abs(m.s));
+            }
+        }
+        BOOST_TEST(growing == (factor < 1.0 ? 0 : 4));
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
