@@ -20,6 +20,7 @@ export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 
 heavy='^(test_parameterizations|test_displacement|test_mixed_dynamics|test_mixed_unit|test_displacement_dynamics_jacobian|test_modal_checks|test_harness)$'
 cmake --preset asan >/dev/null
+build_start=$SECONDS
 if [ $full -eq 1 ]; then
   cmake --build --preset asan -j "$(nproc)"
 else
@@ -35,6 +36,7 @@ else
   # test_install_consumer installs.
   cmake --build --preset asan -j "$(nproc)" --target rotbeam rotbeam_completion "${unit[@]}"
 fi
+echo "asan: build done in $((SECONDS - build_start)) s"
 
 step() { echo "asan: $1 ($(( $(date +%s) - t0 )) s so far)"; }
 t0=$(date +%s)

@@ -5,5 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 cmake --preset release >/dev/null
+start=$SECONDS
 cmake --build --preset release -j "$(nproc)"
+echo "test.sh: build done in $((SECONDS - start)) s"
 ctest --preset release -j "$(nproc)" "$@"
