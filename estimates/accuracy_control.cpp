@@ -78,7 +78,7 @@ struct Step {
     std::string stop;      // why not
 };
 
-bool trapezoidal(const Model& model) {
+bool uses_trapezoidal_rule(const Model& model) {
     return model.discretization.formulation == Formulation::displacement &&
            model.discretization.quadrature == Quadrature::trapezoidal;
 }
@@ -92,7 +92,7 @@ bool trapezoidal(const Model& model) {
 // order 15 on the roll-up diverged, and near that the rule's error is far above its r⁻²
 // asymptote (docs/accuracy-control.md, "Trapezoidal quadrature"). False: past the budget.
 bool refine_quadrature(Model& next, int doublings, const AccuracyBudget& budget) {
-    if (!trapezoidal(next)) return true;
+    if (!uses_trapezoidal_rule(next)) return true;
     int& r = next.discretization.refine;
     for (int i = 0; i < doublings; ++i) r *= 2;
     r = std::max(r, kTrapezoidalPointsPerOrder * next.discretization.order);
@@ -100,7 +100,7 @@ bool refine_quadrature(Model& next, int doublings, const AccuracyBudget& budget)
 }
 
 std::string refine_note(const Model& model, const Model& next) {
-    if (!trapezoidal(model)) return "";
+    if (!uses_trapezoidal_rule(model)) return "";
     return ", refine " + std::to_string(model.discretization.refine) + " -> " +
            std::to_string(next.discretization.refine);
 }
@@ -225,7 +225,7 @@ json attempt_json(const Model& model, const Attempt& a, const json& result, doub
               {"status", a.status},
               {"wall_seconds", seconds},
               {"run_seconds", result.value("wall_seconds", 0.0)}};
-    if (trapezoidal(model)) j["refine"] = a.refine;
+    if (uses_trapezoidal_rule(model)) j["refine"] = a.refine;
     if (result.contains("estimate")) {
         j["estimate_status"] = result["estimate"].value("status", std::string());
         j["estimate_seconds"] = result["estimate"].value("wall_seconds", 0.0);
@@ -246,7 +246,7 @@ Model coarse_start(const Model& model) {
     if (model.discretization.formulation != Formulation::displacement) return start;
     for (Member& m : start.members) m.elements = 1;
     start.discretization.order = std::max(model.discretization.order, kSpectralOrder);
-    if (trapezoidal(start)) {
+    if (uses_trapezoidal_rule(start)) {
         start.discretization.refine = std::max(
             start.discretization.refine, kTrapezoidalPointsPerOrder * start.discretization.order);
     }
@@ -371,9 +371,10 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         {"tolerance", tolerance},
         {"target", target},
         {"status", reached ? "reached" : "not-reached"},
-        {"strategy", mixed                ? "h (element count from the observed order)"
-                     : trapezoidal(model) ? "p while spectral, else h; refine doubled per step"
-                                          : "p while spectral, else h"},
+        {"strategy", mixed ? "h (element count from the observed order)"
+                     : uses_trapezoidal_rule(model)
+                         ? "p while spectral, else h; refine doubled per step"
+                         : "p while spectral, else h"},
         {"scales",
          {{"displacement", reference_length(model)},
           {"rotation", 1.0},
@@ -383,7 +384,7 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         {"attempts", attempts},
         {"wall_seconds", elapsed},
         {"solver_status", last.status}};
-    if (trapezoidal(model)) acc["chosen"]["refine"] = last.refine;
+    if (uses_trapezoidal_rule(model)) acc["chosen"]["refine"] = last.refine;
     if (last.measured) acc["worst_relative"] = last.worst;
     if (!reached) {
         acc["reason"] = stop;
