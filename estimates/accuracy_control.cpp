@@ -37,11 +37,14 @@ constexpr double kMinSplit = 2.0;
 constexpr double kMaxSplit = 16.0;
 // Two refinements in a row that each leave more than half the worst estimate: stagnation.
 constexpr double kStagnation = 0.5;
+// Trapezoidal quadrature: refine ≥ this × the order (refine_quadrature).
+constexpr int kTrapezoidalPointsPerOrder = 2;
 
 struct Attempt {
     int order = 1;
     std::vector<int> elements;  // per member
     int substeps = 1;
+    int refine = 1;  // trapezoidal quadrature
     std::string status;
     bool measured = false;  // estimated: `worst` is defined
     double worst = 0.0;
@@ -75,6 +78,41 @@ struct Step {
     std::string stop;      // why not
 };
 
+bool uses_trapezoidal_rule(const Model& model) {
+    return model.discretization.formulation == Formulation::displacement &&
+           model.discretization.quadrature == Quadrature::trapezoidal;
+}
+
+// The trapezoidal rule's error does not fall with the order or the elements but as refine⁻², and
+// it has a point at each station and element end and refine − 1 between. Each refinement step of
+// the control doubles refine per order it adds (`doublings`), as the estimate's p+1 companion
+// (order p + 1, refine 2r) does: the quadrature part of the error then falls at least fourfold
+// per step and the companion is the next step's run. Refine stays ≥ twice the order, so every
+// element has at least 2p + 1 points: with p + 1 (the fewest the mesh accepts) one element of
+// order 15 on the roll-up diverged, and near that the rule's error is far above its r⁻²
+// asymptote (docs/accuracy-control.md, "Trapezoidal quadrature"). False: past the budget.
+bool refine_quadrature(Model& next, int doublings, const AccuracyBudget& budget) {
+    if (!uses_trapezoidal_rule(next)) return true;
+    int& r = next.discretization.refine;
+    for (int i = 0; i < doublings; ++i) r *= 2;
+    r = std::max(r, kTrapezoidalPointsPerOrder * next.discretization.order);
+    return r <= budget.refine;
+}
+
+std::string refine_note(const Model& model, const Model& next) {
+    if (!uses_trapezoidal_rule(model)) return "";
+    return ", refine " + std::to_string(model.discretization.refine) + " -> " +
+           std::to_string(next.discretization.refine);
+}
+
+Step refine_budget_stop(const AccuracyBudget& budget, const Model& next) {
+    Step s;
+    s.stop = "budget: refine " + std::to_string(next.discretization.refine) +
+             " would pass the largest, " + std::to_string(budget.refine) +
+             " (its p+1 companion doubles it)";
+    return s;
+}
+
 // Every member's elements times `factor` (at least one more), within the budget.
 Step split(const Model& model, double factor, const AccuracyBudget& budget,
            const std::string& why) {
@@ -92,8 +130,10 @@ Step split(const Model& model, double factor, const AccuracyBudget& budget,
                  " elements per member reached (" + why + ")";
         return s;
     }
+    if (!refine_quadrature(next, 1, budget)) return refine_budget_stop(budget, next);
     s.decision = "elements " + std::to_string(total(elements_of(model))) + " -> " +
-                 std::to_string(total(elements_of(next))) + " (" + why + ")";
+                 std::to_string(total(elements_of(next))) + refine_note(model, next) + " (" + why +
+                 ")";
     s.model = std::move(next);
     return s;
 }
@@ -130,9 +170,13 @@ Step refine_displacement(const Model& model, const std::vector<Attempt>& history
         }
         Model next = model;
         next.discretization.order = std::min(p + jump, budget.order);
+        if (!refine_quadrature(next, next.discretization.order - p, budget)) {
+            return refine_budget_stop(budget, next);
+        }
         Step s;
         s.decision = "order " + std::to_string(p) + " -> " +
-                     std::to_string(next.discretization.order) + " (" + why + ")";
+                     std::to_string(next.discretization.order) + refine_note(model, next) + " (" +
+                     why + ")";
         s.model = std::move(next);
         return s;
     }
@@ -181,6 +225,7 @@ json attempt_json(const Model& model, const Attempt& a, const json& result, doub
               {"status", a.status},
               {"wall_seconds", seconds},
               {"run_seconds", result.value("wall_seconds", 0.0)}};
+    if (uses_trapezoidal_rule(model)) j["refine"] = a.refine;
     if (result.contains("estimate")) {
         j["estimate_status"] = result["estimate"].value("status", std::string());
         j["estimate_seconds"] = result["estimate"].value("wall_seconds", 0.0);
@@ -201,6 +246,10 @@ Model coarse_start(const Model& model) {
     if (model.discretization.formulation != Formulation::displacement) return start;
     for (Member& m : start.members) m.elements = 1;
     start.discretization.order = std::max(model.discretization.order, kSpectralOrder);
+    if (uses_trapezoidal_rule(start)) {
+        start.discretization.refine = std::max(
+            start.discretization.refine, kTrapezoidalPointsPerOrder * start.discretization.order);
+    }
     return start;
 }
 
@@ -214,7 +263,8 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
     // own discretization (once) instead of stopping: one element may not resolve the solution
     // or may put a node at a chart's singular angle where the case's mesh does not.
     bool on_coarse_path = elements_of(current) != elements_of(model) ||
-                          current.discretization.order != model.discretization.order;
+                          current.discretization.order != model.discretization.order ||
+                          current.discretization.refine != model.discretization.refine;
     std::vector<Attempt> history;
     json attempts = json::array();
     json result;
@@ -228,7 +278,8 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         result.erase("reused");
         const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         Attempt a{current.discretization.order, elements_of(current),
-                  current.analysis.statics.substeps, result.value("status", std::string("error"))};
+                  current.analysis.statics.substeps, current.discretization.refine,
+                  result.value("status", std::string("error"))};
         a.refined = refined;
         a.steps = result.value("steps", json::array()).size();
         std::optional<AccuracyMeasure> m;
@@ -320,8 +371,10 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         {"tolerance", tolerance},
         {"target", target},
         {"status", reached ? "reached" : "not-reached"},
-        {"strategy",
-         mixed ? "h (element count from the observed order)" : "p while spectral, else h"},
+        {"strategy", mixed ? "h (element count from the observed order)"
+                     : uses_trapezoidal_rule(model)
+                         ? "p while spectral, else h; refine doubled per step"
+                         : "p while spectral, else h"},
         {"scales",
          {{"displacement", reference_length(model)},
           {"rotation", 1.0},
@@ -331,6 +384,7 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         {"attempts", attempts},
         {"wall_seconds", elapsed},
         {"solver_status", last.status}};
+    if (uses_trapezoidal_rule(model)) acc["chosen"]["refine"] = last.refine;
     if (last.measured) acc["worst_relative"] = last.worst;
     if (!reached) {
         acc["reason"] = stop;

@@ -4,7 +4,9 @@
 //
 //   displacement formulation: raise the order p while the estimates decay spectrally (each order
 //     divides the worst estimate by 1/ρ ≥ 2, and the order that reaches the target is predicted
-//     from ρ), else split every element, the count predicted from the nodal h-rate 2p;
+//     from ρ), else split every element, the count predicted from the nodal h-rate 2p; with the
+//     trapezoidal quadrature every such step also doubles refine (per order added), as the
+//     estimate's p+1 companion does, and refine stays ≥ twice the order;
 //   mixed formulation: split every element, the count predicted from the observed order;
 //   either: a Newton failure at a load step doubles the sub-steps; a kinematic check that fails
 //     splits the elements.
@@ -35,6 +37,9 @@ struct AccuracyBudget {
     // The run's order: its p+1 companion is one more, within the case format's 24. Past ~12 the
     // p-sequence of docs/studies.md is at round-off on two elements.
     int order = 16;
+    // Trapezoidal quadrature: the run's refine; its p+1 companion doubles it, within the case
+    // format's 1000.
+    int refine = 500;
     int substeps_factor = 64;  // the case's sub-steps doubled at most 6 times
     double seconds = 600.0;    // total wall time; `run --time-limit` replaces it
 };
@@ -57,7 +62,9 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
 // The start of the displacement formulation's controlled run (docs/accuracy-control.md, "Cost"):
 // one element per member at order max(the case's, 6), whatever the case's mesh. Below order 6
 // the control raises p regardless (a coarse p-sequence is not yet spectral), so a lower start
-// only adds attempts. The mixed formulation starts from the case's mesh (returned unchanged).
+// only adds attempts. With the trapezoidal quadrature refine is at least twice that order
+// (docs/accuracy-control.md, "Trapezoidal quadrature").
+// The mixed formulation starts from the case's mesh (returned unchanged).
 Model coarse_start(const Model& model);
 
 }  // namespace rotbeam::estimate

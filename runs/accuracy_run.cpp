@@ -18,13 +18,15 @@ namespace rotbeam {
 
 namespace {
 
-// What tells two runs of one controlled case apart: the refinement changes only these.
-using Key = std::tuple<std::vector<int>, int, int>;  // elements per member, order, sub-steps
+// What tells two runs of one controlled case apart: the refinement changes only these
+// (elements per member, order, sub-steps, the trapezoidal rule's refine).
+using Key = std::tuple<std::vector<int>, int, int, int>;
 
 Key key_of(const Model& model) {
     std::vector<int> elements;
     for (const Member& m : model.members) elements.push_back(m.elements);
-    return {elements, model.discretization.order, model.analysis.statics.substeps};
+    return {elements, model.discretization.order, model.analysis.statics.substeps,
+            model.discretization.refine};
 }
 
 std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {

@@ -9,6 +9,18 @@
 
 namespace rotbeam::cli {
 
+double mixed_cost_factor(AnalysisKind kind) {
+    switch (kind) {
+        case AnalysisKind::static_:
+            return kMixedStaticFactor;
+        case AnalysisKind::dynamic:
+            return kMixedDynamicFactor;
+        case AnalysisKind::modal:
+            return kMixedModalFactor;
+    }
+    return kMixedStaticFactor;
+}
+
 double modelled_seconds(const Model& model) {
     double elements = 0.0;
     for (const Member& m : model.members) elements += std::max(1, m.elements);
@@ -30,8 +42,8 @@ double modelled_seconds(const Model& model) {
             steps = std::max(1, model.analysis.modal.modes);
             break;
     }
-    return kFixedSeconds +
-           kSecondsPerElementStep * elements * order * steps * (mixed ? kMixedFactor : 1.0);
+    return kFixedSeconds + kSecondsPerElementStep * elements * order * steps *
+                               (mixed ? mixed_cost_factor(model.analysis.kind) : 1.0);
 }
 
 namespace {

@@ -10,11 +10,16 @@
 //   left = max( pooled cost left / (v k), largest cost left of one running item / v )
 //          + cost left of the items run alone / v
 //
-// with k the worker threads (or, unknown, the mean number of items running so far), a running
-// item credited with v times the time it has run (at most its cost), and the items run alone
-// (a timed study, a combine step: after the pool, one at a time) added in sequence. Before any
-// item has ended, v is 1 (the model is right), or less when the running items have already run
-// longer than their cost: then their cost over the time they ran (as if about to end).
+// with k the worker threads (or, unknown, the mean number of items running so far), and the items
+// run alone (a timed study, a combine step: after the pool, one at a time) added in sequence. A
+// running item's cost left is its cost less v times the time t it has run; once that is spent
+// (the item is overdue: the model was wrong about it, by an unknown factor) it is expected to run
+// as long again, v t: all that is known of it is t, and "as long again" is the median rest of a
+// duration observed at a random moment of its course, whatever its scale (J. R. Gott, Nature 363,
+// 315, 1993: with probability 1/2 the rest lies between t/3 and 3 t). Before any item has ended,
+// v is 1 (the model is right), or less when the running items have already run longer than their
+// cost: then their cost over the time they ran (the fastest the machine can be); an item is then
+// overdue when it has run longer than its cost.
 //
 // Why not the time spent times the share left: the items are far from equal (a whole study is
 // hours of one core, a study run milliseconds), and the first to end is often the longest, run

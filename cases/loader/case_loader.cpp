@@ -192,24 +192,6 @@ void check_integrator(const YamlReader& r, const YAML::Node& root, const Model& 
     }
 }
 
-// Accuracy control of a static or modal run refines the displacement formulation's elements and
-// order (docs/accuracy-control.md). The trapezoidal rule's points are the section stations divided
-// by `refine`, whatever the elements and order: its error (∝ refine⁻²) does not fall with them,
-// and more elements of a higher order soon find fewer points than nodes (a singular element).
-// Refused by name rather than run into either; Gauss quadrature converges to the same beam (the
-// trapezoidal rule's limit is the exact integral of the stations' interpolated properties).
-void check_accuracy_quadrature(const YamlReader& r, const YAML::Node& root, const Model& model) {
-    if (model.analysis.accuracy <= 0.0 || model.analysis.kind == AnalysisKind::dynamic) return;
-    if (model.discretization.formulation != Formulation::displacement ||
-        model.discretization.quadrature != Quadrature::trapezoidal) {
-        return;
-    }
-    r.fail(root["analysis"]["accuracy"], "analysis.accuracy",
-           "accuracy control chooses elements and order, not the trapezoidal rule's refine, whose "
-           "error does not fall with them: set discretization.quadrature: full (Gauss, the same "
-           "beam in the limit), or choose refine by hand without accuracy control");
-}
-
 // The displacement formulation's `midpoint` mass rule samples the inertia at one point per
 // element: its element mass has rank 6 while an element of order p couples 6(p + 1) unknowns, so
 // for p ≥ 2 the assembled mass is singular (an infinite eigenvalue per missing rank; the dense
@@ -269,7 +251,6 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     check_topology(r, root, model);
     check_mass_rule(r, root, model);
     check_integrator(r, root, model);
-    check_accuracy_quadrature(r, root, model);
     // Inertia is needed by dynamics, modal analysis and gravity: every section must have mass.
     if (model.needs_inertia() || model.gravity.norm() > 0.0 || model.rotating_frame.active()) {
         for (const Member& m : model.members) {

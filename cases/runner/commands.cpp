@@ -199,8 +199,9 @@ void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
        << " (estimates <= " << a["target"].get<double>() << " of their scale; "
        << a["strategy"].get<std::string>() << "):\n";
     for (const auto& t : a["attempts"]) {
-        os << "  " << t["elements"] << " elements, order " << t["order"] << ", " << t["substeps"]
-           << " sub-steps: " << t["status"].get<std::string>();
+        os << "  " << t["elements"] << " elements, order " << t["order"] << ", ";
+        if (t.contains("refine")) os << "refine " << t["refine"] << ", ";
+        os << t["substeps"] << " sub-steps: " << t["status"].get<std::string>();
         if (t.contains("worst_relative")) {
             os << ", worst estimate " << t["worst_relative"].get<double>() << " ("
                << t["worst_quantity"].get<std::string>() << ")";
@@ -210,8 +211,10 @@ void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
         os << "\n";
     }
     os << "accuracy: " << a["status"].get<std::string>() << ", " << a["chosen"]["elements"]
-       << " elements, order " << a["chosen"]["order"] << ", " << a["chosen"]["substeps"]
-       << " sub-steps; " << a["wall_seconds"].get<double>() << " s in all";
+       << " elements, order " << a["chosen"]["order"] << ", ";
+    if (a["chosen"].contains("refine")) os << "refine " << a["chosen"]["refine"] << ", ";
+    os << a["chosen"]["substeps"] << " sub-steps; " << a["wall_seconds"].get<double>()
+       << " s in all";
     if (a.contains("reason")) os << " — " << a["reason"].get<std::string>();
     os << std::setprecision(10) << "\n";
 }

@@ -62,6 +62,38 @@ BOOST_AUTO_TEST_CASE(spectral_decay_raises_the_order_to_the_predicted_one) {
     BOOST_TEST(r["accuracy"]["attempts"].size() == 3u, r["accuracy"]["attempts"].dump());
 }
 
+// Trapezoidal quadrature: an error that is the rule's alone, 0.1 refine⁻² (nothing gained by p or
+// h without more points). The coarse start takes refine to twice its order 6 (12: 6.9e-4), each
+// order step doubles it (the p+1 companion's discretization): order 7 at refine 24 shows the
+// decay 1/4 per order, and the predicted jump of 3 orders lands on refine 192 (2.7e-6), the first
+// of the doubling sequence under TOL/2 = 5e-6 (it needs ≥ 142). Without refine in the control the
+// error stays at 0.1 whatever the order. With a budget of refine 100 it stops, naming refine.
+BOOST_AUTO_TEST_CASE(trapezoidal_quadrature_doubles_refine_with_each_step) {
+    Model model = unit_model(Formulation::displacement, 1, 6);
+    model.discretization.quadrature = Quadrature::trapezoidal;
+    const auto quadrature_error = [](const Model& m) {
+        return 0.1 / std::pow(static_cast<double>(m.discretization.refine), 2.0);
+    };
+    const json r =
+        control_accuracy(model, 1e-5, {}, synthetic(quadrature_error), coarse_start(model));
+    BOOST_TEST(r["accuracy"]["status"] == "reached", r["accuracy"].dump());
+    const json& attempts = r["accuracy"]["attempts"];
+    BOOST_TEST_REQUIRE(attempts.size() == 3u, attempts.dump());
+    BOOST_TEST(attempts[0]["refine"] == 12);
+    BOOST_TEST(attempts[1]["refine"] == 24);
+    BOOST_TEST(attempts[2]["order"] == 10);
+    BOOST_TEST(attempts[2]["refine"] == 192);
+    BOOST_TEST(r["accuracy"]["chosen"]["refine"] == 192);
+    BOOST_TEST(r["accuracy"]["strategy"] == "p while spectral, else h; refine doubled per step");
+    AccuracyBudget small;
+    small.refine = 100;
+    const json stopped =
+        control_accuracy(model, 1e-5, small, synthetic(quadrature_error), coarse_start(model));
+    BOOST_TEST(stopped["status"] == "accuracy-not-reached");
+    BOOST_TEST(stopped["accuracy"]["reason"].get<std::string>().find("refine") !=
+               std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(no_spectral_decay_splits_the_elements) {
     // e = N^−4, no better with p on this mesh from order 6 on: h is taken.
     const json r = control_accuracy(

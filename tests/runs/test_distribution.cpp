@@ -133,6 +133,60 @@ BOOST_AUTO_TEST_CASE(an_estimated_run_is_priced_with_its_estimate) {
     }
 }
 
+// The mixed formulation's price against the displacement formulation's on the catalog's cases at
+// their own discretizations: the cost model's ratio mixed / displacement against the ratio
+// measured on `rotbeam run CASE --formulation F --estimate off --quiet` (baseline binary
+// 63e469b, quaternion, 2026-11-27, under `nice -n 19` at load 10–18; docs/distributed-runs.md,
+// "Cost model"): callgrind instructions of the whole process for statics and modes, CPU seconds
+// (/usr/bin/time, user + sys) for dynamics. One factor per analysis (run_cost.hpp) is the
+// geometric mean of the smallest and largest fitted, so each case lies within √(largest /
+// smallest) of it: 1.4× for statics and dynamics; 1.6× bounds them with the spread of a
+// repeated timing (the dynamic ratios of one case vary by up to 1.3× between timings). The single
+// factor 5 of before priced the static runs 2.7–4.0× and the modes 27× off (it passed only the
+// linear dynamics).
+BOOST_AUTO_TEST_CASE(a_mixed_run_is_priced_as_measured_against_a_displacement_one) {
+    struct Measured {
+        const char* run;
+        AnalysisKind kind;
+        std::vector<int> elements;  // per member
+        int order;                  // of the displacement run
+        int steps;                  // reported load factors × sub-steps, time steps, modes
+        double displacement, mixed;
+    };
+    const Measured measured[] = {
+        {"bend-45", AnalysisKind::static_, {16}, 3, 30, 868863487, 454992214},
+        {"cantilever-moment", AnalysisKind::static_, {16}, 4, 28, 970219859, 350298824},
+        {"cantilever-moment-4", AnalysisKind::static_, {16}, 4, 32, 1354565664, 400261065},
+        {"helix", AnalysisKind::static_, {16}, 4, 32, 906173619, 402084537},
+        {"joined-beam (midpoint mass)", AnalysisKind::modal, {10, 10}, 1, 5, 32248658, 1305742807},
+        // Dynamics: the sums of three timings (one of the follower).
+        {"free-vibration", AnalysisKind::dynamic, {8}, 2, 500, 1.11, 1.78},
+        {"joined-beam-dead", AnalysisKind::dynamic, {10, 10}, 1, 2000, 4.09, 22.58},
+        {"joined-beam-follower", AnalysisKind::dynamic, {10, 10}, 1, 2000, 1.55, 8.03},
+        {"blade-mh104", AnalysisKind::dynamic, {10}, 1, 2000, 2.11, 12.11},
+    };
+    for (const Measured& m : measured) {
+        Model model;
+        for (const int e : m.elements) {
+            model.members.emplace_back();
+            model.members.back().elements = e;
+        }
+        model.analysis.kind = m.kind;
+        model.analysis.statics.load_factors = std::vector<double>(static_cast<size_t>(m.steps));
+        model.analysis.modal.modes = m.steps;
+        model.analysis.dynamics.time_step = 1.0;
+        model.analysis.dynamics.end_time = m.steps;
+        model.discretization.formulation = Formulation::displacement;
+        model.discretization.order = m.order;
+        const double displacement = modelled_seconds(model);
+        model.discretization.formulation = Formulation::mixed;
+        const double priced = modelled_seconds(model) / displacement;
+        const double ratio = m.mixed / m.displacement;
+        BOOST_TEST(priced <= 1.6 * ratio, m.run << ": priced " << priced << ", measured " << ratio);
+        BOOST_TEST(priced >= ratio / 1.6, m.run << ": priced " << priced << ", measured " << ratio);
+    }
+}
+
 // FNV-1a 64 of "a" is af63dc4c8601ec8c (the published test vector of the FNV reference code).
 BOOST_AUTO_TEST_CASE(stable_hash_is_fnv1a) {
     BOOST_TEST(stable_hash("") == "cbf29ce484222325");

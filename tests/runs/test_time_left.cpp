@@ -21,23 +21,23 @@ struct SimulatedEvent {
     size_t item;
 };
 
-// The starts and ends of `pooled` (costs) on `workers` workers at `speed` (cost per second), in
-// order, then of `alone` one after the other; the items are numbered pooled first.
-std::vector<SimulatedEvent> simulate_pool(const std::vector<double>& pooled,
-                                          const std::vector<double>& alone, int workers,
-                                          double speed) {
+// The starts and ends of items that take `pooled` seconds (wall time) on `workers` workers, each
+// taking the next item when it is free, in order, then of `alone` one after the other; the items
+// are numbered pooled first.
+std::vector<SimulatedEvent> simulate_durations(const std::vector<double>& pooled,
+                                               const std::vector<double>& alone, int workers) {
     std::vector<SimulatedEvent> events;
     std::vector<double> free_at(static_cast<size_t>(workers), 0.0);
     for (size_t i = 0; i < pooled.size(); ++i) {
         const auto w = std::min_element(free_at.begin(), free_at.end());
         events.push_back({*w, true, i});
-        *w += pooled[i] / speed;
+        *w += pooled[i];
         events.push_back({*w, false, i});
     }
     double t = *std::max_element(free_at.begin(), free_at.end());
     for (size_t i = 0; i < alone.size(); ++i) {
         events.push_back({t, true, pooled.size() + i});
-        t += alone[i] / speed;
+        t += alone[i];
         events.push_back({t, false, pooled.size() + i});
     }
     // Ends before starts at the same time: a worker frees itself, then takes the next item.
@@ -45,6 +45,17 @@ std::vector<SimulatedEvent> simulate_pool(const std::vector<double>& pooled,
         return a.time < b.time || (a.time == b.time && !a.start && b.start);
     });
     return events;
+}
+
+// The same for items of known cost (`pooled`, `alone`) that all run at `speed` (cost per second).
+std::vector<SimulatedEvent> simulate_pool(const std::vector<double>& pooled,
+                                          const std::vector<double>& alone, int workers,
+                                          double speed) {
+    const auto seconds = [speed](std::vector<double> costs) {
+        for (double& c : costs) c /= speed;
+        return costs;
+    };
+    return simulate_durations(seconds(pooled), seconds(alone), workers);
 }
 
 // The seconds of "about … left" in a progress line ("1 h 02 min", "3 min 05 s", "42 s").
@@ -144,8 +155,10 @@ BOOST_AUTO_TEST_CASE(a_skipped_item_leaves_the_total_but_tells_nothing_of_the_sp
 }
 
 // Before any item has ended the estimate is the model's, marked "(expected)"; items that have run
-// longer than their cost slow it down: two items of 0.2 s running for 10 s each are taken as
-// about to end, a speed of 0.02, so the 3.6 s of cost left on two workers take 90 s.
+// longer than their cost slow it down: two items of 0.2 s running for 10 s each make the speed at
+// most 0.02, and being overdue they are expected to run as long again (10 s each, 0.2 of cost at
+// that speed), so the 4 s of cost left on two workers take 100 s. (Before overdue items ran as
+// long again, they were taken as about to end: 90 s.)
 BOOST_AUTO_TEST_CASE(items_running_past_their_cost_slow_the_expected_speed) {
     WorkSoFar w;
     w.elapsed = 10.0;
@@ -156,10 +169,49 @@ BOOST_AUTO_TEST_CASE(items_running_past_their_cost_slow_the_expected_speed) {
     const auto left = estimate_time_left(w);
     BOOST_REQUIRE(left.has_value());
     BOOST_TEST(left->expected);
-    BOOST_TEST(left->seconds == 90.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(left->seconds == 100.0, boost::test_tools::tolerance(1e-12));
     // On time (each at 0.1 s of its 0.2 s): the model's speed, 3.8 s of cost on two workers.
     w.running = {{0.2, 0.1, false}, {0.2, 0.1, false}};
     BOOST_TEST(estimate_time_left(w)->seconds == 1.9, boost::test_tools::tolerance(1e-12));
+}
+
+// An item that runs four times its expected cost, alone at the end of the pool: the other 50
+// items (4 s each, the model right: speed 1) end at 200 s on the second worker, the long one
+// (expected 100 s) at 400 s. From 100 s on it is overdue and expected to run as long again as it
+// has run, so at time t the estimate is t (at least) where the truth is 400 − t: never below a
+// third of it (t / (400 − t) ≥ 100 / 300 from 100 s on, the bound 1/(k − 1) of an item that runs
+// k times its cost), with a second of the line's rounding. Counted as done once its cost was
+// spent, it made the line say "about 0 s left" from 200 s to 400 s.
+BOOST_AUTO_TEST_CASE(an_overdue_item_is_expected_to_run_as_long_again) {
+    std::vector<double> costs = {100.0}, seconds = {400.0};
+    costs.insert(costs.end(), 50, 4.0);
+    seconds.insert(seconds.end(), 50, 4.0);
+    const std::vector<SimulatedEvent> events = simulate_durations(seconds, {}, 2);
+    const double end = events.back().time;
+    BOOST_TEST_REQUIRE(end == 400.0);
+    double now = 0.0;
+    std::ostringstream out;
+    Progress p("rotbeam suite", costs.size(), out, simulated_options(now, 2));
+    p.set_total_cost(300.0);
+    size_t next = 0;
+    for (double t = 1.0; t < end; t += 1.0) {
+        for (; next < events.size() && events[next].time <= t; ++next) {
+            now = events[next].time;
+            const SimulatedEvent& e = events[next];
+            const std::string item = "item " + std::to_string(e.item);
+            if (e.start) {
+                p.started(item, costs[e.item]);
+            } else {
+                p.finished(item);
+            }
+        }
+        now = t;
+        if (t <= 100.0) continue;  // the long item is not overdue yet
+        const double estimate = seconds_in(p.line());
+        const double actual = end - t;
+        BOOST_TEST(estimate >= actual / 3.0 - 1.0, p.line() << " (actual " << actual << " s)");
+        BOOST_TEST(estimate >= 1.0, p.line());
+    }
 }
 
 // Without costs in seconds nothing is known before the first item ends.
