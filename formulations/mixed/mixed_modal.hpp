@@ -14,7 +14,9 @@
 // stable equilibrium.
 //
 // An undamped structure has s = ±iω pairs; one of each pair is kept (Im s > 0) and reported as
-// f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms).
+// f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms). About a
+// spinning state (solve_dae_modal_refined) a real s > 0 is kept too (divergence), and each pair is
+// refined on A + sB with an error estimate of its own (core/refined_ritz_modes.hpp).
 //
 // Each reported pair is checked against the pencil it claims to solve (core/eigenpair_check.hpp):
 // the backward error of (s, φ) for A φ = s (−B) φ. B = ∂F/∂Ẋ is no mass matrix (singular by
