@@ -43,8 +43,10 @@ struct ComplexPencil {
     }
 };
 
-// The root of a s² + b s + c = 0 nearest `near` (a ≠ 0), without the cancellation of −b ± √·.
+// The root of a s² + b s + c = 0 nearest `near`, without the cancellation of −b ± √·; for a = 0
+// (a linear pencil, M = 0) the one root −c/b.
 Complex nearest_root(Complex a, Complex b, Complex c, Complex near) {
+    if (a == Complex(0.0)) return -c / b;
     const Complex root = std::sqrt(b * b - 4.0 * a * c);
     const Complex q = -0.5 * (std::abs(b + root) >= std::abs(b - root) ? b + root : b - root);
     if (q == Complex(0.0)) return Complex(0.0);  // b = c = 0: the double root 0

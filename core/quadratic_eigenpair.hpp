@@ -2,7 +2,11 @@
 //   Q(s) x = (s² M + s G + K) x = 0,   Q'(s) = 2 s M + G,
 // from an approximation (s₀, x₀) — the shift-invert Arnoldi on its first-order form
 // (formulations/displacement/gyroscopic_modal.hpp), whose eigenvalues are accurate to the
-// first-order pencil's round-off relative to the largest eigenvalue, not to their own size.
+// first-order pencil's round-off relative to the largest eigenvalue, not to their own size
+// (core/refined_ritz_modes.hpp). A linear pencil A + sB is the case M = 0, G = B, K = A (the
+// mixed formulation's linearized DAE, formulations/mixed/mixed_modal.hpp): its functional below is
+// the two-sided Rayleigh quotient s = −yᴴAx / yᴴBx, its estimate and check those of the linear
+// pencil.
 //
 // Refinement (Rayleigh functional iteration; Lancaster, "Lambda-matrices and Vibrating Systems",
 // 1966, §5.7; Voss, "Nonlinear eigenvalue problems", Handbook of Linear Algebra, 2014, §115.3),

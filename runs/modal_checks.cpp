@@ -33,6 +33,10 @@ nlohmann::json check_json(const EigenpairCheck& c) {
 
 }  // namespace
 
+nlohmann::json refinement_json(std::complex<double> arnoldi_s, int steps) {
+    return {{"arnoldi_s", {arnoldi_s.real(), arnoldi_s.imag()}}, {"steps", steps}};
+}
+
 void report_checked_modes(const std::vector<CheckedMode>& modes, const std::string& state,
                           nlohmann::json& result) {
     std::vector<double> accepted;

@@ -18,6 +18,10 @@ struct CheckedMode {
     EigenpairCheck check;
 };
 
+// A refined mode's `refinement` (core/refined_ritz_modes.hpp): the Arnoldi value before the
+// refinement and the steps taken.
+nlohmann::json refinement_json(std::complex<double> arnoldi_s, int steps);
+
 // Appends `check`, `s` and (when accepted) `frequency_hz` to each of result["modes"] (already
 // holding one entry per mode, in order), sets `frequencies_hz`, `status` and `message`.
 void report_checked_modes(const std::vector<CheckedMode>& modes, const std::string& state,

@@ -92,8 +92,7 @@ void gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G, const Sparse
         j["growth_rate"] = m.s.real();
         const std::complex<double> omega2 = -m.s * m.s;
         j["omega_squared"] = {omega2.real(), omega2.imag()};
-        j["refinement"] = {{"arnoldi_s", {m.arnoldi_s.real(), m.arnoldi_s.imag()}},
-                           {"steps", m.refinement_steps}};
+        j["refinement"] = refinement_json(m.arnoldi_s, m.refinement_steps);
     }
     result["modal"] = {
         {"solver",

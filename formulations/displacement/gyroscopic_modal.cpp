@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
-#include <sstream>
 #include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
 #include "core/quadratic_eigenpair.hpp"
+#include "core/refined_ritz_modes.hpp"
 #include "core/shift_invert_arnoldi.hpp"
 #include "core/so3.hpp"
 #include "formulations/displacement/calculate_inertial_forces.hpp"
@@ -112,43 +111,17 @@ GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix
     const int nev = std::min(2 * count + 4, static_cast<int>(2 * n) - 2);
     const ShiftInvertRitz ritz = shift_invert_arnoldi(pencil.A, pencil.B, nev, 0.0);
     out.arnoldi_vectors = ritz.arnoldi_vectors;
-    struct Candidate {
-        std::complex<double> s;
-        Eigen::Index index;
-    };
-    std::vector<Candidate> kept;
-    for (Eigen::Index i = 0; i < ritz.theta.size(); ++i) {
-        const std::optional<std::complex<double>> s = ritz_eigenvalue(ritz, i, 0.0);
-        if (!s) continue;
-        const bool real = std::abs(s->imag()) <= kRealEigenvalueTolerance * std::abs(*s);
-        if (real ? s->real() > 0.0 : s->imag() > 0.0) kept.push_back({*s, i});
-    }
-    if (static_cast<int>(kept.size()) < count) {
-        std::ostringstream m;
-        m << "modal analysis about the rotating state (Arnoldi): only " << kept.size()
-          << " modes found, " << count << " requested";
-        throw SolverError(m.str());
-    }
-    std::sort(kept.begin(), kept.end(),
-              [](const Candidate& a, const Candidate& b) { return a.s.imag() < b.s.imag(); });
-    kept.resize(static_cast<size_t>(count));
-
     const QuadraticPencil q{Ms, Gs, Ks, out.conservative};
-    for (const Candidate& c : kept) {
-        const RefinedQuadraticPair r =
-            refine_quadratic_pair(q, c.s, ritz.vectors.col(c.index).head(n));
+    for (RefinedRitzMode& r : refined_ritz_modes(ritz, 0.0, q, count, "about the rotating state")) {
         GyroscopicMode m;
         m.s = r.s;
-        m.arnoldi_s = c.s;
+        m.arnoldi_s = r.arnoldi_s;
         m.shape = pencil.scaling.cast<std::complex<double>>().asDiagonal() * r.x;
-        m.check = r.check;
+        m.check = std::move(r.check);
         m.error = r.error;
-        m.refinement_steps = r.steps;
+        m.refinement_steps = r.refinement_steps;
         out.modes.push_back(std::move(m));
     }
-    std::stable_sort(
-        out.modes.begin(), out.modes.end(),
-        [](const GyroscopicMode& a, const GyroscopicMode& b) { return a.s.imag() < b.s.imag(); });
     return out;
 }
 

@@ -28,7 +28,8 @@
 // Kept: one of each conjugate pair of oscillatory eigenvalues (Im s > 0) and the growing member
 // of each real pair (s > 0, f = 0: divergence; a gyroscopic system's spectrum is symmetric about
 // the imaginary axis, so −s is found with it); a real s < 0 without damping is dropped, as it
-// was before. The frequency is Im s / 2π, Re s the growth rate.
+// was before (the selection and refinement: core/refined_ritz_modes.hpp, shared with the mixed
+// formulation). The frequency is Im s / 2π, Re s the growth rate.
 #pragma once
 
 #include <complex>

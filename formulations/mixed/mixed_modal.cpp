@@ -7,8 +7,10 @@
 #include <numeric>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/errors.hpp"
+#include "core/refined_ritz_modes.hpp"
 #include "core/shift_invert_arnoldi.hpp"
 
 namespace rotbeam::form {
@@ -53,6 +55,17 @@ DaeModalSolution pack(const SparseMatrix& A, const SparseMatrix& B, std::vector<
     return s;
 }
 
+// The Ritz pairs for `count` modes.
+ShiftInvertRitz dae_modal_ritz(const SparseMatrix& A, const SparseMatrix& B, int count,
+                               double shift) {
+    ROTBEAM_VERIFY(count > 0 && A.rows() == B.rows() && A.rows() == A.cols(), "bad modal input");
+    const int n = static_cast<int>(A.rows());
+    // Each oscillatory mode is a conjugate pair of Ritz values; two spare pairs guard against a
+    // pair split at the edge of the requested set.
+    const int nev = std::min(2 * count + 4, n - 2);
+    return shift_invert_arnoldi(A, B, nev, shift);
+}
+
 }  // namespace
 
 bool DaeModalSolution::accepted() const {
@@ -62,13 +75,29 @@ bool DaeModalSolution::accepted() const {
 
 DaeModalSolution solve_dae_modal(const SparseMatrix& A, const SparseMatrix& B, int count,
                                  double shift) {
-    ROTBEAM_VERIFY(count > 0 && A.rows() == B.rows() && A.rows() == A.cols(), "bad modal input");
-    const int n = static_cast<int>(A.rows());
-    // Each oscillatory mode is a conjugate pair of Ritz values; two spare pairs guard against a
-    // pair split at the edge of the requested set.
-    const int nev = std::min(2 * count + 4, n - 2);
-    const ShiftInvertRitz ritz = shift_invert_arnoldi(A, B, nev, shift);
+    const ShiftInvertRitz ritz = dae_modal_ritz(A, B, count, shift);
     DaeModalSolution s = pack(A, B, modes_from_ritz(ritz, shift), count, "Arnoldi");
+    s.arnoldi_vectors = ritz.arnoldi_vectors;
+    s.converged = ritz.converged;
+    return s;
+}
+
+DaeModalSolution solve_dae_modal_refined(const SparseMatrix& A, const SparseMatrix& B, int count) {
+    const ShiftInvertRitz ritz = dae_modal_ritz(A, B, count, 0.0);
+    // A φ + s B φ = 0 is the quadratic problem with M = 0, G = B, K = A; the DAE's Jacobians have
+    // no symmetry the one-sided functional could use, so the two-sided one is taken.
+    const SparseMatrix none(A.rows(), A.cols());
+    const QuadraticPencil pencil{none, B, A, false};
+    DaeModalSolution s;
+    for (RefinedRitzMode& m :
+         refined_ritz_modes(ritz, 0.0, pencil, count, "of the linearized dynamics")) {
+        s.frequencies_hz.push_back(m.s.imag() / (2.0 * kPi));
+        s.growth_rates.push_back(m.s.real());
+        s.shapes.push_back(std::move(m.x));
+        s.checks.push_back(std::move(m.check));
+        s.arnoldi_s.push_back(m.arnoldi_s);
+        s.refinement_steps.push_back(m.refinement_steps);
+    }
     s.arnoldi_vectors = ritz.arnoldi_vectors;
     s.converged = ritz.converged;
     return s;

@@ -14,7 +14,9 @@
 // stable equilibrium.
 //
 // An undamped structure has s = ±iω pairs; one of each pair is kept (Im s > 0) and reported as
-// f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms).
+// f = |Im s|/2π with Re s (zero to round-off without damping or gyroscopic terms). About a
+// spinning state (solve_dae_modal_refined) a real s > 0 is kept too (divergence), and each pair is
+// refined on A + sB with an error estimate of its own (core/refined_ritz_modes.hpp).
 //
 // Each reported pair is checked against the pencil it claims to solve (core/eigenpair_check.hpp):
 // the backward error of (s, φ) for A φ = s (−B) φ. B = ∂F/∂Ẋ is no mass matrix (singular by
@@ -42,13 +44,27 @@ struct DaeModalSolution {
     std::vector<EigenpairCheck> checks;  // per pair
     int arnoldi_vectors = 0;             // Spectra's ncv
     int converged = 0;                   // Ritz pairs converged
-    bool accepted() const;               // every pair passed its check
+    // solve_dae_modal_refined only (empty otherwise): per pair, the Arnoldi value before the
+    // refinement and the refinement steps taken.
+    std::vector<std::complex<double>> arnoldi_s;
+    std::vector<int> refinement_steps;
+    bool accepted() const;  // every pair passed its check
 };
 
 // The `count` lowest-frequency oscillatory modes of A φ = −s B φ by shift-invert Arnoldi.
 // Throws SolverError when A + σB is singular or fewer than `count` oscillatory modes converge.
 DaeModalSolution solve_dae_modal(const SparseMatrix& A, const SparseMatrix& B, int count,
                                  double shift = 0.0);
+
+// The `count` modes nearest s = 0 of A φ = −s B φ where a growth is the question (the modes about a
+// spinning state, docs/rotating-frame.md): from the same Arnoldi iteration, one of each conjugate
+// pair and, unlike solve_dae_modal, the growing member of each real pair (s > 0, f = 0:
+// divergence), each refined on A + sB by the two-sided Rayleigh functional iteration with its
+// first-order error estimate in check.error_estimate (core/refined_ritz_modes.hpp,
+// core/quadratic_eigenpair.hpp with M = 0): the flutter/divergence verdict's threshold
+// (runs/modal_checks.cpp). Ascending Im s: divergences first. Throws SolverError as
+// solve_dae_modal.
+DaeModalSolution solve_dae_modal_refined(const SparseMatrix& A, const SparseMatrix& B, int count);
 
 // The same by a dense eigen-decomposition of (A + σB)⁻¹B (all eigenvalues; for small models and
 // as the cross-check of the Arnoldi iteration in the tests).
