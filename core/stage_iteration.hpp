@@ -55,8 +55,8 @@ namespace rotbeam {
 //    change δ of h changes their (λ/h)-terms by at most 2δ, and the contraction by as much,
 //    nothing at δ = 1e-6 against contractions of 1e-3 and more. It admits the fixed-step loop's
 //    steps t_{n+1} − t_n, which differ from the case's Δt in the last bits (on 616 of the 1 600
-//    steps of the joined beam at 1.25 ms, where an exact comparison refused the matrix), and
-//    refuses an adaptive controller's changes (≥ 1e-3), after which fresh matrices are made;
+//    steps of the joined beam at 1.25 ms, where an exact comparison refused the matrix), and,
+//    but by chance, refuses an adaptive controller's changes, after which fresh ones are made;
 //  - the budget: an iteration with kept matrices that has not converged after the iterations of
 //    the last step on fresh ones plus `fresh_cost` (the cost of fresh matrices, Jacobian
 //    evaluations and factorizations, in stage iterations, from the scheme's measured kernels:
@@ -64,7 +64,7 @@ namespace rotbeam {
 //    would; it is abandoned and the step restarts with fresh matrices, as after a failure.
 // Dropping the contraction test for the budget alone (keep while a kept step takes at most
 // `fresh_cost` iterations more than the last fresh one) was measured a net loss on the joined
-// beam: Gauss 3 at 1.25 ms doubled its iterations (11 860 → 22 793) to save 675 of 1 472 fresh
+// beam: Gauss 3 at 1.25 ms doubled its iterations (11 860 → 22 793) to save 649 of 1 446 fresh
 // matrices, Radau at 0.75 ms 12 990 → 24 743 iterations to save 850 of 891 Jacobians
 // (docs/performance.md, "Kept stage matrices").
 constexpr double kKeptMatrixRate = 0.05;
