@@ -25,6 +25,12 @@ namespace {
 using Complex = std::complex<double>;
 constexpr int kStages = 3;
 
+// Fresh stage matrices (∂F/∂X and ∂F/∂Ẋ, the real and the complex KLU factorization) cost about
+// nine stage iterations (three residuals, the two solves, the transformations) on the joined beam
+// (callgrind, docs/performance.md "Cost of one step of the high-order schemes": 11.6 M against
+// 1.2 M per iteration). KeptMatrices' budget.
+constexpr double kRadauFreshMatrixCost = 9.0;
+
 // Radau IIA, s = 3 (HW II, Table IV.5.6), and W = A⁻¹ = S Λ S⁻¹ with the real eigenvalue first
 // and the pair's representative (imaginary part > 0) second; the third column of S is the
 // conjugate of the second, so the third transformed system is the conjugate of the second's.
@@ -102,8 +108,8 @@ class RadauStepper {
     }
 
     // From (x_n, ẋ_n) at t to t + h; on success state() and rate() are the step end. The stage
-    // matrices of an earlier step are kept while the step size is unchanged and the last stage
-    // iteration contracted by kKeptMatrixRate or better; if the iteration then fails, fresh ones
+    // matrices of an earlier step are kept while they serve (KeptMatrices,
+    // core/stage_iteration.hpp); if the iteration with them fails or reaches its limit, fresh ones
     // are made and the step is tried again before it counts as failed.
     NewtonOutcome step(double t, double h, const VecX& xn, const VecX& xdn);
     // The step of size h was accepted: its stages predict the next step's.
@@ -121,7 +127,9 @@ class RadauStepper {
                        double allowed);
 
   private:
-    NewtonOutcome iterate(double t, double h, const VecX& xn, const VecX& xdn, bool fresh);
+    // budget: iterate_stages' (0: none).
+    NewtonOutcome iterate(double t, double h, const VecX& xn, const VecX& xdn, bool fresh,
+                          int budget);
     bool factor(double t, double h, const VecX& xn, const VecX& xdn);
     void predict(double h, const VecX& xdn);
     double stage_residuals(double t, double h, const VecX& xn);
@@ -141,9 +149,9 @@ class RadauStepper {
     ComplexKlu complex_lu_;
     bool analysed_ = false;
     double floor_ = 0.0;
-    double h_old_ = 0.0;       // 0: no previous step to extrapolate from
-    double factored_h_ = 0.0;  // the step of the factored matrices (0: none valid)
-    double rate_ = 1.0;        // the last converged iteration's worst contraction η_k/η_{k−1}
+    double h_old_ = 0.0;  // 0: no previous step to extrapolate from
+    KeptMatrices kept_{kRadauFreshMatrixCost};
+    double rate_ = 1.0;  // the last converged iteration's worst contraction (iterate_stages)
     long factorizations_ = 0;
 };
 
@@ -259,29 +267,32 @@ double RadauStepper::local_error(double t, double h, const VecX& xn, const VecX&
 }
 
 NewtonOutcome RadauStepper::step(double t, double h, const VecX& xn, const VecX& xdn) {
-    const bool reuse = h == factored_h_ && rate_ <= kKeptMatrixRate;
-    NewtonOutcome out = iterate(t, h, xn, xdn, !reuse);
-    if (reuse && !out.accepted()) {
+    const bool reuse = kept_.usable(h);
+    NewtonOutcome out = iterate(t, h, xn, xdn, !reuse, reuse ? kept_.iteration_limit() : 0);
+    if (out.accepted()) {
+        kept_.converged(out.iterations, rate_, !reuse);
+    } else if (reuse) {
         // The kept matrices no longer describe the stage equations: fresh ones, then the cut.
         const int spent = out.iterations;
-        out = iterate(t, h, xn, xdn, true);
+        out = iterate(t, h, xn, xdn, true, 0);
+        if (out.accepted()) kept_.converged(out.iterations, rate_, true);
         out.iterations += spent;
     }
     return out;
 }
 
-NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const VecX& xdn,
-                                    bool fresh) {
+NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const VecX& xdn, bool fresh,
+                                    int budget) {
     NewtonOutcome out;
     try {
         if (fresh) {
-            factored_h_ = 0.0;
+            kept_.made(0.0);
             if (!factor(t, h, xn, xdn)) {
                 out.singular = true;
                 out.failure = "a stage iteration matrix is singular";
                 return out;
             }
-            factored_h_ = h;
+            kept_.made(h);
         }
         predict(h, xdn);
         struct Stages {
@@ -299,7 +310,7 @@ NewtonOutcome RadauStepper::iterate(double t, double h, const VecX& xn, const Ve
                 r.stage_rate(kStages - 1, h, r.xd1_);
             }
         } stages{*this, t, h, xn};
-        out = iterate_stages(stages, newton_, floor_);
+        out = iterate_stages(stages, newton_, floor_, budget);
     } catch (const SingularityError& e) {
         out.singular = true;
         out.failure = e.what();

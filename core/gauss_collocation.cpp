@@ -47,6 +47,13 @@ namespace {
 
 using Complex = std::complex<double>;
 
+// Fresh stage matrices (three assemblies, the complex and for 3 stages the real factorization)
+// cost about three stage iterations on the joined beam (callgrind, docs/performance.md "Cost of
+// one step of the high-order schemes": 2 stages 1.84 M against 0.48 M per iteration, 3.8;
+// 3 stages 2.04 M against 0.73 M, 2.8). Both grow linearly with the elements (banded matrices),
+// so the ratio holds for other meshes of the same elements. KeptMatrices' budget.
+constexpr double kGaussFreshMatrixCost = 3.0;
+
 // W = A⁻¹ = S Λ S⁻¹, with the columns of a conjugate pair conjugate to each other, so that the
 // partner's transformed system is the conjugate of its representative's (imaginary part > 0).
 struct StageTransform {
@@ -99,7 +106,7 @@ StageTransform transform_of(const Eigen::MatrixXd& A) {
 class GaussStepper {
   public:
     GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton,
-                 bool use_previous);
+                 const GaussOptions& options);
     // From the problem's step start (q_n, v_n, v˙_n) at time t to t + h; on success the problem's
     // iterate is the step end (q_{n+1}, v_{n+1}, an extrapolated v˙_{n+1}), not yet accepted.
     NewtonOutcome step(double t, double h);
@@ -118,7 +125,8 @@ class GaussStepper {
     // The iteration matrix at the stage mean of Z_ (zero: the step start) and t_mid.
     bool factor(double t_mid, double h);
     bool refactor(double t, double h);
-    NewtonOutcome iterate(double t, double h);
+    // budget: iterate_stages' (0: none).
+    NewtonOutcome iterate(double t, double h, int budget);
     void stage_mean(double h);
     void stage_rates(double h);
     double stage_residuals(double t, double h);
@@ -130,7 +138,7 @@ class GaussStepper {
     StageTransform transform_;
     NewtonSettings newton_;
     Eigen::VectorXd extrapolate_;   // ℓ_j(1): the stage polynomial's value at the step end
-    bool use_previous_;             // run_gauss_collocation's stage_predictor
+    bool use_previous_;             // GaussOptions::stage_predictor
     std::vector<VecX> Z_previous_;  // the last converged step's stages
     double previous_h_ = 0.0;       // its step (0: none, or not the problem's step start)
     int n_ = 0;
@@ -146,19 +154,20 @@ class GaussStepper {
     bool analysed_ = false;
     double floor_ = 0.0;
     int refreshes_ = 0;
-    double factored_h_ = 0.0;  // the step of the factored matrix (0: none valid)
-    double rate_ = 1.0;        // the last converged iteration's worst contraction (stage_iteration)
+    KeptMatrices kept_;
+    double rate_ = 1.0;  // the last converged iteration's worst contraction (iterate_stages)
     long factorizations_ = 0;
 };
 
 GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const NewtonSettings& newton,
-                           bool use_previous)
+                           const GaussOptions& options)
     : problem_(problem),
       tableau_(GaussLegendre::of(stages)),
       transform_(transform_of(tableau_.A)),
       newton_(newton),
-      use_previous_(use_previous),
-      n_(problem.size()) {
+      use_previous_(options.stage_predictor),
+      n_(problem.size()),
+      kept_(options.keep_matrices ? kGaussFreshMatrixCost : 0.0) {
     const int s = tableau_.stages;
     extrapolate_.resize(s);
     for (int j = 0; j < s; ++j) {
@@ -349,7 +358,7 @@ void GaussStepper::finish_step(double t, double h) {
 
 // The simplified Newton from the iterate Z_ with the factored matrix; Z_ ends at the last
 // iterate, best_Z_ at the one of the smallest stage residual.
-NewtonOutcome GaussStepper::iterate(double t, double h) {
+NewtonOutcome GaussStepper::iterate(double t, double h, int budget) {
     double best = std::numeric_limits<double>::infinity();
     for (int i = 0; i < tableau_.stages; ++i) best_Z_[i] = Z_[i];
     struct Stages {
@@ -374,21 +383,24 @@ NewtonOutcome GaussStepper::iterate(double t, double h) {
             g.previous_h_ = h;
         }
     } stages{*this, t, h, best};
-    return iterate_stages(stages, newton_, floor_);
+    return iterate_stages(stages, newton_, floor_, budget);
 }
 
-// The stage iteration with the matrix of the step start; when it fails (not for a singular
+// The stage iteration with kept matrices when they serve (KeptMatrices: within their iteration
+// limit), else or then with the matrix of the step start; when that fails (not for a singular
 // matrix or a refused state), once more from its best iterate with the matrix refreshed at that
 // iterate's stage mean: the frozen matrix neglects dexp(Δ_i) − I and the change of K, C, M over
 // the step, which grows with the rotation per step.
 NewtonOutcome GaussStepper::step(double t, double h) {
     problem_.start_rates(v_n_, vd_n_);
     NewtonOutcome out;
-    const bool kept = h == factored_h_ && rate_ <= kKeptMatrixRate;
-    if (kept) {
+    if (kept_.usable(h)) {
         predict(h);
-        out = iterate(t, h);
-        if (out.accepted()) return out;
+        out = iterate(t, h, kept_.iteration_limit());
+        if (out.accepted()) {
+            kept_.converged(out.iterations, rate_, false);
+            return out;
+        }
     }
     const int spent = out.iterations;
     for (VecX& z : Z_) z.setZero();
@@ -398,13 +410,15 @@ NewtonOutcome GaussStepper::step(double t, double h) {
         return out;
     }
     predict(h);
-    out = iterate(t, h);
+    out = iterate(t, h, 0);
+    if (out.accepted()) kept_.converged(out.iterations, rate_, true);
     out.iterations += spent;
     if (out.accepted() || out.singular || !std::isfinite(best_Z_[0].squaredNorm())) return out;
     for (int i = 0; i < tableau_.stages; ++i) Z_[i] = best_Z_[i];
     if (!refactor(t, h)) return out;
-    NewtonOutcome again = iterate(t, h);
+    NewtonOutcome again = iterate(t, h, 0);
     if (again.accepted()) {
+        kept_.converged(again.iterations, rate_, true);
         ++refreshes_;
         again.iterations += out.iterations;
         return again;
@@ -415,9 +429,9 @@ NewtonOutcome GaussStepper::step(double t, double h) {
 
 // factor() at the stage mean of Z_ and t + h/2, with the bookkeeping of the kept matrix.
 bool GaussStepper::refactor(double t, double h) {
-    factored_h_ = 0.0;
+    kept_.made(0.0);
     if (!factor(t + 0.5 * h, h)) return false;
-    factored_h_ = h;
+    kept_.made(h);
     ++factorizations_;
     return true;
 }
@@ -428,9 +442,9 @@ bool GaussStepper::refactor(double t, double h) {
 class GaussScheme : public StepScheme {
   public:
     GaussScheme(CollocationProblem& problem, int stages, const TimeIntegrationSettings& settings,
-                const NewtonSettings& newton, bool stage_predictor)
+                const NewtonSettings& newton, const GaussOptions& options)
         : problem_(problem),
-          stepper_(problem, stages, newton, stage_predictor),
+          stepper_(problem, stages, newton, options),
           doubling_(settings.tolerance > 0.0),
           length_(settings.length_scale),
           richardson_(std::ldexp(1.0, 2 * stages) - 1.0),
@@ -465,6 +479,7 @@ class GaussScheme : public StepScheme {
     void reject() override { restore(); }
     int local_error_order() const override { return order_; }
     int refreshes() const { return stepper_.refreshes(); }
+    long factorizations() const { return stepper_.factorizations(); }
 
   private:
     // A failed half step: back to the accepted state, the failure reported.
@@ -510,17 +525,17 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output) {
-    return run_gauss_collocation(problem, stages, settings, newton, on_output, false);
+    return run_gauss_collocation(problem, stages, settings, newton, on_output, GaussOptions{});
 }
 
 DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                      const TimeIntegrationSettings& settings,
                                      const NewtonSettings& newton,
                                      const std::function<void(const TimeStepRecord&)>& on_output,
-                                     bool stage_predictor) {
+                                     const GaussOptions& options) {
     require_time_window(settings);
     const double h0 = settings.time_step;
-    GaussScheme scheme(problem, stages, settings, newton, stage_predictor);
+    GaussScheme scheme(problem, stages, settings, newton, options);
     // The right limit of t_0, as run_generalized_alpha (a load released at t_0).
     constexpr double kRightLimit = 1e-6;
     problem.initialize_acceleration(settings.start_time + kRightLimit * h0);
@@ -542,6 +557,7 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
                                 "stage iterations"};
     DynamicOutcome outcome = run_step_loop(scheme, problem, settings, newton, labels, output);
     outcome.control.matrix_refreshes = scheme.refreshes();
+    outcome.message += "; " + std::to_string(scheme.factorizations()) + " fresh stage matrices";
     if (scheme.refreshes() > 0) {
         outcome.message += "; " + std::to_string(scheme.refreshes()) +
                            " steps converged after refreshing the stage iteration matrix";

@@ -9,7 +9,7 @@
 //  - void apply_correction(): adds it to the iterate;
 //  - void converged(double rate): the iteration ended at the iterate; rate is the largest
 //    contraction factor η_k/η_{k−1} seen (0 after one iteration), which decides whether the
-//    matrix is kept (kKeptMatrixRate).
+//    matrix is kept (KeptMatrices).
 // Besides the project's criteria, an iterate is accepted when the iteration's own contraction
 // bounds the error of the corrected iterate (Hairer & Wanner §IV.8, Eq. (8.10)–(8.11)): for an
 // iteration contracting by θ per step, ‖Z* − (Z_k + ΔZ_k)‖ ≤ θ/(1 − θ) ‖ΔZ_k‖, so
@@ -40,15 +40,72 @@
 
 namespace rotbeam {
 
-// The stage matrices are kept for the next step (of the same size) when the last iteration
-// contracted at least this fast (its `rate`, above). A kept matrix costs nothing but iterations,
-// each s residuals and the transformed solves, against the Jacobian evaluations and the
-// factorizations of fresh ones (docs/performance.md, "Cost of one step of the high-order
-// schemes").
+// When the factored stage matrices of an earlier step serve the next one (both schemes). A kept
+// matrix changes only the path of the simplified Newton, not where it stops: the residual is
+// evaluated exactly at every iterate and the stopping tests (the project's, and the contraction
+// bound θ/(1 − θ) η_k ≤ increment tolerance with θ measured on the iteration actually run) are
+// the same, so a step ends within the same tolerance of its exact stages whichever matrix drove
+// it; a worse matrix only contracts more slowly (larger θ, a later stop). The rule is about cost
+// alone, as in the production stiff integrators (Hairer & Wanner II §IV.8: RADAU5 keeps the
+// Jacobian while the contraction θ stays small, and the LU while h is unchanged; CVODE while γ
+// changes little), and the convergence rate is monitored on every step:
+//  - the contraction: the last converged iteration's worst ratio η_k/η_{k−1} ≤ kKeptMatrixRate;
+//  - the step size: within kKeptStepChange (relative) of the one the matrices were made for. The
+//    matrices are K₀ + (λ/h) C₀ + (λ/h)² M₀ (Gauss) or ∂F/∂X + (λ/h) ∂F/∂Ẋ (Radau): a relative
+//    change δ of h changes their (λ/h)-terms by at most 2δ, and the contraction by as much,
+//    nothing at δ = 1e-6 against contractions of 1e-3 and more. It admits the fixed-step loop's
+//    steps t_{n+1} − t_n, which differ from the case's Δt in the last bits (on 616 of the 1 600
+//    steps of the joined beam at 1.25 ms, where an exact comparison refused the matrix), and,
+//    but by chance, refuses an adaptive controller's changes, after which fresh ones are made;
+//  - the budget: an iteration with kept matrices that has not converged after the iterations of
+//    the last step on fresh ones plus `fresh_cost` (the cost of fresh matrices, Jacobian
+//    evaluations and factorizations, in stage iterations, from the scheme's measured kernels:
+//    docs/performance.md "Cost of one step of the high-order schemes") has cost what a fresh step
+//    would; it is abandoned and the step restarts with fresh matrices, as after a failure.
+// Dropping the contraction test for the budget alone (keep while a kept step takes at most
+// `fresh_cost` iterations more than the last fresh one) was measured a net loss on the joined
+// beam: Gauss 3 at 1.25 ms doubled its iterations (11 860 → 22 793) to save 649 of 1 446 fresh
+// matrices, Radau at 0.75 ms 12 990 → 24 743 iterations to save 850 of 891 Jacobians
+// (docs/performance.md, "Kept stage matrices").
 constexpr double kKeptMatrixRate = 0.05;
+constexpr double kKeptStepChange = 1e-6;
 
+class KeptMatrices {
+  public:
+    // `fresh_cost` ≤ 0: fresh matrices at every step (a reference for the tests).
+    explicit KeptMatrices(double fresh_cost) : fresh_cost_(fresh_cost) {}
+    // Whether the factored matrices may serve a step of size h.
+    bool usable(double h) const {
+        return fresh_cost_ > 0.0 && factored_h_ > 0.0 && rate_ <= kKeptMatrixRate &&
+               std::abs(h - factored_h_) <= kKeptStepChange * factored_h_;
+    }
+    // The iteration budget of a step with kept matrices (iterate_stages): what a fresh step
+    // costs in iterations, at least 3 (the contraction test's first chance).
+    int iteration_limit() const {
+        return static_cast<int>(std::max(3.0, reference_ + fresh_cost_));
+    }
+    // Fresh matrices were factored for a step of size h (h = 0: none valid, e.g. a singular one).
+    void made(double h) { factored_h_ = h; }
+    // A step converged in `iterations` (its own iteration, not counting an abandoned kept one),
+    // its worst contraction `rate`, on fresh matrices or kept ones.
+    void converged(int iterations, double rate, bool fresh) {
+        if (fresh) reference_ = iterations;
+        rate_ = rate;
+    }
+
+  private:
+    double fresh_cost_;
+    double factored_h_ = 0.0;  // the step the matrices were made for (0: none valid)
+    double rate_ = 1.0;        // the last converged iteration's worst η_k/η_{k−1}
+    int reference_ = 0;        // the iterations of the last step on fresh matrices
+};
+
+// `budget` > 0 (an iteration with kept matrices: KeptMatrices::iteration_limit): after that many
+// iterations without acceptance the iteration stops, not converged, with no failure message (the
+// caller goes on with fresh matrices; nothing is allocated).
 template <class Stages>
-NewtonOutcome iterate_stages(Stages& stages, const NewtonSettings& newton, double round_off_floor) {
+NewtonOutcome iterate_stages(Stages& stages, const NewtonSettings& newton, double round_off_floor,
+                             int budget = 0) {
     NewtonOutcome out;
     IterateMeasures m;
     m.linear = true;
@@ -110,6 +167,10 @@ NewtonOutcome iterate_stages(Stages& stages, const NewtonSettings& newton, doubl
             s << "the simplified Newton iteration of the stages does not contract (iteration " << k
               << ", scaled correction " << m.correction << ", residual " << m.residual << ")";
             out.failure = s.str();
+            out.iterations = k;
+            return out;
+        }
+        if (k == budget) {
             out.iterations = k;
             return out;
         }

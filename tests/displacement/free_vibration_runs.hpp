@@ -5,6 +5,7 @@
 #pragma once
 
 #include <boost/test/unit_test.hpp>
+#include <string>
 #include <vector>
 
 #include "core/gauss_collocation_predictor.hpp"
@@ -21,15 +22,17 @@ struct TipHistory {
     Mat3 R = Mat3::Identity();
     std::vector<double> energy;  // total energy at every output (when recorded)
     long newton_iterations = 0;  // Newton or stage iterations, summed over the steps
+    std::string message;         // the run's
 };
 
 // The time scheme: `stages` > 0 the Gauss–Legendre collocation with that many stages, else
-// generalized-α with `rho_infinity`; `stage_predictor` as
-// run_gauss_collocation's (core/gauss_collocation_predictor.hpp).
+// generalized-α with `rho_infinity`; `stage_predictor` and `keep_matrices` as
+// run_gauss_collocation's GaussOptions (core/gauss_collocation_predictor.hpp).
 struct TimeScheme {
     int stages = 0;
     double rho_infinity = 1.0;
     bool stage_predictor = true;
+    bool keep_matrices = true;
 };
 
 // Outputs every `output` (0: every step); the energy recorded at each when `record_energy`.
@@ -55,13 +58,15 @@ TipHistory simulate(const Model& model, TimeScheme scheme, double dt, double end
     };
     const DynamicOutcome out =
         scheme.stages > 0
-            ? run_gauss_collocation(d, scheme.stages, ts, newton, on_output, scheme.stage_predictor)
+            ? run_gauss_collocation(d, scheme.stages, ts, newton, on_output,
+                                    GaussOptions{scheme.stage_predictor, scheme.keep_matrices})
             : run_generalized_alpha(d, ts, newton, on_output);
     BOOST_TEST_REQUIRE(has_solution(out.status), out.message);
     const int tip = model.point_index("tip");
     h.u = d.point_state(tip).displacement;
     h.R = d.point_state(tip).rotation;
     h.newton_iterations = out.newton_iterations;
+    h.message = out.message;
     return h;
 }
 
