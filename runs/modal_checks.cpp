@@ -12,11 +12,12 @@ namespace {
 // threshold of the pairs without an error estimate of their own.
 constexpr double kRoundOffGrowth = 1e-8;
 
-// A growth rate |Re s| above what the eigenvalue's error allows: its own first-order estimate
-// (check.error_estimate, relative to |s|: core/quadratic_eigenpair.hpp) when it has one.
-bool grows_or_decays(const CheckedMode& m) {
+// A growth rate Re s above what the eigenvalue's error allows: its own first-order estimate
+// (check.error_estimate, relative to |s|: core/quadratic_eigenpair.hpp) when it has one. A
+// decaying mode (Re s < 0: damping) is not an instability.
+bool grows(const CheckedMode& m) {
     const double allowed = m.check.error_estimate >= 0.0 ? m.check.error_estimate : kRoundOffGrowth;
-    return std::abs(m.growth_rate) > allowed * std::abs(m.s);
+    return m.growth_rate > allowed * std::abs(m.s);
 }
 
 nlohmann::json check_json(const EigenpairCheck& c) {
@@ -42,14 +43,14 @@ void report_checked_modes(const std::vector<CheckedMode>& modes, const std::stri
     std::vector<double> accepted;
     std::ostringstream rejected;
     rejected.precision(6);
-    int complex_pairs = 0;
+    int growing = 0;
     for (size_t i = 0; i < modes.size(); ++i) {
         const CheckedMode& m = modes[i];
         nlohmann::json& j = result["modes"][i];
         j["s"] = {m.s.real(), m.s.imag()};
         j["growth_rate"] = m.growth_rate;
         j["check"] = check_json(m.check);
-        if (grows_or_decays(m)) ++complex_pairs;
+        if (grows(m)) ++growing;
         if (m.check.accepted) {
             accepted.push_back(m.frequency_hz);
             j["frequency_hz"] = m.frequency_hz;
@@ -66,8 +67,8 @@ void report_checked_modes(const std::vector<CheckedMode>& modes, const std::stri
         result["status"] = "converged";
         std::ostringstream msg;
         msg << "modes of the " << state << " state; every eigenpair passed its checks";
-        if (complex_pairs > 0) {
-            msg << "; " << complex_pairs
+        if (growing > 0) {
+            msg << "; " << growing
                 << " with a growth rate above round-off (complex s: flutter or divergence)";
         }
         result["message"] = msg.str();

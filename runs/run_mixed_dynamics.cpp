@@ -137,7 +137,8 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     // The reference configuration (zero for three parameters, unit quaternions for four).
     VecX state = form::MixedStaticsOf<P>(model).state_vector();
     double lambda = 0.0;
-    if (model.analysis.modal.about_static_state && has_static_load(model)) {
+    const bool loaded = model.analysis.modal.about_static_state && has_static_load(model);
+    if (loaded) {
         if (!static_state<P>(model, trace, result, state, lambda)) return;
     }
     form::MixedDynamicsOf<P> dyn(form::frozen_loads(model, lambda), 1.0);
@@ -146,9 +147,11 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     VecX r;
     SparseMatrix A, B;
     dyn.evaluate(0.0, x0, VecX::Zero(dyn.size()), r, &A, &B);
-    // About a spinning state a growth is the question: each pair refined with its error estimate,
-    // real s > 0 (divergence) kept (formulations/mixed/mixed_modal.hpp).
-    const bool refined = dyn.rotating();
+    // About a spinning or a loaded state a growth is the question (a buckled column diverges, a
+    // follower load flutters): each pair refined with its error estimate, real s > 0 (divergence)
+    // kept (formulations/mixed/mixed_modal.hpp). At rest and unloaded the structure is conservative
+    // and every s is imaginary.
+    const bool refined = dyn.rotating() || loaded;
     const int count = model.analysis.modal.modes;
     const form::DaeModalSolution s =
         refined ? form::solve_dae_modal_refined(A, B, count) : form::solve_dae_modal(A, B, count);

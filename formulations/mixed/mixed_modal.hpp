@@ -57,13 +57,13 @@ DaeModalSolution solve_dae_modal(const SparseMatrix& A, const SparseMatrix& B, i
                                  double shift = 0.0);
 
 // The `count` modes nearest s = 0 of A φ = −s B φ where a growth is the question (the modes about a
-// spinning state, docs/rotating-frame.md): from the same Arnoldi iteration, one of each conjugate
-// pair and, unlike solve_dae_modal, the growing member of each real pair (s > 0, f = 0:
-// divergence), each refined on A + sB by the two-sided Rayleigh functional iteration with its
-// first-order error estimate in check.error_estimate (core/refined_ritz_modes.hpp,
-// core/quadratic_eigenpair.hpp with M = 0): the flutter/divergence verdict's threshold
-// (runs/modal_checks.cpp). Ascending Im s: divergences first. Throws SolverError as
-// solve_dae_modal.
+// spinning state, docs/rotating-frame.md, or about a loaded static state): from the same Arnoldi
+// iteration, one of each conjugate pair and, unlike solve_dae_modal, the growing member of each
+// real pair (s > 0, f = 0: divergence), each refined on A + sB by the two-sided Rayleigh functional
+// iteration with its first-order error estimate in check.error_estimate
+// (core/refined_ritz_modes.hpp, core/quadratic_eigenpair.hpp with M = 0): the flutter/divergence
+// verdict's threshold (runs/modal_checks.cpp). Ascending Im s: divergences first. Throws
+// SolverError as solve_dae_modal.
 DaeModalSolution solve_dae_modal_refined(const SparseMatrix& A, const SparseMatrix& B, int count);
 
 // The same by a dense eigen-decomposition of (A + σB)⁻¹B (all eigenvalues; for small models and

@@ -33,6 +33,7 @@ struct SpinningBeam {
     int elements = 1;
     int order = 1;
     bool mixed = false;  // the mixed formulation (no element order) instead of the displacement one
+    std::string loads;   // the YAML lines under `loads:` (none when empty)
 };
 
 // The case file of `beam` with `analysis` (the YAML lines under `analysis:`).
@@ -66,9 +67,9 @@ inline std::string spinning_beam_case(const std::string& analysis, const Spinnin
     vec(beam.angular_velocity);
     c << ", center: ";
     vec(beam.center);
-    c << "}\n"
-      << "analysis:\n"
-      << analysis;
+    c << "}\n";
+    if (!beam.loads.empty()) c << "loads:\n" << beam.loads;
+    c << "analysis:\n" << analysis;
     if (beam.mixed) {
         c << "discretization: {formulation: mixed}\n";
     } else {
