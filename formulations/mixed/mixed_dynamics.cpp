@@ -69,25 +69,6 @@ Model without_distributed_loads(Model m) {
     return m;
 }
 
-namespace {
-
-// μ at s/L by linear interpolation between stations (constant with one station), as the
-// compliance (mixed_layout.cpp).
-Vec6 mixed_damping_at(const Member& member, double fraction) {
-    const std::vector<SectionStation>& st = member.sections;
-    if (st.size() == 1 || fraction <= st.front().s_fraction) return st.front().section.damping;
-    for (std::size_t k = 1; k < st.size(); ++k) {
-        if (fraction <= st[k].s_fraction) {
-            const double w =
-                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
-            return (1.0 - w) * st[k - 1].section.damping + w * st[k].section.damping;
-        }
-    }
-    return st.back().section.damping;
-}
-
-}  // namespace
-
 std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
                                                         const MixedLayout& layout) {
     std::vector<MixedDampingSection> out(layout.elements.size());
@@ -95,8 +76,10 @@ std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
     for (std::size_t e = 0; e < layout.elements.size(); ++e) {
         const MixedElement& el = layout.elements[e];
         const Member& member = model.members[static_cast<std::size_t>(el.member)];
+        // μ interpolated between stations as the compliance (mixed_layout.cpp).
         out[e].mu =
-            mixed_damping_at(member, el.s_mid / ReferenceGeometry(model, el.member).length());
+            section_property_at(member, el.s_mid / ReferenceGeometry(model, el.member).length(),
+                                [](const Section& s) { return s.damping; });
         if (!out[e].active()) continue;
         const Eigen::FullPivLU<Mat6> lu(el.S);
         if (!lu.isInvertible()) {
