@@ -134,6 +134,7 @@ void record_mode_frames(const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
 
 template <class P>
 void modal(const Model& model, bool trace, nlohmann::json& result) {
+    form::refuse_mixed_modal_damping(model);
     // The reference configuration (zero for three parameters, unit quaternions for four).
     VecX state = form::MixedStaticsOf<P>(model).state_vector();
     double lambda = 0.0;

@@ -5,7 +5,7 @@
 //   beamdyn:
 //     driver: ../tests/data/beamdyn/bd_5MW_dynamic_gravity_Az00/bd_driver.inp
 //     set: ["name=nrel5mw-gravity", "analysis.end_time=1"]   # --set overrides, before the user's
-//     refused: {mixed: "damping is not available in the mixed dynamics"}
+//     refused: {mixed: "words of its refusal"}
 //
 // The deck is imported as `rotbeam run DRIVER.inp` imports it, then `set` applies as `--set`
 // overrides (the user's come after and win). `refused` states, per formulation, that the deck does

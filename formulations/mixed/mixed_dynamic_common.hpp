@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/model.hpp"
+#include "formulations/mixed/mixed_damping.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
 
 namespace rotbeam::form {
@@ -23,9 +24,15 @@ struct MixedEnergy {
     double total() const { return kinetic + strain; }
 };
 
-// Throws InputError when a section carries damping: seed 002's mixed equations are undamped, and
+// Every element's stiffness-proportional damping (mixed_damping.hpp): μ at mid-length, linear
+// between stations as the compliance, and C* = S⁻¹. Throws InputError when a damped element's
+// compliance is singular (a rigid component has no strain rate to damp).
+std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
+                                                        const MixedLayout& layout);
+
+// Throws InputError when a section carries damping: the mixed modal analysis is undamped, and
 // refusing beats ignoring the input.
-void refuse_mixed_damping(const Model& model);
+void refuse_mixed_modal_damping(const Model& model);
 
 // A time function at t. Tables and ramps may jump at the start (a release: 1 → 0 within 1e-12 s);
 // they are evaluated at their right limit there, max(t, floor). Sines and constants are continuous

@@ -69,11 +69,34 @@ Model without_distributed_loads(Model m) {
     return m;
 }
 
-void refuse_mixed_damping(const Model& model) {
+std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
+                                                        const MixedLayout& layout) {
+    std::vector<MixedDampingSection> out(layout.elements.size());
+    if (!model.has_damping()) return out;
+    for (std::size_t e = 0; e < layout.elements.size(); ++e) {
+        const MixedElement& el = layout.elements[e];
+        const Member& member = model.members[static_cast<std::size_t>(el.member)];
+        // μ interpolated between stations as the compliance (mixed_layout.cpp).
+        out[e].mu =
+            section_property_at(member, el.s_mid / ReferenceGeometry(model, el.member).length(),
+                                [](const Section& s) { return s.damping; });
+        if (!out[e].active()) continue;
+        const Eigen::FullPivLU<Mat6> lu(el.S);
+        if (!lu.isInvertible()) {
+            throw InputError("member '" + member.name +
+                             "': damping needs an invertible compliance in the mixed dynamics "
+                             "(a rigid component has no strain rate to damp)");
+        }
+        out[e].stiffness = lu.inverse();
+    }
+    return out;
+}
+
+void refuse_mixed_modal_damping(const Model& model) {
     if (model.has_damping()) {
         throw InputError(
-            "sections: damping is not available in the mixed dynamics (seed 002 "
-            "Eqs. 45–50 are undamped)");
+            "sections: damping is not available in the mixed modal analysis (its modes are "
+            "undamped)");
     }
 }
 

@@ -14,9 +14,14 @@
 // tree (no support, e.g. the manufactured motion's flying rod) gets the parameterization's
 // constraint row ½(|q̂_0|² − 1) = 0 at node 0 (param::ParameterConstraint), algebraic.
 //
-// Differential unknowns (rates appear in F): u, c, P, H of every element; algebraic: F, M and all
-// node unknowns. With a redundant parameter (the quaternion) the radial direction of c is
-// algebraic too, and IDA's `id` is per component, not per direction, so two vectors are given:
+// Differential unknowns (rates appear in F): u, c, P, H of every element, and the components of F,
+// M whose damping coefficient μᵢ is not zero (mixed_damping.hpp: the damping force holds their
+// rates); algebraic: the other F, M and all node unknowns. The initial conditions solve the damped
+// F, M as algebraic unknowns (fixed by the kinematic rows given u, c) with their rates held at
+// zero, consistent for every start the runner makes: at rest, in rigid translation or in rigid
+// rotation with a turning frame the strains do not change. With a redundant parameter (the
+// quaternion) the radial direction of c is algebraic too, and IDA's `id` is per component, not per
+// direction, so two vectors are given:
 //  - differential(): all K components of every element c are 1. IDA uses it (with
 //    IDASetSuppressAlg) only to leave the algebraic unknowns out of its error test; the radial
 //    direction then stays in the test, which is valid for an index-1 algebraic direction (it is a
@@ -41,6 +46,7 @@
 
 #include "core/dae_system.hpp"
 #include "core/model.hpp"
+#include "formulations/mixed/mixed_damping.hpp"
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamic_element.hpp"
 #include "formulations/mixed/mixed_element.hpp"
@@ -62,8 +68,9 @@ class MixedDynamics : public DaeSystem {
 
     // `time_scale` sets the velocity scale length / time_scale of the f_P, f_H rows and of P, H
     // (the end time of a dynamic run, 1 otherwise). Throws InputError when a section has no mass
-    // matrix or a singular one (Eq. 18 is inverted), carries damping, or (with a redundant
-    // parameter) the structure is not a tree held by its supports or a single free tree.
+    // matrix or a singular one (Eq. 18 is inverted), carries damping with a singular compliance,
+    // or (with a redundant parameter) the structure is not a tree held by its supports or a
+    // single free tree.
     MixedDynamics(const Model& model, double time_scale, double load_time_floor = 0.0);
 
     int size() const override { return numbering_.size(); }
@@ -132,6 +139,8 @@ class MixedDynamics : public DaeSystem {
     void assemble_element(int e, double t, const VecX& x, const VecX& xdot, VecX& residual,
                           SparseMatrix* J_x, SparseMatrix* J_xdot);
     void add_node_terms(int e, double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
+    void add_damping(int e, const VecX& x, const VecX& xdot, VecX& residual, SparseMatrix* J_x,
+                     SparseMatrix* J_xdot);
     void add_point_loads(double t, const VecX& x, VecX& residual, SparseMatrix* J_x) const;
     void build_scales(double time_scale, double mass_scale, double inertia_scale);
     Vec3 element_position(int e, const VecX& x) const;  // x^r_i + u_i − c
@@ -151,6 +160,9 @@ class MixedDynamics : public DaeSystem {
     MixedElementResult<K> static_result_;
     MixedInertiaResult<K> inertia_result_;
     MixedFrameResult<K> frame_result_;
+    std::vector<MixedDampingSection> damping_;  // per element; inactive without damping
+    MixedDampingResult<K> damping_result_;
+    VecX ic_differential_;  // differential_ with the damped F, M algebraic (initial conditions)
     bool spinning_ = false;
     Vec3 omega_frame_ = Vec3::Zero();
     Vec3 center_ = Vec3::Zero();

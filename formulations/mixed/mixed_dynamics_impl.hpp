@@ -35,7 +35,7 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
         omega_frame_ = model.rotating_frame.angular_velocity;
         center_ = model.rotating_frame.center;
     }
-    refuse_mixed_damping(model);
+    damping_ = mixed_damping_sections(model, layout_);
     // The statics' force scale ignores distributed loads when they were removed: recompute it
     // from the full model so both analyses scale alike.
     layout_.force_scale = build_mixed_layout(model).force_scale;
@@ -52,6 +52,13 @@ MixedDynamics<P>::MixedDynamics(const Model& model, double time_scale, double lo
     configuration_ = differential_;
     for (int e = 0; e < element_count(); ++e) {
         configuration_.segment<6>(element_column(e) + numbering_.P()).setZero();
+    }
+    ic_differential_ = differential_;
+    for (int e = 0; e < element_count(); ++e) {
+        const Vec6& mu = damping_[static_cast<std::size_t>(e)].mu;
+        for (int i = 0; i < 6; ++i) {
+            if (mu[i] != 0.0) differential_[element_column(e) + numbering_.F() + i] = 1.0;
+        }
     }
     build_scales(time_scale, masses.mass_scale, masses.inertia_scale);
 }
@@ -112,9 +119,9 @@ void MixedDynamics<P>::build_scales(double time_scale, double mass_scale, double
 template <param::RotationParameterization P>
 VecX MixedDynamics<P>::initial_condition_differential(const VecX& x) const {
     if constexpr (kConstraintRows == 0) {
-        return differential_;
+        return ic_differential_;
     } else {
-        VecX d = differential_;
+        VecX d = ic_differential_;
         for (int e = 0; e < element_count(); ++e) {
             const int c = element_column(e) + numbering_.c();
             d[c + param::ParameterConstraint<P>::algebraic_component(x.segment<K>(c))] = 0.0;
@@ -175,6 +182,11 @@ void MixedDynamics<P>::evaluate(double t, const VecX& x, const VecX& xdot, VecX&
         add_node_terms(e, t, x, residual, J_x);
     }
     add_point_loads(t, x, residual, J_x);
+    for (int e = 0; e < element_count(); ++e) {
+        if (damping_[static_cast<std::size_t>(e)].active()) {
+            add_damping(e, x, xdot, residual, J_x, J_xdot);
+        }
+    }
     // The follower point loads' stiffness blocks add_point_loads assembled (free nodes only).
     if (J_x != nullptr) {
         for (const PointLoad& load : model_.point_loads) {
@@ -282,6 +294,36 @@ void MixedDynamics<P>::assemble_element(int e, double t, const VecX& x, const Ve
         // f_P, f_H against u̇, ċ (they hold no Ṗ, Ḣ).
         add_mixed_block(Kd, row + numbering_.fP(), c + numbering_.u(),
                         q.J_xdot.template block<6, 3 + K>(6, 0));
+    }
+}
+
+// The damping terms of element e (mixed_damping.hpp) into its end nodes' equilibrium rows.
+template <param::RotationParameterization P>
+void MixedDynamics<P>::add_damping(int e, const VecX& x, const VecX& xdot, VecX& residual,
+                                   SparseMatrix* J_x, SparseMatrix* J_xdot) {
+    const MixedElement& el = layout_.elements[static_cast<std::size_t>(e)];
+    const int c = element_column(e);
+    MixedDampingResult<K>& d = damping_result_;
+    mixed_element_damping<P>(el, damping_[static_cast<std::size_t>(e)],
+                             mass_inverse_[static_cast<std::size_t>(e)],
+                             x.segment<K>(c + numbering_.c()), x.segment<6>(c + numbering_.F()),
+                             x.segment<6>(c + numbering_.P()), xdot.segment<6>(c + numbering_.F()),
+                             omega_frame_, J_x != nullptr || J_xdot != nullptr, d);
+    ++counters_.damping_terms;
+    const int a = 6 * el.start_node;
+    const int b = 6 * el.end_node;
+    residual.segment<6>(a) += d.minus;
+    residual.segment<6>(b) += d.plus;
+    for (const int node : {a, b}) {
+        const auto& J = node == a ? d.J_minus : d.J_plus;
+        if (J_x != nullptr) {
+            add_mixed_block(*J_x, node, c + numbering_.c(), J.template leftCols<K>());
+            add_mixed_block(*J_x, node, c + numbering_.F(), J.template middleCols<6>(K));
+            add_mixed_block(*J_x, node, c + numbering_.P(), J.template rightCols<6>());
+        }
+        if (J_xdot != nullptr) {
+            add_mixed_block(*J_xdot, node, c + numbering_.F(), node == a ? d.Jd_minus : d.Jd_plus);
+        }
     }
 }
 

@@ -13,16 +13,7 @@ namespace {
 
 // Compliance at s/L by linear interpolation between stations (constant with one station).
 Mat6 compliance_at(const Member& member, double fraction) {
-    const std::vector<SectionStation>& st = member.sections;
-    if (st.size() == 1 || fraction <= st.front().s_fraction) return st.front().section.compliance;
-    for (std::size_t k = 1; k < st.size(); ++k) {
-        if (fraction <= st[k].s_fraction) {
-            const double w =
-                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
-            return (1.0 - w) * st[k - 1].section.compliance + w * st[k].section.compliance;
-        }
-    }
-    return st.back().section.compliance;
+    return section_property_at(member, fraction, [](const Section& s) { return s.compliance; });
 }
 
 // Mass per unit length at s/L (for gravity); zero without a mass matrix.

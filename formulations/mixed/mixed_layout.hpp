@@ -33,6 +33,23 @@
 
 namespace rotbeam::form {
 
+// A section property at arc-length fraction s/L of a member, `get(section)` linear between
+// stations (constant with one station): the compliance of the layout, the damping of the dynamics.
+template <class Get>
+auto section_property_at(const Member& member, double fraction, Get get) {
+    const std::vector<SectionStation>& st = member.sections;
+    if (st.size() == 1 || fraction <= st.front().s_fraction) return get(st.front().section);
+    for (std::size_t k = 1; k < st.size(); ++k) {
+        if (fraction <= st[k].s_fraction) {
+            const double w =
+                (fraction - st[k - 1].s_fraction) / (st[k].s_fraction - st[k - 1].s_fraction);
+            return decltype(get(st[k].section))((1.0 - w) * get(st[k - 1].section) +
+                                                w * get(st[k].section));
+        }
+    }
+    return get(st.back().section);
+}
+
 struct MixedNode {
     int point = -1;       // model point index, −1 for an interior node
     int constraint = -1;  // index into Model::constraints, −1 when free

@@ -169,6 +169,20 @@ std::vector<MixedState> mixed_states(const comb::Combination& c, bool dynamic) {
         spinning.rotating_frame.angular_velocity = Vec3(0.7, -1.1, 2.3);
         spinning.rotating_frame.center = Vec3(0.3, -0.2, 0.1);
         states.push_back({"one support, rotating frame", spinning, states.front().base});
+        // Stiffness-proportional damping (mixed_damping.hpp) with a different μ per component:
+        // the rate columns of F, M, the spin term through P, H and, with a turning frame, through
+        // c (Ω − Aᵀω_a).
+        for (const auto& [label, base] :
+             {std::pair{"one support, damped", one},
+              std::pair{"one support, damped, rotating frame", spinning}}) {
+            Model damped = base;
+            for (Member& member : damped.members) {
+                for (SectionStation& station : member.sections) {
+                    station.section.damping << 0.3, 0.5, 0.2, 0.4, 0.6, 0.25;
+                }
+            }
+            states.push_back({label, damped, states.front().base});
+        }
     }
     for (MixedState& s : states) apply(c, s.model);
     return states;

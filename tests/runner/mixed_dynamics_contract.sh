@@ -2,8 +2,9 @@
 # The runner's mixed dynamic and modal analyses (runs/run_mixed_dynamics.cpp):
 # a short joined-beam response per parameterization and integrator writes its JSON and CSV history
 # with the joint's columns (the quaternion also its norm drift), IDA's tolerances are taken from
-# the case, a damped case and an unknown integrator are refused as bad input, and the joined
-# beam's modes are reported with growth rates (the quaternion's equal to WM's).
+# the case, a damped case runs, a damped modal analysis and an unknown integrator are refused as
+# bad input, and the joined beam's modes are reported with growth rates (the quaternion's equal to
+# WM's).
 # Usage: mixed_dynamics_contract.sh ROTBEAM SOURCE_DIR
 set -u
 rotbeam=$1
@@ -59,19 +60,33 @@ assert default["dynamics"]["relative_tolerance"] == 1e-6
 assert loose["dynamics"]["steps"] < default["dynamics"]["steps"], (loose["dynamics"]["steps"], default["dynamics"]["steps"])
 PY
 
-# Bad input: an unknown integrator, and damping (the mixed equations are undamped).
+# Bad input: an unknown integrator, and damping in a modal analysis (its modes are undamped).
 "$rotbeam" run "$src/cases/joined-beam-dead.yaml" --formulation mixed --rotation rodrigues \
     --set analysis.integrator=rk4 >"$work/out" 2>"$work/err"
 [ $? -eq 2 ] || fail "unknown integrator not refused with exit 2"
 grep -q "trapezoidal | ida" "$work/err" || fail "unknown integrator message: $(cat "$work/err")"
 sed -E 's/^(    density: 2700)$/\1\n    damping: [0, 0, 0, 1.0e-4, 1.0e-4, 1.0e-4]/' \
-    "$src/cases/joined-beam-dead.yaml" >"$work/damped.yaml"
-grep -q "damping:" "$work/damped.yaml" || fail "could not make the damped case"
-"$rotbeam" run "$work/damped.yaml" --formulation mixed --rotation rodrigues --json "$work/d.json" \
+    "$src/cases/joined-beam.yaml" >"$work/damped-modal.yaml"
+grep -q "damping:" "$work/damped-modal.yaml" || fail "could not make the damped modal case"
+"$rotbeam" run "$work/damped-modal.yaml" --formulation mixed --rotation rodrigues --json "$work/d.json" \
     >"$work/out" 2>"$work/err"
-[ $? -eq 2 ] || fail "damping not refused with exit 2: $(cat "$work/err")"
-grep -q "damping is not available in the mixed dynamics" "$work/err" || fail "damping message: $(cat "$work/err")"
-[ ! -e "$work/d.json" ] || fail "a result file was written for a refused damped case"
+[ $? -eq 2 ] || fail "damped modal analysis not refused with exit 2: $(cat "$work/err")"
+grep -q "damping is not available in the mixed modal analysis" "$work/err" ||
+    fail "damping message: $(cat "$work/err")"
+[ ! -e "$work/d.json" ] || fail "a result file was written for a refused damped modal case"
+# The dynamics carry the damping (formulations/mixed/mixed_damping.hpp).
+sed -E 's/^(    density: 2700)$/\1\n    damping: [0, 0, 0, 1.0e-4, 1.0e-4, 1.0e-4]/' \
+    "$src/cases/joined-beam-follower.yaml" >"$work/damped.yaml"
+grep -q "damping:" "$work/damped.yaml" || fail "could not make the damped case"
+"$rotbeam" run "$work/damped.yaml" --formulation mixed --rotation rodrigues \
+    --set analysis.end_time=0.05 --json "$work/damped.json" >"$work/out" 2>"$work/err" ||
+    fail "damped dynamics: exit $?: $(cat "$work/err")"
+python3 - "$work/damped.json" <<'PY' || fail "damped dynamics JSON"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["status"] == "converged", r["message"]
+assert r["counters"]["damping_terms"] > 0, r["counters"]
+PY
 
 # Modal: Table III's mesh, five modes with their growth rates (undamped: round-off).
 "$rotbeam" run "$src/cases/joined-beam.yaml" --json "$work/modal.json" >/dev/null 2>&1
