@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/potential_hessian.hpp"
 #include "core/sparse_lu.hpp"
+#include "core/static_stability_kinetic.hpp"
 #include "core/time_limit.hpp"
 
 namespace rotbeam {
@@ -345,7 +346,9 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
 // Jacobian of its Newton solve — the one at the iterate before the final correction, a scaled
 // distance below increment_tolerance from the reported state — which is the Hessian only where it
 // is symmetric (the straight states; docs/solver-convergence.md, Stability of the equilibrium). A
-// substituted solver (KINSOL) leaves no Jacobian here.
+// substituted solver (KINSOL) leaves no Jacobian here. Loads without a potential are assessed by
+// the kinetic criterion where the system forms its linearized motion and has a mass
+// (core/static_stability_kinetic.hpp); otherwise the tangent's inertia as above.
 StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& workspace,
                                   const StepSolver& solver) {
     auto* potential = dynamic_cast<PotentialSystem*>(&problem);
@@ -361,6 +364,12 @@ StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& 
         const StaticStability assessed =
             assess_stability_at_stationary_point(problem, *potential, tangent, unavailable);
         if (unavailable.empty()) return assessed;
+    }
+    // No energy: the kinetic criterion where the system forms its linearized motion.
+    if (auto* kinetic = dynamic_cast<KineticSystem*>(&problem)) {
+        StaticStability k = assess_kinetic_stability(kinetic->kinetic_spectrum(kKineticModes));
+        if (k.criterion == StaticStability::Criterion::kinetic) return k;
+        unavailable += "; " + k.reason;
     }
     StaticStability s;
     if (solver) {

@@ -24,6 +24,18 @@ const char* to_string(StaticStability::Assessment a) {
     return "not-assessed";
 }
 
+const char* to_string(StaticStability::Criterion c) {
+    switch (c) {
+        case StaticStability::Criterion::none:
+            return "none";
+        case StaticStability::Criterion::energy:
+            return "energy";
+        case StaticStability::Criterion::kinetic:
+            return "kinetic";
+    }
+    return "none";
+}
+
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -121,6 +133,7 @@ StaticStability scaled_inertia(const SparseMatrix& tangent, const VecX& incremen
     const double tiny = std::max(n_eps * norm, scaled_error);
     const VecX& d = ldlt.vectorD();
     StaticStability out;
+    out.criterion = StaticStability::Criterion::energy;
     int zero = 0;
     for (Eigen::Index i = 0; i < n; ++i) {
         if (d(i) < -tiny) {

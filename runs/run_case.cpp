@@ -101,9 +101,17 @@ void report_unstable_equilibrium(const StaticOutcome& outcome, nlohmann::json& r
         std::ostringstream s;
         s.precision(6);
         s << "the equilibrium at load step " << i + 1 << " (load factor " << step.load_factor
-          << ") is unstable: its tangent has " << step.stability.negative
-          << " negative eigenvalue(s), directions in which the energy decreases; "
-          << result["status"].get<std::string>() << ": " << result["message"].get<std::string>();
+          << ") is unstable: ";
+        if (const std::optional<KineticSummary>& k = step.stability.kinetic) {
+            s << "its linearized free motion has " << k->divergent << " divergent and "
+              << k->fluttering << " fluttering mode(s), growth rate up to " << k->growth_rate
+              << " 1/time (error " << k->growth_rate_error << ")";
+        } else {
+            s << "its tangent has " << step.stability.negative
+              << " negative eigenvalue(s), directions in which the energy decreases";
+        }
+        s << "; " << result["status"].get<std::string>() << ": "
+          << result["message"].get<std::string>();
         result["status"] = kUnstableEquilibrium;
         result["message"] = s.str();
         return;

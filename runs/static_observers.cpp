@@ -58,9 +58,7 @@ std::string stability_not_assessed(const Model& model) {
     const std::string_view formulation =
         comb::traits(model.discretization.formulation).no_stability_reason;
     if (!formulation.empty()) return std::string(formulation);
-    if (model.has_follower_loads()) {
-        return "follower loads: the tangent is not symmetric, no energy criterion applies";
-    }
+    // Follower loads have no energy: the driver assesses them kinetically (with a mass).
     return {};
 }
 
@@ -71,7 +69,20 @@ nlohmann::json observe_stability(const StepRecord& step, const std::string& not_
         j["reason"] = s.reason.empty() ? not_assessed : s.reason;
         return j;
     }
-    j["negative_eigenvalues"] = s.negative;
+    j["criterion"] = to_string(s.criterion);
+    if (s.kinetic) {
+        const KineticSummary& k = *s.kinetic;
+        j["growing_modes"] = s.negative;
+        j["kinetic"] = {{"modes", k.modes},
+                        {"highest_frequency_hz", k.highest_frequency_hz},
+                        {"divergent", k.divergent},
+                        {"fluttering", k.fluttering},
+                        {"growth_rate", k.growth_rate},
+                        {"growth_rate_error", k.growth_rate_error},
+                        {"largest_error", k.largest_error}};
+    } else {
+        j["negative_eigenvalues"] = s.negative;
+    }
     if (s.stationary_point_distance) j["stationary_point_distance"] = *s.stationary_point_distance;
     if (!s.reason.empty()) j["reason"] = s.reason;
     return j;

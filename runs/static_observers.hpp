@@ -36,13 +36,13 @@ std::optional<nlohmann::json> observe_sections(const Model& model, const StaticS
                                                double load_factor);
 
 // Why the stability of the model's static equilibria is not assessed: the formulation's reason
-// (combinations/registry.hpp), or follower loads (a tangent that is not symmetric); empty when
-// it is assessed (core/static_stability.hpp).
+// (combinations/registry.hpp); empty when it is assessed (core/static_stability.hpp; loads
+// without a potential kinetically, core/static_stability_kinetic.hpp).
 std::string stability_not_assessed(const Model& model);
 
-// The stability of a reported step: {assessment, negative_eigenvalues (when assessed), reason
-// (when not assessed or critical)}; `not_assessed` is stability_not_assessed's reason when the
-// step was not assessed for it.
+// The stability of a reported step: {assessment, criterion and negative_eigenvalues (energy) or
+// growing_modes and kinetic (kinetic) when assessed, reason (when not assessed or critical)};
+// `not_assessed` is stability_not_assessed's reason when the step was not assessed for it.
 nlohmann::json observe_stability(const StepRecord& step, const std::string& not_assessed);
 
 // The kinematic check (core/kinematic_check.hpp): the worst element when it is past the bound.

@@ -220,11 +220,14 @@ void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
 }
 
 // A static step's stability (core/static_stability.hpp): "; stable", "; UNSTABLE: N negative
-// eigenvalues", "; stability critical: why" or "; stability not assessed: why".
+// eigenvalues" (or "(kinetic): N growing modes"), "; stability critical: why" or "; stability not
+// assessed: why".
 void print_stability(const nlohmann::json& s, std::ostream& os) {
     const std::string a = s["assessment"].get<std::string>();
     if (a == "stable") {
         os << "; stable";
+    } else if (a == "unstable" && s.contains("growing_modes")) {
+        os << "; UNSTABLE (kinetic): " << s["growing_modes"] << " growing mode(s)";
     } else if (a == "unstable") {
         os << "; UNSTABLE: " << s["negative_eigenvalues"] << " negative eigenvalue(s)";
     } else {

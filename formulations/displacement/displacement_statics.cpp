@@ -5,6 +5,7 @@
 #include "formulations/displacement/displacement_statics_absent_terms.hpp"
 #include "formulations/displacement/displacement_statics_assembly.hpp"
 #include "formulations/displacement/displacement_statics_energy.hpp"
+#include "formulations/displacement/displacement_statics_kinetic.hpp"
 #include "formulations/displacement/displacement_statics_setup.hpp"
 #include "formulations/displacement/displacement_statics_warm_start.hpp"
 #include "parameterizations/registry.hpp"

@@ -24,6 +24,7 @@
 
 #include "core/model.hpp"
 #include "core/potential_hessian.hpp"
+#include "core/static_stability_kinetic.hpp"
 #include "core/static_state.hpp"
 #include "formulations/displacement/calculate_rotating_frame_forces.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
@@ -35,7 +36,7 @@
 namespace rotbeam::form {
 
 template <param::RotationParameterization P>
-class DisplacementStatics : public StaticProblem, public PotentialSystem {
+class DisplacementStatics : public StaticProblem, public PotentialSystem, public KineticSystem {
   public:
     using Params = param::Params<P::kSize>;
 
@@ -60,6 +61,8 @@ class DisplacementStatics : public StaticProblem, public PotentialSystem {
     PotentialHessian potential_hessian() override;
     bool potential_gradient(VecX& gradient) override;
     void move_along_potential_chart(const Eigen::Ref<const VecX>& dx) override;
+    // The linearized free motion's lowest eigenvalues (displacement_statics_kinetic.hpp).
+    KineticSpectrum kinetic_spectrum(int count) override;
     // Dynamics: every load multiplied by its own time function at t (gravity by 1), λ = 1; the
     // residual scale stays the one of λ = 1. Prescribed motion is not time-dependent here (the
     // dynamic problem rejects non-zero prescribed motion).
