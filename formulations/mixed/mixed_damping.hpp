@@ -40,7 +40,7 @@
 
 namespace rotbeam::form {
 
-// One element's damping: μ at mid-length (interpolated as the compliance) and C* = S⁻¹.
+// One element's damping: μ at mid-length (linear between stations) and C* = S⁻¹.
 struct MixedDampingSection {
     Vec6 mu = Vec6::Zero();
     Mat6 stiffness = Mat6::Zero();

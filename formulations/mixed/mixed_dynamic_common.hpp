@@ -25,8 +25,9 @@ struct MixedEnergy {
 };
 
 // Every element's stiffness-proportional damping (mixed_damping.hpp): μ at mid-length, linear
-// between stations as the compliance, and C* = S⁻¹. Throws InputError when a damped element's
-// compliance is singular (a rigid component has no strain rate to damp).
+// between stations, and C* = S⁻¹ (the stiffness linear between stations, mixed_layout.cpp). Throws
+// InputError when a damped element's compliance is singular (a rigid component has no strain rate
+// to damp).
 std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
                                                         const MixedLayout& layout);
 

@@ -76,7 +76,7 @@ std::vector<MixedDampingSection> mixed_damping_sections(const Model& model,
     for (std::size_t e = 0; e < layout.elements.size(); ++e) {
         const MixedElement& el = layout.elements[e];
         const Member& member = model.members[static_cast<std::size_t>(el.member)];
-        // μ interpolated between stations as the compliance (mixed_layout.cpp).
+        // μ linear between stations, as the stiffness (mixed_layout.cpp).
         out[e].mu =
             section_property_at(member, el.s_mid / ReferenceGeometry(model, el.member).length(),
                                 [](const Section& s) { return s.damping; });

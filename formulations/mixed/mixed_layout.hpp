@@ -34,7 +34,8 @@
 namespace rotbeam::form {
 
 // A section property at arc-length fraction s/L of a member, `get(section)` linear between
-// stations (constant with one station): the compliance of the layout, the damping of the dynamics.
+// stations (constant with one station): the stiffness (or compliance) and mass of the layout, the
+// damping of the dynamics.
 template <class Get>
 auto section_property_at(const Member& member, double fraction, Get get) {
     const std::vector<SectionStation>& st = member.sections;
