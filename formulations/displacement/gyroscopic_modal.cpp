@@ -86,6 +86,7 @@ namespace {
 
 // ‖S ∓ Sᵀ‖_max / ‖S‖_max: the asymmetry (sign −1) or the departure from skew symmetry (+1).
 double gyroscopic_structure_defect(const SparseMatrix& S, double sign) {
+    if (S.nonZeros() == 0) return 0.0;  // G = 0 (no spin): no entries to take a maximum over
     const double largest = S.coeffs().cwiseAbs().maxCoeff();
     if (!(largest > 0.0)) return 0.0;
     const SparseMatrix d = S + sign * SparseMatrix(S.transpose());
