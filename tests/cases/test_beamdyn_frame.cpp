@@ -3,9 +3,12 @@
 // TipRDzr, against BeamDyn's own output (tests/data/beamdyn/bd_isotropic_rollup/bd_driver.out);
 // the same columns in the result's CSV (steps_csv.hpp, history_csv.hpp) against the JSON block
 // and BeamDyn's output.
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -127,6 +130,60 @@ BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
         }
     }
     BOOST_TEST(r["beamdyn_frame"]["dcm"][0][0].get<double>() == 1.0);
+}
+
+// A root frame turned about x (GlbDCM rows (1, 0, 0), (0, 0.8, 0.6), (0, −0.6, 0.8): exact in
+// decimal, a rotation to round-off) places the roll-up's blade along GlbDCMᵀ ẑ, while its tip
+// moment about −x, a global vector, is the same vector in the turned root frame: the same problem
+// turned. So the global tip displacement is GlbDCMᵀ times the unturned deck's, and the result in
+// BeamDyn's frame (TD = GlbDCM u) is the unturned deck's, which BeamDyn printed: the root
+// transform of the import and the frame of the output checked together. Tolerance: BeamDyn's
+// printed digits as above (5e-9); rotbeam's two runs agree to round-off (1e-12 of |u|: the turned
+// deck's equations are the unturned ones in rotated components).
+BOOST_AUTO_TEST_CASE(turned_root_frame_gives_the_turned_answer_and_beamdyns_printed_tip) {
+    std::ifstream in(kDeck + "bd_driver.inp");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string deck = text.str();
+    const auto swap = [&deck](const std::string& from, const std::string& to) {
+        const std::size_t at = deck.find(from);
+        BOOST_TEST_REQUIRE(at != std::string::npos, from);
+        deck.replace(at, from.size(), to);
+    };
+    swap("0.0000000E+00  1.0000000E+00  0.0000000E+00",
+         "0.0000000E+00  8.0000000E-01  6.0000000E-01");
+    swap("0.0000000E+00  0.0000000E+00  1.0000000E+00",
+         "0.0000000E+00 -6.0000000E-01  8.0000000E-01");
+    swap("\"bd_primary.inp\"", "\"" + kDeck + "bd_primary.inp\"");
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        ("rotbeam-turned-rollup-" + std::to_string(::getpid()) + ".inp");
+    std::ofstream(file) << deck;
+    const nlohmann::json turned = run_in_beamdyns_frame(file.string());
+    std::filesystem::remove(file);
+    const nlohmann::json plain = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
+    Mat3 dcm;
+    dcm << 1, 0, 0, 0, 0.8, 0.6, 0, -0.6, 0.8;
+    const auto vec = [](const nlohmann::json& j) {
+        return Vec3(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+    };
+    const Vec3 u_turned = vec(turned["steps"].back()["points"]["tip"]["displacement"]);
+    const Vec3 u_plain = vec(plain["steps"].back()["points"]["tip"]["displacement"]);
+    BOOST_TEST_MESSAGE("turned root frame: tip u " << u_turned.transpose() << ", GlbDCMᵀ u_plain "
+                                                   << (dcm.transpose() * u_plain).transpose());
+    BOOST_TEST((u_turned - dcm.transpose() * u_plain).norm() <= 1e-12 * u_plain.norm());
+    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
+    const nlohmann::json& tip = turned["steps"].back()["beamdyn"]["points"]["tip"];
+    const char* axes[] = {"xr", "yr", "zr"};
+    for (int i = 0; i < 3; ++i) {
+        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
+        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
+        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
+            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
+            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
+        }
+    }
+    BOOST_TEST(turned["beamdyn_frame"]["dcm"][1][2].get<double>() == 0.6);
 }
 
 // The load steps' CSV of the roll-up carries tip_TDxr … tip_RDzr: equal to the JSON block at every

@@ -2,6 +2,8 @@
 // (docs/beamdyn-import.md): the axis permutation and frame rule, the roll-up against its exact
 // solution in every combination, rotbeam at BeamDyn's discretization against the outputs shipped
 // with the decks, every static deck in every combination, and the refusals of the bad decks.
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdio>
@@ -190,6 +192,63 @@ BOOST_AUTO_TEST_CASE(twist_leaves_an_isotropic_cantilever_unchanged) {
             BOOST_TEST((twisted.u - plain.u).norm() < 1e-11 * plain.u.norm());
         }
     }
+}
+
+// The driver's DistrLoad: the cantilever deck with its gravity (Gx = 9.806 m/s² on 1 kg/m, no mass
+// offset) replaced by the distributed force DistrLoad(1) = 9.806 N/m it exerts (the
+// distributed-load deck) is the same beam under the same dead load, integrated by the same rule
+// through another path of the import (a member load instead of the section mass times gravity):
+// the tips agree in every combination. Tolerance: the two discrete problems have the same
+// equations up to the order of the floating-point sums, and each solve stops at corrections of
+// 1e-12 (docs/solver-convergence.md): 1e-10 of |u| (measured below it). A dropped DistrLoad
+// leaves the beam unloaded, a component in the wrong axis moves the tip elsewhere: both off by
+// |u| itself.
+// Its moment components DistrLoad(4..6): a distributed moment m about y on the straight 10 m
+// cantilever (EI = 100 N·m² about BeamDyn's x and y) bends it as the linear theory says while
+// the rotations stay small: M(s) = m (L − s), tip rotation m L²/(2 EI) about y and tip
+// displacement m L³/(3 EI) along x. At m = 1e-4 N·m/m the tip turns by 5e-5 rad, so the geometric
+// nonlinearity is of relative order 1e-9; the exact rotation is quadratic and the displacement
+// cubic in s, inside the order-5 element's space. Tolerance 1e-6 relative (measured below it).
+BOOST_AUTO_TEST_CASE(distributed_loads_of_the_driver_load_every_point) {
+    for (const comb::Combination& c : comb::all_combinations(false)) {
+        const std::vector<std::string> o = combination_overrides(c, 32);
+        const Tip distributed = tip_of(run(load_case(driver("distributed-load"), o)));
+        const Tip gravity = tip_of(run(load_case(driver("bd_static_cantilever_beam"), o)));
+        BOOST_TEST_CONTEXT(c.label() << " distributed " << distributed.u.transpose() << " gravity "
+                                     << gravity.u.transpose()) {
+            BOOST_TEST(solved(distributed.status));
+            BOOST_TEST(gravity.u.norm() > 1.0);
+            BOOST_TEST((distributed.u - gravity.u).norm() <= 1e-10 * gravity.u.norm());
+        }
+    }
+    // The moment: the deck's force line replaced by a moment line, in a temporary copy that names
+    // the cantilever's primary file by its absolute path.
+    std::ifstream in(driver("distributed-load"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string deck = text.str();
+    const auto swap = [&deck](const std::string& from, const std::string& to) {
+        const size_t at = deck.find(from);
+        BOOST_TEST_REQUIRE(at != std::string::npos, from);
+        deck.replace(at, from.size(), to);
+    };
+    swap("      9.806   DistrLoad(1)", "          0   DistrLoad(1)");
+    swap("          0   DistrLoad(5)", "     1.0E-4   DistrLoad(5)");
+    swap("\"../bd_static_cantilever_beam/bd_primary.inp\"",
+         "\"" + test::kBeamDynDecks + "bd_static_cantilever_beam/bd_primary.inp\"");
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        ("rotbeam-distributed-moment-" + std::to_string(::getpid()) + ".inp");
+    std::ofstream(file) << deck;
+    const Tip t = tip_of(run(load_case(file.string())));
+    std::filesystem::remove(file);
+    const double m = 1e-4, L = 10.0, EI = 100.0;
+    BOOST_TEST_MESSAGE(std::setprecision(10) << "distributed moment tip: u " << t.u.transpose()
+                                             << ", rotation (WM/4) " << t.wm.transpose() / 4.0);
+    BOOST_TEST(solved(t.status));
+    BOOST_TEST(std::abs(t.u.x() - m * L * L * L / (3.0 * EI)) <= 1e-6 * m * L * L * L / (3.0 * EI));
+    // WM parameters 4 tan(φ/4) n: φ = 5e-5 rad gives φ to 1e-10 relative.
+    BOOST_TEST(std::abs(t.wm.y() - m * L * L / (2.0 * EI)) <= 1e-6 * m * L * L / (2.0 * EI));
 }
 
 // `rotbeam import beamdyn` writes the text that `rotbeam run DRIVER.inp` loads: the written case,
