@@ -3,8 +3,6 @@
 // TipRDzr, against BeamDyn's own output (tests/data/beamdyn/bd_isotropic_rollup/bd_driver.out);
 // the same columns in the result's CSV (steps_csv.hpp, history_csv.hpp) against the JSON block
 // and BeamDyn's output.
-#include <unistd.h>
-
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -141,24 +139,13 @@ BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
 // printed digits as above (5e-9); rotbeam's two runs agree to round-off (1e-12 of |u|: the turned
 // deck's equations are the unturned ones in rotated components).
 BOOST_AUTO_TEST_CASE(turned_root_frame_gives_the_turned_answer_and_beamdyns_printed_tip) {
-    std::ifstream in(kDeck + "bd_driver.inp");
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string deck = text.str();
-    const auto swap = [&deck](const std::string& from, const std::string& to) {
-        const std::size_t at = deck.find(from);
-        BOOST_TEST_REQUIRE(at != std::string::npos, from);
-        deck.replace(at, from.size(), to);
-    };
-    swap("0.0000000E+00  1.0000000E+00  0.0000000E+00",
-         "0.0000000E+00  8.0000000E-01  6.0000000E-01");
-    swap("0.0000000E+00  0.0000000E+00  1.0000000E+00",
-         "0.0000000E+00 -6.0000000E-01  8.0000000E-01");
-    swap("\"bd_primary.inp\"", "\"" + kDeck + "bd_primary.inp\"");
     const std::filesystem::path file =
-        std::filesystem::temp_directory_path() /
-        ("rotbeam-turned-rollup-" + std::to_string(::getpid()) + ".inp");
-    std::ofstream(file) << deck;
+        test::changed_driver(kDeck + "bd_driver.inp", "rotbeam-turned-rollup",
+                             {{"0.0000000E+00  1.0000000E+00  0.0000000E+00",
+                               "0.0000000E+00  8.0000000E-01  6.0000000E-01"},
+                              {"0.0000000E+00  0.0000000E+00  1.0000000E+00",
+                               "0.0000000E+00 -6.0000000E-01  8.0000000E-01"},
+                              {"\"bd_primary.inp\"", "\"" + kDeck + "bd_primary.inp\""}});
     const nlohmann::json turned = run_in_beamdyns_frame(file.string());
     std::filesystem::remove(file);
     const nlohmann::json plain = run_in_beamdyns_frame(kDeck + "bd_driver.inp");

@@ -2,7 +2,6 @@
 // (docs/beamdyn-import.md): the axis permutation and frame rule, the roll-up against its exact
 // solution in every combination, rotbeam at BeamDyn's discretization against the outputs shipped
 // with the decks, every static deck in every combination, and the refusals of the bad decks.
-#include <unistd.h>
 
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -223,23 +222,12 @@ BOOST_AUTO_TEST_CASE(distributed_loads_of_the_driver_load_every_point) {
     }
     // The moment: the deck's force line replaced by a moment line, in a temporary copy that names
     // the cantilever's primary file by its absolute path.
-    std::ifstream in(driver("distributed-load"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string deck = text.str();
-    const auto swap = [&deck](const std::string& from, const std::string& to) {
-        const size_t at = deck.find(from);
-        BOOST_TEST_REQUIRE(at != std::string::npos, from);
-        deck.replace(at, from.size(), to);
-    };
-    swap("      9.806   DistrLoad(1)", "          0   DistrLoad(1)");
-    swap("          0   DistrLoad(5)", "     1.0E-4   DistrLoad(5)");
-    swap("\"../bd_static_cantilever_beam/bd_primary.inp\"",
-         "\"" + test::kBeamDynDecks + "bd_static_cantilever_beam/bd_primary.inp\"");
-    const std::filesystem::path file =
-        std::filesystem::temp_directory_path() /
-        ("rotbeam-distributed-moment-" + std::to_string(::getpid()) + ".inp");
-    std::ofstream(file) << deck;
+    const std::filesystem::path file = test::changed_driver(
+        driver("distributed-load"), "rotbeam-distributed-moment",
+        {{"      9.806   DistrLoad(1)", "          0   DistrLoad(1)"},
+         {"          0   DistrLoad(5)", "     1.0E-4   DistrLoad(5)"},
+         {"\"../bd_static_cantilever_beam/bd_primary.inp\"",
+          "\"" + test::kBeamDynDecks + "bd_static_cantilever_beam/bd_primary.inp\""}});
     const Tip t = tip_of(run(load_case(file.string())));
     std::filesystem::remove(file);
     const double m = 1e-4, L = 10.0, EI = 100.0;
