@@ -98,6 +98,23 @@ void check_columns_equal_json(const std::map<std::string, std::vector<double>>& 
     }
 }
 
+// The result's `beamdyn` tip block as written (no conversion in the test: TD against TipTD*, RD
+// against TipRD*) against the last row of BeamDyn's roll-up output, to half a unit of its last
+// printed digit (argued at rollup_tip_in_beamdyns_frame_matches_its_printed_output).
+void expect_beamdyns_printed_rollup_tip(const nlohmann::json& r) {
+    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
+    const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
+    const char* axes[] = {"xr", "yr", "zr"};
+    for (int i = 0; i < 3; ++i) {
+        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
+        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
+        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
+            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
+            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
+        }
+    }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(beamdyn_frame)
@@ -116,17 +133,7 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_parameters_are_four_tan_quarter_angle) {
 // no conversion in the test: TD against TipTD*, RD against TipRD*.
 BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
     const nlohmann::json r = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
-    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
-    const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
-    const char* axes[] = {"xr", "yr", "zr"};
-    for (int i = 0; i < 3; ++i) {
-        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
-        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
-        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
-            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
-            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
-        }
-    }
+    expect_beamdyns_printed_rollup_tip(r);
     BOOST_TEST(r["beamdyn_frame"]["dcm"][0][0].get<double>() == 1.0);
 }
 
@@ -159,17 +166,7 @@ BOOST_AUTO_TEST_CASE(turned_root_frame_gives_the_turned_answer_and_beamdyns_prin
     BOOST_TEST_MESSAGE("turned root frame: tip u " << u_turned.transpose() << ", GlbDCMᵀ u_plain "
                                                    << (dcm.transpose() * u_plain).transpose());
     BOOST_TEST((u_turned - dcm.transpose() * u_plain).norm() <= 1e-12 * u_plain.norm());
-    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
-    const nlohmann::json& tip = turned["steps"].back()["beamdyn"]["points"]["tip"];
-    const char* axes[] = {"xr", "yr", "zr"};
-    for (int i = 0; i < 3; ++i) {
-        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
-        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
-        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
-            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
-            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
-        }
-    }
+    expect_beamdyns_printed_rollup_tip(turned);
     BOOST_TEST(turned["beamdyn_frame"]["dcm"][1][2].get<double>() == 0.6);
 }
 
