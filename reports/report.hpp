@@ -23,6 +23,10 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
 // embedded as SVG (report_html.cpp).
 std::string markdown_page_html(const std::string& markdown, const std::string& out_dir);
 
+// The version of the Markdown library linked in (cmark-gfm's own string, e.g. "0.29.0.gfm.6"),
+// for `rotbeam --version`.
+std::string markdown_library_version();
+
 // The id of a level-2 heading titled `title` in the HTML page (lower-case letters and digits,
 // other runs of characters as one '-'); `used` counts the ids given so far, in document order, and
 // makes repeated titles unique (-2, -3, ...).

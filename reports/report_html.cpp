@@ -102,6 +102,8 @@ std::string heading_id(const std::string& title, std::map<std::string, int>& use
     return n == 1 ? id : id + "-" + std::to_string(n);
 }
 
+std::string markdown_library_version() { return cmark_version_string(); }
+
 std::string markdown_page_html(const std::string& markdown, const std::string& out_dir) {
     cmark_gfm_core_extensions_ensure_registered();
     Parser parser;

@@ -9,7 +9,7 @@ do for [fmt in "pngcairo svg"] {
     set multiplot layout 1, 2 title plottitle noenhanced font ",11"
     set logscale y
     set format y "%g"
-    set ylabel "effectivity (estimated / true error)"
+    set ylabel "effectivity (estimated / true error) [-]"
     set grid
     set key top right font ",9"
     set object 1 rectangle from graph 0, first 0.5 to graph 1, first 2.0 behind \
@@ -19,13 +19,13 @@ do for [fmt in "pngcairo svg"] {
         if (panel == 1) {
             unset logscale x
             set format x "%g"
-            set xlabel "order p (2 or 4 elements per member)"
+            set xlabel "order p (2 or 4 elements per member) [-]"
             set title "displacement formulation: p+1 (p+2 decay check)"
             set xrange [*:*]
         } else {
             set logscale x 2
             set format x "%g"
-            set xlabel "elements per member"
+            set xlabel "elements per member [-]"
             set title "mixed formulation: h/2, h/4 (observed order)"
         }
         set offsets graph 0.05, graph 0.05, 0, 0

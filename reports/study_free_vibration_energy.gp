@@ -9,8 +9,8 @@ dissipative(k) = strstrt(word(titles, k), "ga0.") > 0 || strstrt(word(titles, k)
 set terminal pngcairo size 900, 900 enhanced font ",10"
 set output outbase.'.png'
 set multiplot layout 2, 1
-set xlabel "periods of the first mode"
-set ylabel "(E − E0)/E0, mean over 10 periods"
+set xlabel "periods of the first mode [-]"
+set ylabel "(E − E0)/E0, mean over 10 periods [-]"
 set format y "%.1e"
 set key outside right top noenhanced font ",9"
 set grid

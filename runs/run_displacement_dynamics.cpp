@@ -165,6 +165,13 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
     }
     result["counters"] = counters_json(problem.counters());
     report_checked_modes(checked, result["steps"].empty() ? "undeformed" : "static", result);
+    // The sections' damping acts in the dynamics only: these are the undamped structure's modes
+    // (its decay rates are not in growth_rate), said in the result instead of left unsaid.
+    if (model.has_damping()) {
+        result["modal"]["damping"] = "left out: the modes are the undamped structure's";
+        result["message"] = result["message"].get<std::string>() +
+                            "; the sections' damping is left out (undamped modes)";
+    }
     // A static state that stalled at round-off is carried into the modal status.
     if (result["status"] == "converged") {
         set_analysis_status(result, SolveStatus::converged, result["message"].get<std::string>());

@@ -372,7 +372,7 @@ nlohmann::json study_joined_beam_dynamics(const StudyOptions& o) {
                     {{"xcol", "3"},
                      {"ycol", "4"},
                      {"xlabel", "thread CPU time of the run, median of repeats [s]"},
-                     {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference)"},
+                     {"ylabel", "max_t ‖Δu_{joint}‖ / max_t ‖u_{joint}‖ (same-mesh reference) [-]"},
                      {"plottitle", "Joined beam, " + l.load + " load, 0–" +
                                        cpu_seconds_text(base.end_time) +
                                        ": time error vs CPU time, one panel per formulation and "

@@ -290,7 +290,7 @@ nlohmann::json study_joined_beam_modal(const StudyOptions& o) {
              {{"files", join_words(files)},
               {"titles", join_words(titles)},
               {"xcol", std::string(x) == "elements" ? "1" : "2"},
-              {"xlabel", std::string(x) == "elements" ? "elements per member" : "unknowns"},
+              {"xlabel", std::string(x) == "elements" ? "elements per member [-]" : "unknowns [-]"},
               {"plottitle", std::string("Joined beam, five lowest frequencies: error vs ") + x},
               {"outbase", out_path(o, base)}});
         out["figures"].push_back(base + ".png");

@@ -351,18 +351,18 @@ nlohmann::json study_manufactured_time(const StudyOptions& o) {
         double refy;
     };
     const Figure figures[] = {
-        {"manufactured-time-u", files, titles, "1", "6", "time step Δt", "time error ‖Δu‖/L [-]",
-         "Manufactured motion: time error vs Δt", "0.025", "2", 2e-3},
-        {"manufactured-time-rotation", files, titles, "1", "7", "time step Δt",
+        {"manufactured-time-u", files, titles, "1", "6", "time step Δt [s]",
+         "time error ‖Δu‖/L [-]", "Manufactured motion: time error vs Δt", "0.025", "2", 2e-3},
+        {"manufactured-time-rotation", files, titles, "1", "7", "time step Δt [s]",
          "time error, rotation [rad]", "Manufactured motion: rotation error vs Δt", "0.025", "2",
          2e-3},
-        {"manufactured-time-velocity", files, titles, "1", "8", "time step Δt",
+        {"manufactured-time-velocity", files, titles, "1", "8", "time step Δt [s]",
          "time error, velocities / momenta (relative) [-]",
          "Manufactured motion: velocity-level error vs Δt", "0.025", "2", 2e-3},
-        {"manufactured-time-forces", mfiles, mtitles, "1", "9", "time step Δt",
+        {"manufactured-time-forces", mfiles, mtitles, "1", "9", "time step Δt [s]",
          "time error, internal forces (relative) [-]",
          "Manufactured motion (mixed): internal-force error vs Δt", "0.025", "2", 2e-3},
-        {"manufactured-space-u", sfiles, stitles, "1", "3", "elements per member",
+        {"manufactured-space-u", sfiles, stitles, "1", "3", "elements per member [-]",
          "error ‖Δu‖/L [-]", "Manufactured motion: space error at small Δt", "2", "-2", 0.2}};
     for (const Figure& g : figures) {
         if (g.files.empty()) continue;

@@ -129,7 +129,7 @@ std::string panel_of(const Combination& c) {
 
 void path_plots(const StudyOptions& o, const PathCase& c, const PanelFigure& figure,
                 nlohmann::json& figures) {
-    const std::string xlabel = c.angle_unit == "λ" ? "load factor λ (tip rotation λπ rad)"
+    const std::string xlabel = c.angle_unit == "λ" ? "load factor λ (tip rotation λπ rad) [-]"
                                                    : "load factor κL [rad] (the tip angle for "
                                                      "the isotropic helix)";
     const std::string base = "singularity-" + c.key;
@@ -148,7 +148,7 @@ void path_plots(const StudyOptions& o, const PathCase& c, const PanelFigure& fig
                 {{"xcol", "1"},
                  {"ycol", "3"},
                  {"xlabel", xlabel},
-                 {"ylabel", "Newton iterations per reported step"},
+                 {"ylabel", "Newton iterations per reported step [-]"},
                  {"plottitle", c.title + ": Newton iterations vs load"},
                  {"outbase", out_path(o, base + "-iterations")},
                  {"logx", "0"},
@@ -266,8 +266,8 @@ nlohmann::json mixed_reach_vs_mesh(const StudyOptions& o, const StudyResults& re
             o, figure,
             {{"xcol", "1"},
              {"ycol", "2"},
-             {"xlabel", "elements N"},
-             {"ylabel", "largest load factor reached λ* (tip rotation λ*π)"},
+             {"xlabel", "elements N [-]"},
+             {"ylabel", "largest load factor reached λ* (tip rotation λ*π) [-]"},
              {"plottitle", "Mixed formulation: reach on the roll-up against the mesh, λ*(N)"},
              {"outbase", out_path(o, "singularity-lambda-star")},
              {"logx", "1"},

@@ -1,6 +1,7 @@
 // `rotbeam --version`: the versions of the dependencies the program was built with, from their
 // headers' version macros; yaml-cpp's headers have none, so its CMake package's version is passed
-// in at configure time (ROTBEAM_YAML_CPP_VERSION, cases/runner/CMakeLists.txt).
+// in at configure time (ROTBEAM_YAML_CPP_VERSION, cases/runner/CMakeLists.txt); cmark-gfm's is the
+// linked library's own string (reports/report_html.cpp).
 #include "dependency_versions.hpp"
 
 #include <Spectra/Util/Version.h>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "SuiteSparse_config.h"
+#include "reports/report.hpp"
 
 namespace rotbeam::cli {
 
@@ -32,7 +34,8 @@ std::string dependency_versions() {
       << "  Boost        " << BOOST_VERSION / 100000 << "." << BOOST_VERSION / 100 % 1000 << "."
       << BOOST_VERSION % 100 << "\n"
       << "  nlohmann/json " << NLOHMANN_JSON_VERSION_MAJOR << "." << NLOHMANN_JSON_VERSION_MINOR
-      << "." << NLOHMANN_JSON_VERSION_PATCH << "\n";
+      << "." << NLOHMANN_JSON_VERSION_PATCH << "\n"
+      << "  cmark-gfm    " << markdown_library_version() << "\n";
     return s.str();
 }
 

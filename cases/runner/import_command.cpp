@@ -20,8 +20,9 @@ int command_import(const Args& args) {
         2,
         2,
         "Translate an input deck of another program into a rotbeam case. `beamdyn`: a BeamDyn "
-        "driver file, the primary file it names and the blade file that one names (static decks; "
-        "the supported keys and the refused ones: docs/beamdyn-import.md). `rotbeam run "
+        "driver file, the primary file it names and the blade file that one names (static and "
+        "dynamic decks, a turning root included; the supported keys and the refused ones: "
+        "docs/beamdyn-import.md). `rotbeam run "
         "DRIVER.inp` runs the same case directly.",
         {{"out", "CASE.yaml", "write the case to this file (default: standard output)"}}};
     const ParsedArguments a = parse_arguments(spec, args);

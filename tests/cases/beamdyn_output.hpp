@@ -3,12 +3,16 @@
 // printed.
 #pragma once
 
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cstddef>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rotbeam::test {
@@ -39,6 +43,27 @@ inline std::map<std::string, double> last_output_row(const std::string& file) {
     std::map<std::string, double> row;
     for (std::size_t i = 0; i < names.size(); ++i) row[names[i]] = values[i];
     return row;
+}
+
+// A temporary copy of the driver file `driver` with each `from` text replaced by its `to` (each
+// must occur), named `name` plus the process id in the system's temporary folder; the files the
+// driver names must then be given by absolute paths. The caller removes it.
+inline std::filesystem::path changed_driver(
+    const std::string& driver, const std::string& name,
+    const std::vector<std::pair<std::string, std::string>>& changes) {
+    std::ifstream in(driver);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string deck = text.str();
+    for (const auto& [from, to] : changes) {
+        const std::size_t at = deck.find(from);
+        BOOST_TEST_REQUIRE(at != std::string::npos, driver << " has no '" << from << "'");
+        deck.replace(at, from.size(), to);
+    }
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".inp");
+    std::ofstream(file) << deck;
+    return file;
 }
 
 }  // namespace rotbeam::test

@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -97,6 +98,23 @@ void check_columns_equal_json(const std::map<std::string, std::vector<double>>& 
     }
 }
 
+// The result's `beamdyn` tip block as written (no conversion in the test: TD against TipTD*, RD
+// against TipRD*) against the last row of BeamDyn's roll-up output, to half a unit of its last
+// printed digit (argued at rollup_tip_in_beamdyns_frame_matches_its_printed_output).
+void expect_beamdyns_printed_rollup_tip(const nlohmann::json& r) {
+    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
+    const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
+    const char* axes[] = {"xr", "yr", "zr"};
+    for (int i = 0; i < 3; ++i) {
+        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
+        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
+        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
+            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
+            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
+        }
+    }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(beamdyn_frame)
@@ -115,18 +133,41 @@ BOOST_AUTO_TEST_CASE(wiener_milenkovic_parameters_are_four_tan_quarter_angle) {
 // no conversion in the test: TD against TipTD*, RD against TipRD*.
 BOOST_AUTO_TEST_CASE(rollup_tip_in_beamdyns_frame_matches_its_printed_output) {
     const nlohmann::json r = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
-    const auto bd = test::last_output_row(kDeck + "bd_driver.out");
-    const nlohmann::json& tip = r["steps"].back()["beamdyn"]["points"]["tip"];
-    const char* axes[] = {"xr", "yr", "zr"};
-    for (int i = 0; i < 3; ++i) {
-        const double td = tip["TD"][static_cast<std::size_t>(i)].get<double>();
-        const double rd = tip["RD"][static_cast<std::size_t>(i)].get<double>();
-        BOOST_TEST_CONTEXT(axes[i] << ": TD " << td << ", RD " << rd) {
-            BOOST_TEST(std::abs(td - bd.at(std::string("TipTD") + axes[i])) <= 5e-9 + 1e-12);
-            BOOST_TEST(std::abs(rd - bd.at(std::string("TipRD") + axes[i])) <= 5e-9 + 1e-12);
-        }
-    }
+    expect_beamdyns_printed_rollup_tip(r);
     BOOST_TEST(r["beamdyn_frame"]["dcm"][0][0].get<double>() == 1.0);
+}
+
+// A root frame turned about x (GlbDCM rows (1, 0, 0), (0, 0.8, 0.6), (0, −0.6, 0.8): exact in
+// decimal, a rotation to round-off) places the roll-up's blade along GlbDCMᵀ ẑ, while its tip
+// moment about −x, a global vector, is the same vector in the turned root frame: the same problem
+// turned. So the global tip displacement is GlbDCMᵀ times the unturned deck's, and the result in
+// BeamDyn's frame (TD = GlbDCM u) is the unturned deck's, which BeamDyn printed: the root
+// transform of the import and the frame of the output checked together. Tolerance: BeamDyn's
+// printed digits as above (5e-9); rotbeam's two runs agree to round-off (1e-12 of |u|: the turned
+// deck's equations are the unturned ones in rotated components).
+BOOST_AUTO_TEST_CASE(turned_root_frame_gives_the_turned_answer_and_beamdyns_printed_tip) {
+    const std::filesystem::path file =
+        test::changed_driver(kDeck + "bd_driver.inp", "rotbeam-turned-rollup",
+                             {{"0.0000000E+00  1.0000000E+00  0.0000000E+00",
+                               "0.0000000E+00  8.0000000E-01  6.0000000E-01"},
+                              {"0.0000000E+00  0.0000000E+00  1.0000000E+00",
+                               "0.0000000E+00 -6.0000000E-01  8.0000000E-01"},
+                              {"\"bd_primary.inp\"", "\"" + kDeck + "bd_primary.inp\""}});
+    const nlohmann::json turned = run_in_beamdyns_frame(file.string());
+    std::filesystem::remove(file);
+    const nlohmann::json plain = run_in_beamdyns_frame(kDeck + "bd_driver.inp");
+    Mat3 dcm;
+    dcm << 1, 0, 0, 0, 0.8, 0.6, 0, -0.6, 0.8;
+    const auto vec = [](const nlohmann::json& j) {
+        return Vec3(j[0].get<double>(), j[1].get<double>(), j[2].get<double>());
+    };
+    const Vec3 u_turned = vec(turned["steps"].back()["points"]["tip"]["displacement"]);
+    const Vec3 u_plain = vec(plain["steps"].back()["points"]["tip"]["displacement"]);
+    BOOST_TEST_MESSAGE("turned root frame: tip u " << u_turned.transpose() << ", GlbDCMᵀ u_plain "
+                                                   << (dcm.transpose() * u_plain).transpose());
+    BOOST_TEST((u_turned - dcm.transpose() * u_plain).norm() <= 1e-12 * u_plain.norm());
+    expect_beamdyns_printed_rollup_tip(turned);
+    BOOST_TEST(turned["beamdyn_frame"]["dcm"][1][2].get<double>() == 0.6);
 }
 
 // The load steps' CSV of the roll-up carries tip_TDxr … tip_RDzr: equal to the JSON block at every

@@ -2,6 +2,7 @@
 // (docs/beamdyn-import.md): the axis permutation and frame rule, the roll-up against its exact
 // solution in every combination, rotbeam at BeamDyn's discretization against the outputs shipped
 // with the decks, every static deck in every combination, and the refusals of the bad decks.
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +71,24 @@ std::vector<std::string> combination_overrides(const comb::Combination& c, int m
         o.push_back("members.*.elements=" + std::to_string(mixed_elements));
     }
     return o;
+}
+
+// Deck `deck` solves in every combination (the displacement formulation at BeamDyn's
+// discretization, the mixed one with 32 elements) to the tip of deck `like` within `relative` of
+// its |u|, a loaded tip (|u| > 1 m).
+void expect_the_same_tip_in_every_combination(const std::string& deck, const std::string& like,
+                                              double relative) {
+    for (const comb::Combination& c : comb::all_combinations(false)) {
+        const std::vector<std::string> o = combination_overrides(c, 32);
+        const Tip a = tip_of(run(load_case(driver(deck), o)));
+        const Tip b = tip_of(run(load_case(driver(like), o)));
+        BOOST_TEST_CONTEXT(c.label() << " " << deck << " " << a.u.transpose() << ", " << like << " "
+                                     << b.u.transpose()) {
+            BOOST_TEST(solved(a.status));
+            BOOST_TEST(b.u.norm() > 1.0);
+            BOOST_TEST((a.u - b.u).norm() <= relative * b.u.norm());
+        }
+    }
 }
 
 }  // namespace
@@ -176,20 +195,48 @@ BOOST_AUTO_TEST_CASE(quadratic_twist_is_beamdyns_fit_at_the_nodes) {
 // (EI₂ = EI₃, k₂GA = k₃GA, M₂₂ = M₃₃), so the twisted deck under the same gravity must bend as
 // the untwisted cantilever deck: the twist then only relabels the section axes.
 BOOST_AUTO_TEST_CASE(twist_leaves_an_isotropic_cantilever_unchanged) {
-    for (const comb::Combination& c : comb::all_combinations(false)) {
-        const std::vector<std::string> o = combination_overrides(c, 32);
-        const Tip twisted = tip_of(run(load_case(driver("quadratic-twist"), o)));
-        const Tip plain = tip_of(run(load_case(driver("bd_static_cantilever_beam"), o)));
-        BOOST_TEST_CONTEXT(c.label() << " twisted " << twisted.u.transpose() << " plain "
-                                     << plain.u.transpose()) {
-            BOOST_TEST(solved(twisted.status));
-            // Tolerance: the section stiffness and mass, rotated into the global frame, are the
-            // same at every point with or without the twist, so the discrete equations agree to
-            // round-off; each solve stops at corrections of 1e-12 (docs/solver-convergence.md).
-            // Measured: 4e-16 of |u| (displacement and mixed).
-            BOOST_TEST((twisted.u - plain.u).norm() < 1e-11 * plain.u.norm());
-        }
-    }
+    // Tolerance: the section stiffness and mass, rotated into the global frame, are the same at
+    // every point with or without the twist, so the discrete equations agree to round-off; each
+    // solve stops at corrections of 1e-12 (docs/solver-convergence.md). Measured: 4e-16 of |u|
+    // (displacement and mixed).
+    expect_the_same_tip_in_every_combination("quadratic-twist", "bd_static_cantilever_beam", 1e-11);
+}
+
+// The driver's DistrLoad: the cantilever deck with its gravity (Gx = 9.806 m/s² on 1 kg/m, no mass
+// offset) replaced by the distributed force DistrLoad(1) = 9.806 N/m it exerts (the
+// distributed-load deck) is the same beam under the same dead load, integrated by the same rule
+// through another path of the import (a member load instead of the section mass times gravity):
+// the tips agree in every combination. Tolerance: the two discrete problems have the same
+// equations up to the order of the floating-point sums, and each solve stops at corrections of
+// 1e-12 (docs/solver-convergence.md): 1e-10 of |u| (measured below it). A dropped DistrLoad
+// leaves the beam unloaded, a component in the wrong axis moves the tip elsewhere: both off by
+// |u| itself.
+// Its moment components DistrLoad(4..6): a distributed moment m about y on the straight 10 m
+// cantilever (EI = 100 N·m² about BeamDyn's x and y) bends it as the linear theory says while
+// the rotations stay small: M(s) = m (L − s), tip rotation m L²/(2 EI) about y and tip
+// displacement m L³/(3 EI) along x. At m = 1e-4 N·m/m the tip turns by 5e-5 rad, so the geometric
+// nonlinearity is of relative order 1e-9; the exact rotation is quadratic and the displacement
+// cubic in s, inside the order-5 element's space. Tolerance 1e-6 relative (measured below it).
+BOOST_AUTO_TEST_CASE(distributed_loads_of_the_driver_load_every_point) {
+    expect_the_same_tip_in_every_combination("distributed-load", "bd_static_cantilever_beam",
+                                             1e-10);
+    // The moment: the deck's force line replaced by a moment line, in a temporary copy that names
+    // the cantilever's primary file by its absolute path.
+    const std::filesystem::path file = test::changed_driver(
+        driver("distributed-load"), "rotbeam-distributed-moment",
+        {{"      9.806   DistrLoad(1)", "          0   DistrLoad(1)"},
+         {"          0   DistrLoad(5)", "     1.0E-4   DistrLoad(5)"},
+         {"\"../bd_static_cantilever_beam/bd_primary.inp\"",
+          "\"" + test::kBeamDynDecks + "bd_static_cantilever_beam/bd_primary.inp\""}});
+    const Tip t = tip_of(run(load_case(file.string())));
+    std::filesystem::remove(file);
+    const double m = 1e-4, L = 10.0, EI = 100.0;
+    BOOST_TEST_MESSAGE(std::setprecision(10) << "distributed moment tip: u " << t.u.transpose()
+                                             << ", rotation (WM/4) " << t.wm.transpose() / 4.0);
+    BOOST_TEST(solved(t.status));
+    BOOST_TEST(std::abs(t.u.x() - m * L * L * L / (3.0 * EI)) <= 1e-6 * m * L * L * L / (3.0 * EI));
+    // WM parameters 4 tan(φ/4) n: φ = 5e-5 rad gives φ to 1e-10 relative.
+    BOOST_TEST(std::abs(t.wm.y() - m * L * L / (2.0 * EI)) <= 1e-6 * m * L * L / (2.0 * EI));
 }
 
 // `rotbeam import beamdyn` writes the text that `rotbeam run DRIVER.inp` loads: the written case,

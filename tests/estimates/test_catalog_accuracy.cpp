@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/static_driver.hpp"
 #include "estimates/accuracy_scale.hpp"
+#include "estimates/history_estimate.hpp"
 #include "runs/catalog.hpp"
 #include "runs/run_case.hpp"
 
@@ -71,12 +72,17 @@ BOOST_AUTO_TEST_CASE(catalog_defaults_meet_their_stated_accuracy) {
 // The catalog's dynamic cases that state an accuracy or a refusal (the BeamDyn decks' catalog
 // entries, cases/loader/deck_case.hpp): every combination of a formulation with a stated accuracy
 // meets it by its own estimate (the histories relative to their amplitudes); a formulation the case
-// states it refuses is refused in the stated words, before any step; and every formulation is one
-// or the other, so that the suite's matrix has no hole. The other dynamic cases state neither
-// and say why in their files (no discretization of theirs that the suite can afford reaches an
-// accuracy by its estimate).
+// states it refuses is refused in the stated words, before any step; a formulation the case states
+// neither for (the mixed formulation of the NREL 5-MW entries: one constant-strain element over
+// the blade at BeamDyn's discretization; the entry's comments say why) runs to a result and
+// carries its own estimate of every history, so that the suite's matrix shows that estimate
+// instead of a hole, and where that estimate reaches half an amplitude its status reads
+// `inaccurate` (estimates/history_estimate.hpp), never a clean `converged`. A formulation is never
+// both stated and refused. The other dynamic cases state neither for any formulation and say why
+// in their files (no discretization of theirs that the suite can afford reaches an accuracy by its
+// estimate).
 BOOST_AUTO_TEST_CASE(dynamic_catalog_cases_meet_their_stated_accuracy_or_are_refused_as_stated) {
-    int checked = 0, refused = 0;
+    int checked = 0, refused = 0, unstated = 0;
     for (const std::string& name : cli::catalog_cases()) {
         const std::string path = cli::resolve_case_path(name);
         const Model model = load_case(path, {}, CaseParts::case_file);
@@ -87,8 +93,8 @@ BOOST_AUTO_TEST_CASE(dynamic_catalog_cases_meet_their_stated_accuracy_or_are_ref
         for (const comb::Combination& c : comb::all_combinations(false)) {
             const auto stated = stated_accuracy.find(c.formulation);
             const auto refusal = refusals.find(c.formulation);
-            BOOST_TEST((stated == stated_accuracy.end()) != (refusal == refusals.end()),
-                       name << " " << c.label() << ": states an accuracy or a refusal, not both");
+            BOOST_TEST(!(stated != stated_accuracy.end() && refusal != refusals.end()),
+                       name << " " << c.label() << ": states an accuracy and a refusal");
             const std::vector<std::string> overrides = {
                 "discretization.formulation=" + c.formulation_name(),
                 "discretization.rotation=" + c.rotation_name()};
@@ -107,19 +113,40 @@ BOOST_AUTO_TEST_CASE(dynamic_catalog_cases_meet_their_stated_accuracy_or_are_ref
                 ++refused;
                 continue;
             }
-            if (stated == stated_accuracy.end()) continue;
             const RunRequest request{path, load_case(path, overrides, CaseParts::case_file)};
             nlohmann::json r = run_case(request);
             BOOST_TEST_REQUIRE(has_solution(r["status"].get<std::string>()),
                                name << " " << c.label() << ": " << r["status"]);
-            expect_stated_accuracy_met(request, r, stated->second, name + " " + c.label());
-            ++checked;
+            if (stated != stated_accuracy.end()) {
+                expect_stated_accuracy_met(request, r, stated->second, name + " " + c.label());
+                ++checked;
+                continue;
+            }
+            add_run_estimate(request, r);
+            // Target 1: only the measure's worst and missing count are read here.
+            const estimate::AccuracyMeasure m = estimate::measure_accuracy(request.model, r, 1.0);
+            const std::string status = r["status"].get<std::string>();
+            BOOST_TEST((m.quantities > 0 && m.missing == 0),
+                       name << " " << c.label() << ": " << m.quantities << " estimated, "
+                            << m.missing << " without an estimate");
+            if (m.worst >= estimate::kRelativeInaccurate) {
+                BOOST_TEST(status == estimate::kInaccurate,
+                           name << " " << c.label() << ": estimate " << m.worst
+                                << " of an amplitude, status " << status);
+            }
+            BOOST_TEST_MESSAGE(name << " " << c.label() << ": states nothing; status " << status
+                                    << ", worst estimate " << m.worst << " (" << m.worst_what
+                                    << ")");
+            ++unstated;
         }
     }
-    // The two NREL 5-MW decks: five displacement combinations each with an estimate, five mixed
-    // ones each refused (their damping). Fewer would mean an entry or its statement went missing.
+    // The two NREL 5-MW decks: five displacement combinations each meeting the stated accuracy,
+    // five mixed ones each run with their estimate (the decks' damping runs in the mixed dynamics
+    // since 2026-11-27; they were refused before). Fewer would mean an entry or its statement
+    // went missing.
     BOOST_TEST(checked >= 10, checked << " combinations checked");
-    BOOST_TEST(refused >= 10, refused << " combinations refused");
+    BOOST_TEST(refused + unstated >= 10,
+               refused << " combinations refused, " << unstated << " run without a statement");
 }
 
 }  // namespace rotbeam

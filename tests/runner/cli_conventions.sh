@@ -10,7 +10,7 @@ script=$2
 . "$(dirname "$0")/scratch.sh"
 
 "$rotbeam" --version >"$work/version" || fail "--version: exit $?"
-for dep in SUNDIALS Eigen GSL yaml-cpp SuiteSparse KLU Spectra Boost; do
+for dep in SUNDIALS Eigen GSL yaml-cpp SuiteSparse KLU Spectra Boost cmark-gfm; do
     grep -Eq "$dep[^0-9]*[0-9]+\.[0-9]+" "$work/version" || fail "--version names no $dep version"
 done
 

@@ -3,7 +3,8 @@
 # a short joined-beam response per parameterization and integrator writes its JSON and CSV history
 # with the joint's columns (the quaternion also its norm drift), IDA's tolerances are taken from
 # the case, a damped case runs, a damped modal analysis and an unknown integrator are refused as
-# bad input, and the joined beam's modes are reported with growth rates (the quaternion's equal to
+# bad input (the displacement formulation's damped modal analysis says it leaves the damping out),
+# and the joined beam's modes are reported with growth rates (the quaternion's equal to
 # WM's).
 # Usage: mixed_dynamics_contract.sh ROTBEAM SOURCE_DIR
 set -u
@@ -74,6 +75,19 @@ grep -q "damping:" "$work/damped-modal.yaml" || fail "could not make the damped 
 grep -q "damping is not available in the mixed modal analysis" "$work/err" ||
     fail "damping message: $(cat "$work/err")"
 [ ! -e "$work/d.json" ] || fail "a result file was written for a refused damped modal case"
+# The displacement formulation's modes of the same case are the undamped structure's: it runs, and
+# its message and JSON say that the damping is left out (not dropped unsaid).
+"$rotbeam" run "$work/damped-modal.yaml" --formulation displacement --estimate off \
+    --json "$work/dd.json" >"$work/out" 2>"$work/err" ||
+    fail "damped modal analysis, displacement formulation: exit $?: $(cat "$work/err")"
+grep -q "the sections' damping is left out (undamped modes)" "$work/out" ||
+    fail "damped modal, displacement: the output does not say the damping is left out"
+python3 - "$work/dd.json" <<'PY' || fail "damped modal, displacement: JSON"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["modal"]["damping"].startswith("left out"), r["modal"]
+assert "damping is left out" in r["message"], r["message"]
+PY
 # The dynamics carry the damping (formulations/mixed/mixed_damping.hpp).
 sed -E 's/^(    density: 2700)$/\1\n    damping: [0, 0, 0, 1.0e-4, 1.0e-4, 1.0e-4]/' \
     "$src/cases/joined-beam-follower.yaml" >"$work/damped.yaml"
