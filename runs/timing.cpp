@@ -5,9 +5,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -92,6 +94,21 @@ Timing summarize(std::vector<double> samples) {
 
 }  // namespace
 
+int timing_repeats(int wanted) {
+    const int at_least_one = std::max(1, wanted);
+    const char* text = std::getenv("ROTBEAM_TIMING_REPEATS");
+    if (text == nullptr) return at_least_one;
+    int cap = 0;
+    const char* end = text + std::strlen(text);
+    const auto [stop, error] = std::from_chars(text, end, cap);
+    if (error != std::errc() || stop != end || cap < 1) {
+        throw InputError(
+            std::string("ROTBEAM_TIMING_REPEATS: '") + text +
+            "' is not a positive integer (the most timed repeats a measurement makes)");
+    }
+    return std::min(at_least_one, cap);
+}
+
 double median(std::vector<double> samples) {
     ROTBEAM_VERIFY(!samples.empty(), "median of no samples");
     const size_t n = samples.size();
@@ -115,7 +132,8 @@ long peak_rss_self_kb() {
 Timing time_in_process(const std::function<void()>& work, int repeats, double budget_seconds) {
     std::vector<double> samples;
     const Clock::time_point begin = Clock::now();
-    for (int i = 0; i < std::max(1, repeats); ++i) {
+    const int count = timing_repeats(repeats);
+    for (int i = 0; i < count; ++i) {
         const Clock::time_point start = Clock::now();
         work();
         samples.push_back(seconds_since(start));
@@ -132,7 +150,8 @@ Timing time_whole_process(const std::vector<std::string>& arguments, int repeats
     long peak = 0;
     int exit_code = 0;
     const Clock::time_point begin = Clock::now();
-    for (int i = 0; i < std::max(1, repeats); ++i) {
+    const int count = timing_repeats(repeats);
+    for (int i = 0; i < count; ++i) {
         long rss = 0;
         double cpu_seconds = 0.0;
         samples.push_back(run_child(arguments, rss, exit_code, cpu_seconds));

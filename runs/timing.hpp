@@ -27,13 +27,23 @@ struct Timing {
     double median_cpu_seconds = 0.0;
 };
 
+// How many timed repeats a measurement that wants `wanted` makes: `wanted`, or fewer when
+// ROTBEAM_TIMING_REPEATS caps them (a positive integer; at least one repeat either way). The cap
+// is for the tests that run a timed study only for what it computes (the quick suite's
+// `speed-accuracy`: tests/runner/quick_suite.sh and the tests that run the suite again), whose
+// timings scripts/compare-results.py never compares: its repeats are most of the suite's time and
+// check nothing there. Unset, nothing changes. A value that is not a positive integer is an
+// InputError naming the variable. Every loop of timed repeats goes through here.
+int timing_repeats(int wanted);
+
 // Wall time (steady clock) of `work`, repeated `repeats` times (at least once), median.
-// `budget_seconds` > 0 stops repeating once that much time has been spent (after one run).
+// `budget_seconds` > 0 stops repeating once that much time has been spent (after one run); the
+// repeats are capped by timing_repeats.
 Timing time_in_process(const std::function<void()>& work, int repeats, double budget_seconds = 0.0);
 
 // Whole-process wall time: this executable run with `arguments` as a registered child
 // (core/child_process.hpp, stopped with rotbeam; stdout/stderr to /dev/null), waited for; the
-// median over `repeats`, and the child's peak RSS.
+// median over `repeats` (timing_repeats), and the child's peak RSS.
 Timing time_whole_process(const std::vector<std::string>& arguments, int repeats,
                           double budget_seconds = 0.0);
 

@@ -24,7 +24,8 @@ DynamicPoint dynamic_point(const Combination& c, const TimeSetting& s, const Res
     const RunSpec spec = response_spec(c, s, w);
     std::vector<double> cpu, wall;
     nlohmann::json first;
-    for (int i = 0; i < 3; ++i) {
+    const int most = timing_repeats(3);
+    for (int i = 0; i < most; ++i) {
         const double c0 = thread_cpu_seconds();
         const Timing t = time_in_process(
             [&] {

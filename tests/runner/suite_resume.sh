@@ -15,6 +15,8 @@
 # JOBS2_SUITE: `rotbeam suite --quick --jobs 2` of the same program (the ctest fixture quick_suite).
 set -u
 jobs2=$3
+# One timed repeat per measurement, as in the fixture (quick_suite.sh): the timings are not compared.
+export ROTBEAM_TIMING_REPEATS=1
 # rotbeam, compare; work (a scratch folder), fail and failures; same and complete_files.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start

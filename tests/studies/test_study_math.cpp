@@ -1,10 +1,14 @@
-// The studies' decision logic (studies/study_math.hpp, timing.hpp's median): order fits,
-// the Pareto front, the singularity study's reach classifier and the round-off floor.
+// The studies' decision logic (studies/study_math.hpp, timing.hpp's median and cap on repeats):
+// order fits, the Pareto front, the singularity study's reach classifier and the round-off floor.
+#include <stdlib.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "runs/timing.hpp"
 #include "studies/study_math.hpp"
 
@@ -17,6 +21,31 @@ BOOST_AUTO_TEST_CASE(median_is_the_middle_sample_and_ignores_outliers) {
     BOOST_TEST(median({4.0, 1.0, 3.0, 100.0}) == 3.5);     // even count: mean of the two middle
     BOOST_TEST(median({2.0, 2.0, 2.0, 2.0, 1e9}) == 2.0);  // one descheduled run changes nothing
     BOOST_CHECK_THROW(median({}), std::logic_error);
+}
+
+// ROTBEAM_TIMING_REPEATS caps the timed repeats and never raises them; unset, the wanted count
+// (at least one); a value that is not a positive integer is refused by name.
+BOOST_AUTO_TEST_CASE(timing_repeats_are_capped_by_the_environment_only_downwards) {
+    unsetenv("ROTBEAM_TIMING_REPEATS");
+    BOOST_TEST(timing_repeats(5) == 5);
+    BOOST_TEST(timing_repeats(0) == 1);
+    setenv("ROTBEAM_TIMING_REPEATS", "1", 1);
+    BOOST_TEST(timing_repeats(5) == 1);
+    int calls = 0;
+    const Timing t = time_in_process([&] { ++calls; }, 7);
+    BOOST_TEST(calls == 1);
+    BOOST_TEST(t.repeats == 1);
+    setenv("ROTBEAM_TIMING_REPEATS", "3", 1);
+    BOOST_TEST(timing_repeats(2) == 2);
+    BOOST_TEST(timing_repeats(101) == 3);
+    for (const char* bad : {"0", "-1", "two", "1x", ""}) {
+        setenv("ROTBEAM_TIMING_REPEATS", bad, 1);
+        BOOST_CHECK_EXCEPTION(
+            timing_repeats(3), rotbeam::InputError, [](const rotbeam::InputError& e) {
+                return std::string(e.what()).find("ROTBEAM_TIMING_REPEATS") != std::string::npos;
+            });
+    }
+    unsetenv("ROTBEAM_TIMING_REPEATS");
 }
 
 BOOST_AUTO_TEST_CASE(fit_order_recovers_the_exponent_of_a_power_law) {
