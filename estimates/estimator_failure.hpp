@@ -27,4 +27,8 @@ std::string failure_cause(const nlohmann::json& q);
 std::optional<std::string> estimator_failure(double true_error, double floor,
                                              const nlohmann::json& q);
 
+// The same with the cause given by the caller (what it knows beyond the estimate's own verdict).
+std::optional<std::string> estimator_failure(double true_error, double floor,
+                                             const nlohmann::json& q, const std::string& cause);
+
 }  // namespace rotbeam::estimate

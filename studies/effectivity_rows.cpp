@@ -21,6 +21,44 @@ bool asymptotic_errors(RefinementKind kind, double e0, double e1, double e2, dou
            std::abs(std::log2(e1 / e2) - theoretical_order) <= estimate::kOrderWindow;
 }
 
+namespace {
+
+// The finite true errors of a quantity over a sequence: how many, smallest, largest.
+struct TrueErrorSpan {
+    size_t n = 0;
+    double lo = 0.0, hi = 0.0;
+};
+
+TrueErrorSpan true_error_span(const std::vector<double>& true_errors) {
+    TrueErrorSpan s;
+    for (const double e : true_errors) {
+        if (!std::isfinite(e)) continue;
+        s.lo = s.n == 0 ? e : std::min(s.lo, e);
+        s.hi = std::max(s.hi, e);
+        ++s.n;
+    }
+    return s;
+}
+
+// "other state: the true error stays at 3.1e+00 … 3.1e+00 over 5 levels, …; the estimate says:
+// reliable".
+std::string other_state_cause(const std::vector<double>& true_errors, const nlohmann::json& q) {
+    const TrueErrorSpan s = true_error_span(true_errors);
+    return "other state: the true error stays at " + sci(s.lo) + " … " + sci(s.hi) + " over " +
+           std::to_string(s.n) +
+           " levels, the discrete solutions converge to another state than the reference "
+           "(another solution of the equations, or the reference's own error), not a "
+           "discretization error; the estimate says: " +
+           estimate::failure_cause(q);
+}
+
+}  // namespace
+
+bool true_error_stalls(const std::vector<double>& true_errors, double floor) {
+    const TrueErrorSpan s = true_error_span(true_errors);
+    return s.n >= kOtherStateLevels && s.hi > floor && s.lo > 0.5 * s.hi;
+}
+
 std::vector<EffectivityRow> effectivity_rows(const std::vector<LevelQuantities>& levels,
                                              RefinementKind kind, double theoretical_order) {
     // The true error of each quantity at each level, by name.
@@ -44,7 +82,15 @@ std::vector<EffectivityRow> effectivity_rows(const std::vector<LevelQuantities>&
             }
             row.asymptotic = asymptotic_errors(kind, q.true_error, row.next_true[0],
                                                row.next_true[1], q.floor, theoretical_order);
-            row.failure = estimate::estimator_failure(q.true_error, q.floor, q.estimate);
+            std::vector<double> sequence;
+            for (size_t j = 0; j < levels.size(); ++j)
+                sequence.push_back(true_error(j, q.quantity));
+            row.other_state = true_error_stalls(sequence, q.floor);
+            row.failure = row.other_state
+                              ? estimate::estimator_failure(q.true_error, q.floor, q.estimate,
+                                                            other_state_cause(sequence, q.estimate))
+                              : estimate::estimator_failure(q.true_error, q.floor, q.estimate);
+            if (!row.failure) row.other_state = false;  // a stall without a miss is no failure
             rows.push_back(std::move(row));
         }
     }
@@ -62,6 +108,7 @@ nlohmann::json to_json(const EffectivityRow& row) {
                         {"next_true_errors", {number(row.next_true[0]), number(row.next_true[1])}},
                         {"asymptotic", row.asymptotic}};
     j["failure"] = row.failure ? nlohmann::json(*row.failure) : nullptr;
+    j["other_state"] = row.other_state;
     return j;
 }
 

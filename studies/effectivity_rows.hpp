@@ -11,6 +11,15 @@
 //   orders within kOrderWindow of the theoretical order (Richardson's factor then off by at most
 //   ~20 %).
 // The last two levels of a sequence have no such evidence: they are never asymptotic.
+//
+// A failure's cause: where the quantity's true error does not fall under refinement (over at
+// least kOtherStateLevels solved levels the smallest is above half the largest, where a
+// discretization error falls by 4 or more over two doublings at order 2, or two orders each
+// halving it), the discrete solutions converge to a state other than the reference: another
+// solution of the equations (a continuation that left the reference's equilibrium) or the
+// reference's own error. That is no discretization error an estimate could see; the row says so
+// (`other_state`) with the true errors it rests on. Otherwise the cause is the estimate's own
+// verdict (estimates/estimator_failure.hpp).
 #pragma once
 
 #include <functional>
@@ -44,7 +53,15 @@ struct EffectivityRow {
     std::vector<double> next_true;  // the same quantity's true error at the next two levels
     bool asymptotic = false;
     std::optional<std::string> failure;  // estimates/estimator_failure.hpp
+    bool other_state = false;            // the true error does not fall under refinement (above)
 };
+
+// Solved levels a quantity needs before its true error's stall says "another state".
+inline constexpr size_t kOtherStateLevels = 3;
+
+// Whether true errors over a sequence's levels (non-finite: the level has none) stall: at least
+// kOtherStateLevels finite values, the smallest above half the largest, the largest above floor.
+bool true_error_stalls(const std::vector<double>& true_errors, double floor);
 
 enum class RefinementKind { p, h };
 

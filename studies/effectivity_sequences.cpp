@@ -29,9 +29,11 @@ struct Levels {
 
 Levels static_levels(const std::string& case_name, bool quick) {
     if (quick) return {{3, 4, 5, 6}, {4, 8, 16}, 2};
-    // The helix turns twice (κL = 4π) over 160 load steps: two elements per turn, and the mixed
+    // The helices and the roll-up to λ = 4 turn twice (4π): two elements per turn, and the mixed
     // meshes from the catalog's 16 (companions to 256).
-    if (case_name == "helix-precessing") return {{4, 5, 6, 7, 8}, {16, 32, 64}, 4};
+    if (case_name == "helix-precessing" || case_name == "helix" ||
+        case_name == "cantilever-moment-4")
+        return {{4, 5, 6, 7, 8}, {16, 32, 64}, 4};
     return {{2, 3, 4, 5, 6, 7, 8}, {4, 8, 16, 32, 64}, 2};
 }
 
@@ -61,7 +63,8 @@ Combination modal_reference_combination() {
 }
 
 ReferenceKind reference_of(const std::string& case_name) {
-    if (case_name == "cantilever-moment") return ReferenceKind::rollup_exact;
+    if (case_name == "cantilever-moment" || case_name == "cantilever-moment-4")
+        return ReferenceKind::rollup_exact;
     if (case_name == kManufacturedRodCase) return ReferenceKind::manufactured_exact;
     if (case_name == "joined-beam") return ReferenceKind::converged_modes;
     return ReferenceKind::continuum;
@@ -176,7 +179,13 @@ RunSpec EffectivitySequence::spec(size_t level) const {
 
 std::vector<EffectivitySequence> effectivity_sequences(bool quick) {
     std::vector<std::string> cases = {"cantilever-moment", "bend-45", kManufacturedRodCase};
-    if (!quick) cases.insert(cases.end(), {"helix-precessing", "joined-beam"});
+    // The full form adds the other cases with an independent reference: the precessing helix,
+    // the joined beam's frequencies, the roll-up on to λ = 4 (exact), the helix to κL = 4π and the
+    // slender tip-loaded cantilever (both within the continuum solver's scope).
+    if (!quick) {
+        cases.insert(cases.end(), {"helix-precessing", "joined-beam", "cantilever-moment-4",
+                                   "helix", "tip-load-cantilever"});
+    }
     std::vector<EffectivitySequence> out;
     for (const std::string& c : cases) {
         const bool modal = c == "joined-beam";

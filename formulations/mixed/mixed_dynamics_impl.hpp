@@ -11,6 +11,7 @@
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_dynamics.hpp"
 #include "formulations/mixed/mixed_load_fields.hpp"
+#include "formulations/mixed/mixed_support_rotation.hpp"
 
 namespace rotbeam::form {
 
@@ -141,13 +142,15 @@ void MixedDynamics<P>::complete_initial_rates(const VecX& x, VecX& xdot) const {
     }
 }
 
-// A support's rotation at time t: the identity when clamped, the prescribed rotation otherwise.
+// A support's rotation at time t: the identity when clamped, the prescribed rotation otherwise,
+// on the sheet reached continuously from the identity (mixed_support_rotation.hpp).
 template <param::RotationParameterization P>
 typename MixedDynamics<P>::Params MixedDynamics<P>::given_rotation(int node, double t) const {
     const Constraint& con = model_.constraints[static_cast<std::size_t>(
         layout_.nodes[static_cast<std::size_t>(node)].constraint)];
     if (con.kind == Constraint::Kind::clamped) return P::identity();
-    return P::from_rotation_vector(mixed_time_value(con.time, t, load_time_floor_) * con.rotation);
+    return continued_support_rotation<P>(mixed_time_value(con.time, t, load_time_floor_) *
+                                         con.rotation);
 }
 
 template <param::RotationParameterization P>

@@ -12,6 +12,7 @@
 #include "formulations/mixed/mixed_dynamic_common.hpp"
 #include "formulations/mixed/mixed_node_frames.hpp"
 #include "formulations/mixed/mixed_statics.hpp"
+#include "formulations/mixed/mixed_support_rotation.hpp"
 
 namespace rotbeam::form {
 
@@ -70,13 +71,14 @@ void MixedStatics<P>::add_rotating_frame(int e, int a, int b, VecX& residual,
 }
 
 // A support's rotation: the identity when clamped, the prescribed rotation (scaled with the load
-// factor, core/model.hpp) otherwise; from_rotation_vector follows the angle continuously.
+// factor, core/model.hpp) otherwise, on the sheet reached continuously from the identity
+// (mixed_support_rotation.hpp).
 template <param::RotationParameterization P>
 typename MixedStatics<P>::Params MixedStatics<P>::given_rotation(int node) const {
     const Constraint& con = model_.constraints[static_cast<std::size_t>(
         layout_.nodes[static_cast<std::size_t>(node)].constraint)];
     if (con.kind == Constraint::Kind::clamped) return P::identity();
-    return P::from_rotation_vector(lambda_ * con.rotation);
+    return continued_support_rotation<P>(lambda_ * con.rotation);
 }
 
 template <param::RotationParameterization P>

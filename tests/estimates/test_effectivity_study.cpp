@@ -24,6 +24,7 @@
 #include <filesystem>
 
 #include "core/static_driver.hpp"
+#include "studies/effectivity_sequences.hpp"
 #include "studies/manufactured_rod_case.hpp"
 #include "studies/studies.hpp"
 
@@ -112,6 +113,93 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
     BOOST_TEST(out["band_violations"] == 0);
     BOOST_TEST(std::filesystem::exists(std::filesystem::path(o.out_dir) / "effectivity.png"));
     std::filesystem::remove_all(o.out_dir);
+}
+
+}  // namespace rotbeam
+
+namespace rotbeam {
+
+// The static manufactured rod (exact at its quarter points, its tip prescribed to a twist of 2.5π
+// about a varying axis) with the mixed formulation and Euler angles on 4, 8 and 16 elements per
+// member, each level a `rotbeam run` with its h/2, h/4 estimate. With the support's parameters
+// taken as principal values (formulations/mixed/mixed_support_rotation.hpp) every mesh left the
+// exact state at λ = 0.45, where the tip's twist passes π, for one a turn away (π rad at the mid
+// point, up to 0.16 L) and reported `converged`; the meshes agreed with each other at order 2, so
+// the estimates were "reliable" and 1e3 … 1e6 times short: 360 estimator failures in the study's
+// full form (docs/studies.md). Asserted: every level solves, no estimator failure, and every
+// quantity's true error falls under refinement by at least 4 from 4 to 16 elements (order 2
+// gives 16; the failed runs' stayed at the same value). Without the continued support rotation
+// the same three runs have 216 failing rows (12 load steps × 3 points × 2 quantities × 3 levels,
+// counted on the build before it), each of which fails the first assertion.
+BOOST_AUTO_TEST_CASE(mixed_euler_angles_follow_a_prescribed_rotation_past_pi) {
+    cli::EffectivitySequence s;
+    s.case_name = cli::kManufacturedRodCase;
+    for (const cli::Combination& c : cli::all_combinations(false)) {
+        if (c.formulation == Formulation::mixed && c.rotation_name() == "euler-angles")
+            s.combination = c;
+    }
+    BOOST_TEST_REQUIRE(s.combination.rotation_name() == "euler-angles");
+    s.kind = cli::RefinementKind::h;
+    s.reference = cli::ReferenceKind::manufactured_exact;
+    s.levels = {4, 8, 16};
+    std::vector<cli::LevelQuantities> levels;
+    for (size_t k = 0; k < s.levels.size(); ++k) {
+        const json r = cli::run_spec(s.spec(k), true);
+        BOOST_TEST_REQUIRE(has_solution(r["status"].get<std::string>()), r["status"]);
+        levels.push_back(cli::level_quantities(s, r, {}));
+    }
+    int checked = 0;
+    for (const cli::EffectivityRow& row : cli::effectivity_rows(levels, s.kind, 2.0)) {
+        BOOST_TEST(!row.failure.has_value(), row.q.quantity << ": " << row.failure.value_or(""));
+        if (row.level != 0 || !(row.q.true_error > row.q.floor)) continue;
+        ++checked;
+        BOOST_TEST(row.next_true[1] < row.q.true_error / 4,
+                   row.q.quantity << ": true " << row.q.true_error << " at 4, " << row.next_true[1]
+                                  << " at 16 elements per member");
+    }
+    // 20 load steps × 3 points × 2 quantities, less those at the floor.
+    BOOST_TEST(checked >= 100, checked);
+}
+
+// The cause of a failure whose true error does not fall under refinement: the rows of the run
+// above as they were measured before the support rotation was continued (mid rotation at
+// λ = 0.5 on 4, 16 and 64 elements per member: true errors 3.1402, 3.1406, 3.1406 rad, reliable
+// estimates 7.3e-4, 4.6e-5, 2.9e-6 at observed orders 1.99 … 2.00). Such a true error is no
+// discretization error (one at order 2 falls by 16 over two doublings, it cannot stay within a
+// factor 2), so the failure says "other state" and is not counted as unexplained. Without the
+// classification (true_error_stalls false) the cause reads "reliable" and this test fails.
+BOOST_AUTO_TEST_CASE(effectivity_failures_on_another_state_say_so) {
+    std::vector<cli::LevelQuantities> levels;
+    const double true_errors[] = {3.1402, 3.1406, 3.1406}, estimates[] = {7.3e-4, 4.6e-5, 2.9e-6};
+    for (size_t k = 0; k < 3; ++k) {
+        levels.push_back(
+            {{"mid rotation at load factor 0.5", json{{"error", estimates[k]}, {"reliable", true}},
+              true_errors[k], 1e-9}});
+    }
+    const auto rows = cli::effectivity_rows(levels, cli::RefinementKind::h, 2.0);
+    BOOST_TEST_REQUIRE(rows.size() == 3u);
+    for (const cli::EffectivityRow& row : rows) {
+        BOOST_TEST_REQUIRE(row.failure.has_value());
+        BOOST_TEST(row.other_state);
+        BOOST_TEST(row.failure->find("other state") != std::string::npos, *row.failure);
+    }
+}
+
+// A true error that falls under refinement is a discretization error: a miss there keeps the
+// estimate's own verdict. True errors at order 2 (4 per doubling), an estimate 10 × too small.
+BOOST_AUTO_TEST_CASE(effectivity_failures_of_a_falling_error_keep_the_estimates_verdict) {
+    std::vector<cli::LevelQuantities> levels;
+    for (const double e : {1e-2, 2.5e-3, 6.25e-4}) {
+        levels.push_back({{"tip displacement at load factor 1",
+                           json{{"error", e / 10}, {"reliable", true}}, e, 1e-9}});
+    }
+    const auto rows = cli::effectivity_rows(levels, cli::RefinementKind::h, 2.0);
+    BOOST_TEST_REQUIRE(rows.size() == 3u);
+    for (const cli::EffectivityRow& row : rows) {
+        BOOST_TEST_REQUIRE(row.failure.has_value());
+        BOOST_TEST(!row.other_state);
+        BOOST_TEST(row.failure->find("(reliable)") != std::string::npos, *row.failure);
+    }
 }
 
 }  // namespace rotbeam
