@@ -95,6 +95,12 @@ class DisplacementDynamics : public CollocationProblem {
                    const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override;
     void velocity_of_rate(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& w,
                           Eigen::Ref<VecX> v) const override;
+    // K from one evaluation at (c_v, c_a) = (0, 0); C and M from the terms that depend on the
+    // rates alone (inertial and damping), which are all of ∂r/∂v and ∂r/∂v˙: the elastic terms and
+    // the loads depend on q and t only. Saves two static assemblies per iteration matrix.
+    void stage_matrices(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
+                        const Eigen::Ref<const VecX>& v_dot, double t, VecX& r, SparseMatrix& K,
+                        SparseMatrix& C, SparseMatrix& M) override;
     void keep_start(int slot) override;
     void restore_start(int slot) override;
     double distance_from_kept(int slot, double length) const override;
@@ -173,7 +179,8 @@ class DisplacementDynamics : public CollocationProblem {
                         PointNeeds needs = PointNeeds::everything);
     // Inertial forces on the mass mesh: r += F^I terms; J += kq ∂/∂q T + cv ∂/∂v + ca ∂/∂v˙.
     void assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv, double ca);
-    void assemble_damping(VecX& r, SparseMatrix* J, double cv);
+    // Damping forces: r += F^D terms; J += kq ∂/∂q T + cv ∂/∂v.
+    void assemble_damping(VecX& r, SparseMatrix* J, double kq, double cv);
     void apply_exp_tangent(SparseMatrix& J) const;
 
     Model model_;
@@ -217,6 +224,7 @@ class DisplacementDynamics : public CollocationProblem {
     SparseMatrix mass_;
     SparseLUSolver mass_lu_{SparseLUSolver::Kind::klu_refactor};
     VecX r0_, a0_;
+    VecX rate_residual_;  // stage_matrices: the rate terms' residual, not used
     long inertial_terms_ = 0;
     long damping_terms_ = 0;
 };

@@ -27,7 +27,24 @@ void DisplacementDynamics<P>::evaluate(VecX& r, SparseMatrix* J) {
         apply_exp_tangent(*J);
     }
     assemble_inertia(r, J, 1.0, cv_, ca_);
-    if (damped_) assemble_damping(r, J, cv_);
+    if (damped_) assemble_damping(r, J, 1.0, cv_);
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::stage_matrices(const Eigen::Ref<const VecX>& delta,
+                                             const Eigen::Ref<const VecX>& v,
+                                             const Eigen::Ref<const VecX>& v_dot, double t, VecX& r,
+                                             SparseMatrix& K, SparseMatrix& C, SparseMatrix& M) {
+    set_stage(delta, v, v_dot, t, 0.0, 0.0);
+    evaluate(r, &K);
+    for (SparseMatrix* X : {&C, &M}) {
+        if (X->nonZeros() != K.nonZeros()) *X = K;  // the first call: K's pattern
+        std::fill(X->valuePtr(), X->valuePtr() + X->nonZeros(), 0.0);
+    }
+    rate_residual_.setZero(size());
+    assemble_inertia(rate_residual_, &C, 0.0, 1.0, 0.0);
+    if (damped_) assemble_damping(rate_residual_, &C, 0.0, 1.0);
+    assemble_inertia(rate_residual_, &M, 0.0, 0.0, 1.0);
 }
 
 // J's rotation columns of node i times T_i = dexp(ψ_i): δθ_i = T_i δψ_i.
@@ -166,7 +183,7 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
 // δq′ = [N_b′ I, 0; 0, (K_b + κ̃ A_b) T_b] (δθ′ = δκ + κ̃ δθ, δκ = Σ K_b δθ_b).
 // Long for the same reason as DisplacementStatics::assemble_element: gather, kernel, scatter.
 template <param::RotationParameterization P>
-void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double cv) {
+void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double kq, double cv) {
     const bool relative = statics_.relative_interpolation();
     for_each_point(mesh().elements, [&](int k, const MeshElement& e, int q,
                                         const InterpolatedRotation<P>& rot) {
@@ -203,11 +220,12 @@ void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double 
             const Mat3 At = A_[b] * Tb;
             const Mat3 Kt = (K_[b] + kt * A_[b]) * Tb;
             X1_[b] = cv * (dN[b] * B.D1 + N[b] * B.G1);
-            X1_[b].leftCols<3>() += dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>();
-            X1_[b].rightCols<3>() += B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At;
             X2_[b] = cv * (dN[b] * B.D2 + N[b] * B.G2);
-            X2_[b].leftCols<3>() += dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>();
-            X2_[b].rightCols<3>() += B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At;
+            if (kq == 0.0) continue;
+            X1_[b].leftCols<3>() += kq * (dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>());
+            X1_[b].rightCols<3>() += kq * (B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At);
+            X2_[b].leftCols<3>() += kq * (dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>());
+            X2_[b].rightCols<3>() += kq * (B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At);
         }
         for (int a = 0; a < nn; ++a) {
             if (mesh().nodes[e.nodes[a]].dof < 0) continue;

@@ -211,7 +211,7 @@ void DisplacementDynamics<P>::initialize_acceleration(double t) {
     statics_.evaluate(r0_, mass_.nonZeros() == 0 ? &mass_ : nullptr);
     std::fill(mass_.valuePtr(), mass_.valuePtr() + mass_.nonZeros(), 0.0);
     assemble_inertia(r0_, &mass_, 0.0, 0.0, 1.0);
-    if (damped_) assemble_damping(r0_, nullptr, 0.0);
+    if (damped_) assemble_damping(r0_, nullptr, 1.0, 0.0);
     if (!mass_lu_.factorize(mass_)) {
         throw SolverError("initial acceleration: the mass matrix is singular");
     }
