@@ -47,11 +47,13 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Fresh stage matrices (three assemblies, the complex and for 3 stages the real factorization)
+// Fresh stage matrices (stage_matrices, the complex and for 3 stages the real factorization)
 // cost about three stage iterations on the joined beam (callgrind, docs/performance.md "Cost of
 // one step of the high-order schemes": 2 stages 1.84 M against 0.48 M per iteration, 3.8;
-// 3 stages 2.04 M against 0.73 M, 2.8). Both grow linearly with the elements (banded matrices),
-// so the ratio holds for other meshes of the same elements. KeptMatrices' budget.
+// 3 stages 2.04 M against 0.73 M, 2.8; with the residual-only inertial terms and the rate-term
+// stage matrices, "Residual-only inertial terms…", 3 stages 1.61 M against 0.56 M, 2.9). Both grow
+// linearly with the elements (banded matrices), so the ratio holds for other meshes of the same
+// elements. KeptMatrices' budget.
 constexpr double kGaussFreshMatrixCost = 3.0;
 
 // W = A⁻¹ = S Λ S⁻¹, with the columns of a conjugate pair conjugate to each other, so that the
@@ -558,9 +560,9 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
     const auto output = [&](const TimeStepRecord& record) {
         // The output state's acceleration (reactions) is the consistent one of its (q, v), not
         // the stage polynomial's order-s extrapolation; the next step starts from the latter
-        // again, as it would without this output. It costs a mass factorization (about a third
-        // of a fresh GL2 step on the joined beam: docs/performance.md), spent only when someone
-        // reads the output.
+        // again, as it would without this output. It costs a residual and a refactorization of
+        // the mass matrix (about a third of a fresh GL3 matrix on the joined beam:
+        // docs/performance.md), spent only when someone reads the output.
         if (!on_output) return;
         problem.start_rates(kept_v, kept_v_dot);
         problem.initialize_acceleration(record.time);
