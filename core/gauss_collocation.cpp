@@ -47,11 +47,13 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Fresh stage matrices (three assemblies, the complex and for 3 stages the real factorization)
+// Fresh stage matrices (stage_matrices, the complex and for 3 stages the real factorization)
 // cost about three stage iterations on the joined beam (callgrind, docs/performance.md "Cost of
 // one step of the high-order schemes": 2 stages 1.84 M against 0.48 M per iteration, 3.8;
-// 3 stages 2.04 M against 0.73 M, 2.8). Both grow linearly with the elements (banded matrices),
-// so the ratio holds for other meshes of the same elements. KeptMatrices' budget.
+// 3 stages 2.04 M against 0.73 M, 2.8; with the residual-only inertial terms and the rate-term
+// stage matrices, "Residual-only inertial terms…", 3 stages 1.61 M against 0.56 M, 2.9). Both grow
+// linearly with the elements (banded matrices), so the ratio holds for other meshes of the same
+// elements. KeptMatrices' budget.
 constexpr double kGaussFreshMatrixCost = 3.0;
 
 // W = A⁻¹ = S Λ S⁻¹, with the columns of a conjugate pair conjugate to each other, so that the
@@ -146,7 +148,7 @@ class GaussStepper {
     VecX delta1_, v1_, vd1_;  // the step end
     std::vector<VecX> Z_, K_, V_, L_, R_, dZ_, best_Z_;
     VecX z_mean_, v_mean_, l_mean_;
-    SparseMatrix J0_, Jv_, Ja_, E_real_, E_floor_;
+    SparseMatrix J0_, C0_, M0_, E_real_, E_floor_;
     ComplexSparse E_complex_;
     Eigen::VectorXcd gc_, xc_;
     SparseLUSolver real_lu_{true};
@@ -252,19 +254,15 @@ void GaussStepper::stage_mean(double h) {
     }
 }
 
-// K₀, C₀, M₀ from three assemblies at the stage mean of Z_ (at the step start: Δ = 0, v_n, v˙_n),
+// K₀, C₀, M₀ (CollocationProblem::stage_matrices) at the stage mean of Z_ (at the step start:
+// Δ = 0, v_n, v˙_n),
 // then E(λ) = K₀ + μ C₀ + μ² M₀, μ = λ/h, for the real eigenvalue (KLU) and the pair's
 // representative (complex SparseLU). False when one is singular.
 bool GaussStepper::factor(double t_mid, double h) {
     stage_mean(h);
-    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 0.0, 0.0);
-    problem_.evaluate(r_, &J0_);
-    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 1.0, 0.0);
-    problem_.evaluate(r_, &Jv_);
-    problem_.set_stage(z_mean_, v_mean_, l_mean_, t_mid, 0.0, 1.0);
-    problem_.evaluate(r_, &Ja_);
+    problem_.stage_matrices(z_mean_, v_mean_, l_mean_, t_mid, r_, J0_, C0_, M0_);
     const int nnz = static_cast<int>(J0_.nonZeros());
-    ROTBEAM_VERIFY(Jv_.nonZeros() == nnz && Ja_.nonZeros() == nnz,
+    ROTBEAM_VERIFY(C0_.nonZeros() == nnz && M0_.nonZeros() == nnz,
                    "Gauss collocation: the iteration matrices' patterns differ");
     if (!analysed_) {
         E_real_ = J0_;
@@ -273,12 +271,12 @@ bool GaussStepper::factor(double t_mid, double h) {
         analysed_ = true;
     }
     const double* k0 = J0_.valuePtr();
-    const double* jv = Jv_.valuePtr();
-    const double* ja = Ja_.valuePtr();
+    const double* c0_values = C0_.valuePtr();
+    const double* m0_values = M0_.valuePtr();
     const Complex mu = transform_.lambda(transform_.pair) / h;
     const double w1 = transform_.w1 / h, w2 = transform_.w2 / (h * h);
     for (int k = 0; k < nnz; ++k) {
-        const double c0 = jv[k] - k0[k], m0 = ja[k] - k0[k];
+        const double c0 = c0_values[k], m0 = m0_values[k];
         E_complex_.valuePtr()[k] = k0[k] + mu * c0 + mu * mu * m0;
         E_floor_.valuePtr()[k] = std::abs(k0[k]) + w1 * std::abs(c0) + w2 * std::abs(m0);
         if (transform_.real >= 0) {
@@ -511,6 +509,24 @@ class GaussScheme : public StepScheme {
 
 }  // namespace
 
+void CollocationProblem::stage_matrices(const Eigen::Ref<const VecX>& delta,
+                                        const Eigen::Ref<const VecX>& v,
+                                        const Eigen::Ref<const VecX>& v_dot, double t, VecX& r,
+                                        SparseMatrix& K, SparseMatrix& C, SparseMatrix& M) {
+    set_stage(delta, v, v_dot, t, 0.0, 0.0);
+    evaluate(r, &K);
+    set_stage(delta, v, v_dot, t, 1.0, 0.0);
+    evaluate(r, &C);
+    set_stage(delta, v, v_dot, t, 0.0, 1.0);
+    evaluate(r, &M);
+    ROTBEAM_VERIFY(C.nonZeros() == K.nonZeros() && M.nonZeros() == K.nonZeros(),
+                   "Gauss collocation: the iteration matrices' patterns differ");
+    for (Eigen::Index k = 0; k < K.nonZeros(); ++k) {
+        C.valuePtr()[k] -= K.valuePtr()[k];
+        M.valuePtr()[k] -= K.valuePtr()[k];
+    }
+}
+
 void CollocationProblem::keep_start(int /*slot*/) {
     throw SolverError("this problem cannot keep a step start: adaptive Gauss steps not available");
 }
@@ -544,9 +560,9 @@ DynamicOutcome run_gauss_collocation(CollocationProblem& problem, int stages,
     const auto output = [&](const TimeStepRecord& record) {
         // The output state's acceleration (reactions) is the consistent one of its (q, v), not
         // the stage polynomial's order-s extrapolation; the next step starts from the latter
-        // again, as it would without this output. It costs a mass factorization (about a third
-        // of a fresh GL2 step on the joined beam: docs/performance.md), spent only when someone
-        // reads the output.
+        // again, as it would without this output. It costs a residual and a refactorization of
+        // the mass matrix (about a third of a fresh GL3 matrix on the joined beam:
+        // docs/performance.md), spent only when someone reads the output.
         if (!on_output) return;
         problem.start_rates(kept_v, kept_v_dot);
         problem.initialize_acceleration(record.time);

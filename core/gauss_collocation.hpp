@@ -62,6 +62,15 @@ class CollocationProblem : public SecondOrderProblem {
     virtual void set_stage(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
                            const Eigen::Ref<const VecX>& v_dot, double t, double c_v,
                            double c_a) = 0;
+    // The iteration matrix's three parts at the stage state (Δ, v, v˙, t) of set_stage: K = ∂r/∂q
+    // dexp(Δ), C = ∂r/∂v and M = ∂r/∂v˙, each on evaluate()'s pattern; r the residual. This
+    // default sets the stage three times, (c_v, c_a) = (0, 0), (1, 0), (0, 1), evaluates each and
+    // takes C and M as differences from K; a problem that can assemble its rate terms alone
+    // overrides it (the displacement dynamics: one full evaluation and the inertial terms twice).
+    virtual void stage_matrices(const Eigen::Ref<const VecX>& delta,
+                                const Eigen::Ref<const VecX>& v,
+                                const Eigen::Ref<const VecX>& v_dot, double t, VecX& r,
+                                SparseMatrix& K, SparseMatrix& C, SparseMatrix& M);
     // v = dexp(Δ) w: the velocity of the motion exp(Δ(t)) ∘ q_n when Δ˙ = w.
     virtual void velocity_of_rate(const Eigen::Ref<const VecX>& delta,
                                   const Eigen::Ref<const VecX>& w, Eigen::Ref<VecX> v) const = 0;

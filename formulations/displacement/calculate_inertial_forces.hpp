@@ -35,38 +35,70 @@ struct InertialBlocks {
     Mat6 K = Mat6::Zero();  // inertial stiffness ∂F/∂(u, δθ)
 };
 
-// The material mass M* rotated to inertial axes by Q (every 3×3 block transforms as Q B Qᵀ).
-inline Mat6 rotate_mass(const Mat6& M_star, const Mat3& Q) {
-    Mat6 M;
+// The blocks of the material mass M* rotated to inertial axes by Q that F^I reads (every 3×3
+// block transforms as Q B Qᵀ): all but the upper right m η̃ᵀ, which only the tangent ∂F/∂(u¨, ω˙)
+// holds; that block of M is left as it was.
+inline void rotate_mass_force_blocks(const Mat6& M_star, const Mat3& Q, Mat6& M) {
     M.topLeftCorner<3, 3>() = Q * M_star.topLeftCorner<3, 3>() * Q.transpose();
-    M.topRightCorner<3, 3>() = Q * M_star.topRightCorner<3, 3>() * Q.transpose();
     M.bottomLeftCorner<3, 3>() = Q * M_star.bottomLeftCorner<3, 3>() * Q.transpose();
     M.bottomRightCorner<3, 3>() = Q * M_star.bottomRightCorner<3, 3>() * Q.transpose();
+}
+
+// The material mass M* rotated to inertial axes by Q.
+inline Mat6 rotate_mass(const Mat6& M_star, const Mat3& Q) {
+    Mat6 M;
+    rotate_mass_force_blocks(M_star, Q, M);
+    M.topRightCorner<3, 3>() = Q * M_star.topRightCorner<3, 3>() * Q.transpose();
     return M;
+}
+
+// The terms of F^I at one section, which the tangent blocks reuse: m, a = m η (a_tilde = m η̃ the
+// rotated mass's lower-left block), ρ, ω̃, ω˙~, ω˙~ + ω̃ω̃, ρ ω and ρ ω˙.
+struct InertialTerms {
+    double m = 0.0;
+    Mat3 a_tilde, rho, w, wd, wdww;
+    Vec3 a, rho_w, rho_wd;
+    Vec6 F;  // F^I
+};
+
+// From the rotated mass's force blocks (rotate_mass_force_blocks) and the state.
+inline InertialTerms inertial_terms(const Mat6& M, const InertialState& s) {
+    InertialTerms t;
+    t.m = M(0, 0);
+    t.a_tilde = M.bottomLeftCorner<3, 3>();
+    t.a = so3::axial(t.a_tilde);
+    t.rho = M.bottomRightCorner<3, 3>();
+    t.w = so3::skew(s.omega);
+    t.wd = so3::skew(s.omega_dot);
+    t.rho_w = t.rho * s.omega;
+    t.rho_wd = t.rho * s.omega_dot;
+    t.wdww = t.wd + t.w * t.w;
+    t.F.head<3>() = t.m * s.u_ddot + t.wdww * t.a;
+    t.F.tail<3>() = t.a_tilde * s.u_ddot + t.rho_wd + t.w * t.rho_w;
+    return t;
+}
+
+// F^I alone, for a residual without its tangent: the same arithmetic as
+// calculate_inertial_blocks(M_star, s).F (the same bits), without the upper-right mass block and
+// the blocks G^I, K^I.
+inline Vec6 calculate_inertial_force(const Mat6& M_star, const InertialState& s) {
+    Mat6 M;
+    rotate_mass_force_blocks(M_star, s.Q, M);
+    return inertial_terms(M, s).F;
 }
 
 // F^I and its three tangent blocks at one section (formulas in the header comment).
 inline InertialBlocks calculate_inertial_blocks(const Mat6& M_star, const InertialState& s) {
     InertialBlocks b;
     b.M = rotate_mass(M_star, s.Q);
-    const double m = b.M(0, 0);
-    // m η̃ is the lower-left block of the rotated mass; a = m η is its axial vector.
-    const Mat3 a_tilde = b.M.bottomLeftCorner<3, 3>();
-    const Vec3 a = so3::axial(a_tilde);
-    const Mat3 rho = b.M.bottomRightCorner<3, 3>();
-    const Mat3 w = so3::skew(s.omega);
-    const Mat3 wd = so3::skew(s.omega_dot);
+    const InertialTerms t = inertial_terms(b.M, s);
     const Mat3 ud = so3::skew(s.u_ddot);
-    const Vec3 rho_w = rho * s.omega;
-    const Vec3 rho_wd = rho * s.omega_dot;
-    const Mat3 wdww = wd + w * w;
-    b.F.head<3>() = m * s.u_ddot + wdww * a;
-    b.F.tail<3>() = a_tilde * s.u_ddot + rho_wd + w * rho_w;
-    b.G.topRightCorner<3, 3>() = -so3::skew(w * a) - w * a_tilde;
-    b.G.bottomRightCorner<3, 3>() = w * rho - so3::skew(rho_w);
-    b.K.topRightCorner<3, 3>() = -wdww * a_tilde;
-    b.K.bottomRightCorner<3, 3>() =
-        ud * a_tilde + rho * wd - so3::skew(rho_wd) + w * rho * w - w * so3::skew(rho_w);
+    b.F = t.F;
+    b.G.topRightCorner<3, 3>() = -so3::skew(t.w * t.a) - t.w * t.a_tilde;
+    b.G.bottomRightCorner<3, 3>() = t.w * t.rho - so3::skew(t.rho_w);
+    b.K.topRightCorner<3, 3>() = -t.wdww * t.a_tilde;
+    b.K.bottomRightCorner<3, 3>() = ud * t.a_tilde + t.rho * t.wd - so3::skew(t.rho_wd) +
+                                    t.w * t.rho * t.w - t.w * so3::skew(t.rho_w);
     return b;
 }
 

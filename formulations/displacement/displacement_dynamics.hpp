@@ -43,6 +43,7 @@
 #include "core/gauss_collocation.hpp"
 #include "core/generalized_alpha.hpp"
 #include "core/model.hpp"
+#include "core/sparse_lu.hpp"
 #include "formulations/displacement/displacement_statics.hpp"
 #include "formulations/displacement/interpolate_rotation.hpp"
 #include "formulations/displacement/mesh.hpp"
@@ -94,6 +95,12 @@ class DisplacementDynamics : public CollocationProblem {
                    const Eigen::Ref<const VecX>& v_dot, double t, double c_v, double c_a) override;
     void velocity_of_rate(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& w,
                           Eigen::Ref<VecX> v) const override;
+    // K from one evaluation at (c_v, c_a) = (0, 0); C and M from the terms that depend on the
+    // rates alone (inertial and damping), which are all of ∂r/∂v and ∂r/∂v˙: the elastic terms and
+    // the loads depend on q and t only. Saves two static assemblies per iteration matrix.
+    void stage_matrices(const Eigen::Ref<const VecX>& delta, const Eigen::Ref<const VecX>& v,
+                        const Eigen::Ref<const VecX>& v_dot, double t, VecX& r, SparseMatrix& K,
+                        SparseMatrix& C, SparseMatrix& M) override;
     void keep_start(int slot) override;
     void restore_start(int slot) override;
     double distance_from_kept(int slot, double length) const override;
@@ -158,15 +165,22 @@ class DisplacementDynamics : public CollocationProblem {
     // Absolute 6-velocity of a point from its relative one: [v_u + Ω × (x − c); ω + Ω].
     Vec6 absolute_velocity(const Vec6& v, const Vec3& x) const;
     void set_configuration();
-    void gather(const MeshElement& e);
-    void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot) const;
+    // What a point's kernel reads of the interpolation: all of it (R, κ, H_s, and the nodes'
+    // H_s⁺ for the tangent maps A_j), or R alone (the inertial terms without ∂/∂q); `rotation`
+    // leaves the rest of InterpolatedRotation as it was.
+    enum class PointNeeds { everything, rotation };
+    void gather(const MeshElement& e, PointNeeds needs = PointNeeds::everything);
+    void interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot,
+                     PointNeeds needs = PointNeeds::everything) const;
     // point(k, e, q, rot) at every quadrature point q of every element k of `elements`, with the
-    // element's nodal parameters gathered and the rotation interpolated at the point.
+    // element's nodal parameters gathered and the rotation interpolated at the point (`needs`).
     template <class Point>
-    void for_each_point(const std::vector<MeshElement>& elements, Point&& point);
+    void for_each_point(const std::vector<MeshElement>& elements, Point&& point,
+                        PointNeeds needs = PointNeeds::everything);
     // Inertial forces on the mass mesh: r += F^I terms; J += kq ∂/∂q T + cv ∂/∂v + ca ∂/∂v˙.
     void assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv, double ca);
-    void assemble_damping(VecX& r, SparseMatrix* J, double cv);
+    // Damping forces: r += F^D terms; J += kq ∂/∂q T + cv ∂/∂v.
+    void assemble_damping(VecX& r, SparseMatrix* J, double kq, double cv);
     void apply_exp_tangent(SparseMatrix& J) const;
 
     Model model_;
@@ -205,8 +219,12 @@ class DisplacementDynamics : public CollocationProblem {
     std::vector<Mat3> A_, K_;
     std::vector<Mat6> X1_, X2_;  // damping: per-node column maps of F^D1, F^D2
     Mat3 R0_ = Mat3::Identity();
-    SparseMatrix mass_;  // initialize_acceleration
-    VecX r0_;
+    // initialize_acceleration: the mass matrix on the statics' pattern, its KLU kept and
+    // refactored in place for every output (the pattern is fixed), the residual and v˙.
+    SparseMatrix mass_;
+    SparseLUSolver mass_lu_{SparseLUSolver::Kind::klu_refactor};
+    VecX r0_, a0_;
+    VecX rate_residual_;  // stage_matrices: the rate terms' residual, not used
     long inertial_terms_ = 0;
     long damping_terms_ = 0;
 };

@@ -1,7 +1,8 @@
 // DisplacementDynamics<P>: residual and iteration matrix (the static part from
 // DisplacementStatics, the inertial and damping parts here), energy and support reactions.
 // Included only by displacement_dynamics.cpp. Kernel chain per point: interpolate_rotation →
-// calculate_inertial_blocks (mass points) / calculate_damping_blocks (stiffness points).
+// calculate_inertial_blocks (mass points; calculate_inertial_force, the same F^I without the
+// tangent blocks, for a residual alone) / calculate_damping_blocks (stiffness points).
 #pragma once
 
 #include "core/so3.hpp"
@@ -26,7 +27,24 @@ void DisplacementDynamics<P>::evaluate(VecX& r, SparseMatrix* J) {
         apply_exp_tangent(*J);
     }
     assemble_inertia(r, J, 1.0, cv_, ca_);
-    if (damped_) assemble_damping(r, J, cv_);
+    if (damped_) assemble_damping(r, J, 1.0, cv_);
+}
+
+template <param::RotationParameterization P>
+void DisplacementDynamics<P>::stage_matrices(const Eigen::Ref<const VecX>& delta,
+                                             const Eigen::Ref<const VecX>& v,
+                                             const Eigen::Ref<const VecX>& v_dot, double t, VecX& r,
+                                             SparseMatrix& K, SparseMatrix& C, SparseMatrix& M) {
+    set_stage(delta, v, v_dot, t, 0.0, 0.0);
+    evaluate(r, &K);
+    for (SparseMatrix* X : {&C, &M}) {
+        if (X->nonZeros() != K.nonZeros()) *X = K;  // the first call: K's pattern
+        std::fill(X->valuePtr(), X->valuePtr() + X->nonZeros(), 0.0);
+    }
+    rate_residual_.setZero(size());
+    assemble_inertia(rate_residual_, &C, 0.0, 1.0, 0.0);
+    if (damped_) assemble_damping(rate_residual_, &C, 0.0, 1.0);
+    assemble_inertia(rate_residual_, &M, 0.0, 0.0, 1.0);
 }
 
 // J's rotation columns of node i times T_i = dexp(ψ_i): δθ_i = T_i δψ_i.
@@ -38,7 +56,7 @@ void DisplacementDynamics<P>::apply_exp_tangent(SparseMatrix& J) const {
 // Nodal parameters of element e as the interpolation needs them (DisplacementStatics::
 // gather_element): relative to the first node (R0_) or sign-aligned; M_j = H_s⁺.
 template <param::RotationParameterization P>
-void DisplacementDynamics<P>::gather(const MeshElement& e) {
+void DisplacementDynamics<P>::gather(const MeshElement& e, PointNeeds needs) {
     const int nn = static_cast<int>(e.nodes.size());
     for (int j = 0; j < nn; ++j) pe_[j] = statics_.node_rotation(e.nodes[j]);
     if (statics_.relative_interpolation()) {
@@ -47,13 +65,21 @@ void DisplacementDynamics<P>::gather(const MeshElement& e) {
     } else {
         for (int j = 1; j < nn; ++j) pe_[j] *= chart_sign<P>(pe_[j], pe_[0]);
     }
+    if (needs == PointNeeds::rotation) return;
     for (int j = 0; j < nn; ++j) Me_[j] = P::spatial_tangent_inverse(pe_[j]);
 }
 
+// interpolate_relative / interpolate_rotation, or with PointNeeds::rotation R alone by the same
+// arithmetic (interpolated_rotation_matrix, then R_0 R for the relative strategy).
 template <param::RotationParameterization P>
-void DisplacementDynamics<P>::interpolate(const MeshElement& e, int q,
-                                          InterpolatedRotation<P>& rot) const {
+void DisplacementDynamics<P>::interpolate(const MeshElement& e, int q, InterpolatedRotation<P>& rot,
+                                          PointNeeds needs) const {
     const int nn = static_cast<int>(e.nodes.size());
+    if (needs == PointNeeds::rotation) {
+        rot.R = interpolated_rotation_matrix<P>(pe_.data(), e.N.col(q).data(), nn);
+        if (statics_.relative_interpolation()) rot.R = R0_ * rot.R;
+        return;
+    }
     if (statics_.relative_interpolation()) {
         interpolate_relative<P>(pe_.data(), e.N.col(q).data(), e.dN.col(q).data(), nn, R0_, rot);
     } else {
@@ -64,13 +90,13 @@ void DisplacementDynamics<P>::interpolate(const MeshElement& e, int q,
 template <param::RotationParameterization P>
 template <class Point>
 void DisplacementDynamics<P>::for_each_point(const std::vector<MeshElement>& elements,
-                                             Point&& point) {
+                                             Point&& point, PointNeeds needs) {
     for (int k = 0; k < static_cast<int>(elements.size()); ++k) {
         const MeshElement& e = elements[k];
-        gather(e);
+        gather(e, needs);
         InterpolatedRotation<P> rot;
         for (int q = 0; q < static_cast<int>(e.qp.size()); ++q) {
-            interpolate(e, q, rot);
+            interpolate(e, q, rot, needs);
             point(k, e, q, rot);
         }
     }
@@ -78,13 +104,15 @@ void DisplacementDynamics<P>::for_each_point(const std::vector<MeshElement>& ele
 
 // Σ_q w N_a F^I on the mass rule's points; block (a, b) of the iteration matrix:
 //   w N_a N_b (cv G^I + ca M) + kq w N_a K^I [0, 0; 0, A_b T_b],
-// A_b the spin map δθ(s) = Σ A_b δθ_b of the interpolation (K^I has no δu columns).
+// A_b the spin map δθ(s) = Σ A_b δθ_b of the interpolation (K^I has no δu columns). Without the
+// ∂/∂q columns (no J, or kq = 0) the kernel reads the interpolated rotation R alone.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double kq, double cv,
                                                double ca) {
     const bool relative = statics_.relative_interpolation();
-    for_each_point(mass_mesh_.elements, [&](int k, const MeshElement& e, int q,
-                                            const InterpolatedRotation<P>& rot) {
+    const PointNeeds needs =
+        J != nullptr && kq != 0.0 ? PointNeeds::everything : PointNeeds::rotation;
+    const auto point = [&](int k, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
         const int nn = static_cast<int>(e.nodes.size());
         const QuadraturePoint& qp = e.qp[q];
         const double* N = e.N.col(q).data();
@@ -104,13 +132,20 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
             }
         }
         add_frame_motion(s, v_u, x);
-        const InertialBlocks B = calculate_inertial_blocks(qp.M_star, s);
         ++inertial_terms_;
-        for (int a = 0; a < nn; ++a) {
-            const int d = mesh().nodes[e.nodes[a]].dof;
-            if (d >= 0) r.segment<6>(d) += qp.weight * N[a] * B.F;
+        const auto add_force = [&](const Vec6& F) {
+            for (int a = 0; a < nn; ++a) {
+                const int d = mesh().nodes[e.nodes[a]].dof;
+                if (d >= 0) r.segment<6>(d) += qp.weight * N[a] * F;
+            }
+        };
+        // A residual alone (the stage iterations' evaluations): F^I without its tangent blocks.
+        if (J == nullptr) {
+            add_force(calculate_inertial_force(qp.M_star, s));
+            return;
         }
-        if (J == nullptr) return;
+        const InertialBlocks B = calculate_inertial_blocks(qp.M_star, s);
+        add_force(B.F);
         if (kq != 0.0) {
             Mat3 sum = Mat3::Zero();
             for (int b = 0; b < nn; ++b) {
@@ -139,7 +174,8 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
                 statics_.add_block(*J, k, a, b, blk);
             }
         }
-    });
+    };
+    for_each_point(mass_mesh_.elements, point, needs);
 }
 
 // Σ_q w (N_a′ F^D1 + N_a F^D2) on the stiffness points (seed 000 Eq. 10, errata). Nodal columns
@@ -147,7 +183,7 @@ void DisplacementDynamics<P>::assemble_inertia(VecX& r, SparseMatrix* J, double 
 // δq′ = [N_b′ I, 0; 0, (K_b + κ̃ A_b) T_b] (δθ′ = δκ + κ̃ δθ, δκ = Σ K_b δθ_b).
 // Long for the same reason as DisplacementStatics::assemble_element: gather, kernel, scatter.
 template <param::RotationParameterization P>
-void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double cv) {
+void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double kq, double cv) {
     const bool relative = statics_.relative_interpolation();
     for_each_point(mesh().elements, [&](int k, const MeshElement& e, int q,
                                         const InterpolatedRotation<P>& rot) {
@@ -184,11 +220,12 @@ void DisplacementDynamics<P>::assemble_damping(VecX& r, SparseMatrix* J, double 
             const Mat3 At = A_[b] * Tb;
             const Mat3 Kt = (K_[b] + kt * A_[b]) * Tb;
             X1_[b] = cv * (dN[b] * B.D1 + N[b] * B.G1);
-            X1_[b].leftCols<3>() += dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>();
-            X1_[b].rightCols<3>() += B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At;
             X2_[b] = cv * (dN[b] * B.D2 + N[b] * B.G2);
-            X2_[b].leftCols<3>() += dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>();
-            X2_[b].rightCols<3>() += B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At;
+            if (kq == 0.0) continue;
+            X1_[b].leftCols<3>() += kq * (dN[b] * B.P1.leftCols<3>() + N[b] * B.K1.leftCols<3>());
+            X1_[b].rightCols<3>() += kq * (B.P1.rightCols<3>() * Kt + B.K1.rightCols<3>() * At);
+            X2_[b].leftCols<3>() += kq * (dN[b] * B.P2.leftCols<3>() + N[b] * B.K2.leftCols<3>());
+            X2_[b].rightCols<3>() += kq * (B.P2.rightCols<3>() * Kt + B.K2.rightCols<3>() * At);
         }
         for (int a = 0; a < nn; ++a) {
             if (mesh().nodes[e.nodes[a]].dof < 0) continue;
@@ -402,7 +439,7 @@ Vec6 DisplacementDynamics<P>::reaction(int node) {
                      (mesh().nodes[em.nodes[j]].x0 + statics_.node_displacement(em.nodes[j]));
             }
             add_frame_motion(s, v_u, x);
-            out += em.qp[q].weight * em.N(a, q) * calculate_inertial_blocks(em.qp[q].M_star, s).F;
+            out += em.qp[q].weight * em.N(a, q) * calculate_inertial_force(em.qp[q].M_star, s);
         }
     }
     return out;

@@ -2,7 +2,6 @@
 // Included only by displacement_dynamics.cpp.
 #pragma once
 
-#include <Eigen/SparseLU>
 #include <algorithm>
 
 #include "core/errors.hpp"
@@ -196,7 +195,11 @@ void DisplacementDynamics<P>::restore_state(int slot) {
     update_iterate();
 }
 
-// M v˙_0 = −r(q_0, v_0, v˙ = 0, t): M = ∂r/∂v˙ is the inertia assembly with c_a = 1 alone.
+// M v˙_0 = −r(q_0, v_0, v˙ = 0, t): M = ∂r/∂v˙ is the inertia assembly with c_a = 1 alone, on
+// the statics' pattern (taken from the first call's Jacobian; later calls evaluate the residual
+// alone). Its KLU is kept: every later call (the collocation's outputs) refactors it in place
+// with the first call's pivot order (core/sparse_lu.hpp), so an output neither analyses the
+// pattern again nor allocates.
 template <param::RotationParameterization P>
 void DisplacementDynamics<P>::initialize_acceleration(double t) {
     set_load_time(t);
@@ -205,19 +208,18 @@ void DisplacementDynamics<P>::initialize_acceleration(double t) {
         v_[i] = v_n_[i];
         vd_[i].setZero();
     }
-    statics_.evaluate(r0_, &mass_);
+    statics_.evaluate(r0_, mass_.nonZeros() == 0 ? &mass_ : nullptr);
     std::fill(mass_.valuePtr(), mass_.valuePtr() + mass_.nonZeros(), 0.0);
     assemble_inertia(r0_, &mass_, 0.0, 0.0, 1.0);
-    if (damped_) assemble_damping(r0_, nullptr, 0.0);
-    Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu(mass_);
-    if (lu.info() != Eigen::Success) {
+    if (damped_) assemble_damping(r0_, nullptr, 1.0, 0.0);
+    if (!mass_lu_.factorize(mass_)) {
         throw SolverError("initial acceleration: the mass matrix is singular");
     }
-    const VecX a0 = -lu.solve(r0_);
+    mass_lu_.solve(r0_, a0_);
     for (size_t i = 0; i < mesh().nodes.size(); ++i) {
         const int d = mesh().nodes[i].dof;
         if (d < 0) continue;
-        vd_n_[i] = a_n_[i] = vd_[i] = a_[i] = a0.segment<6>(d);
+        vd_n_[i] = a_n_[i] = vd_[i] = a_[i] = -a0_.segment<6>(d);
     }
 }
 

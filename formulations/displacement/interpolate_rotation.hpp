@@ -1,7 +1,8 @@
 // Rotation interpolation of the displacement formulation. Two strategies (docs/displacement-
 // formulation.md §Rotation interpolation).
 //
-// `direct` (as Kynema): the nodal parameters of an element, aligned to one chart, are interpolated component-wise,
+// `direct` (as Kynema): the nodal parameters of an element, aligned to one chart, are interpolated
+// component-wise,
 //   p̄(s) = Σ_j N_j(s) σ_j p_j,   R(s) = R(p̄(s)),   κ(s) = axial(R′Rᵀ) = H_s(p̄) p̄′,
 // with σ_j = ±1 the quaternion sign alignment to the element's first node (σ_j = 1 for the
 // three-parameter types). For the quaternion R(·) is the homogeneous form R(q) = R(q/|q|)
@@ -22,8 +23,9 @@
 //   A_j = R_0 Â_j R_0ᵀ,  K_j = R_0 K̂_j R_0ᵀ  for every j, then
 //   A_0 += I − Σ_j A_j,  K_0 += −κ̃ − Σ_j K_j   (δR Rᵀ ∋ δψ_0, δκ ∋ δψ_0 × κ).
 // A superposed rigid rotation Q (R_j → Q R_j) leaves every r_j unchanged, so R → Q R and
-// κ → Q κ exactly: material strains are invariant (objective). A parameterization is singular only when the rotation *inside one
-// element* reaches its singular angle; nodal parameters are used only through R_j.
+// κ → Q κ exactly: material strains are invariant (objective). A parameterization is singular only
+// when the rotation *inside one element* reaches its singular angle; nodal parameters are used only
+// through R_j.
 #pragma once
 
 #include "core/so3.hpp"
@@ -63,6 +65,15 @@ void interpolate_rotation(const param::Params<P::kSize>* p, const double* N, con
     out.R = P::matrix(out.p_bar);
     out.Hs = P::spatial_tangent(out.p_bar);
     out.kappa = out.Hs * out.p_bar_prime;
+}
+
+// R(s) = R(p̄(s)) alone, by interpolate_rotation's arithmetic (the same bits), for a kernel that
+// reads neither κ nor H_s (the inertial terms of a residual).
+template <param::RotationParameterization P>
+Mat3 interpolated_rotation_matrix(const param::Params<P::kSize>* p, const double* N, int nodes) {
+    param::Params<P::kSize> p_bar = param::Params<P::kSize>::Zero();
+    for (int j = 0; j < nodes; ++j) p_bar += N[j] * p[j];
+    return P::matrix(p_bar);
 }
 
 // T = ∂(H_s(p̄) p̄′)/∂p̄ for the curvature map K_j (computed once per quadrature point).
@@ -109,8 +120,7 @@ inline void relative_maps(const Mat3& R0, const Vec3& kappa, int nodes, Mat3* A,
 // Relative parameters of the element's nodes: r_j = params(R_0ᵀ R_j) in the chart nearest
 // r_{j−1} (quaternion: hemisphere of r_{j−1}; WM/rotation vector: rescale; Rodrigues has one).
 template <param::RotationParameterization P>
-void relative_parameters(const param::Params<P::kSize>* p, int nodes,
-                         param::Params<P::kSize>* r) {
+void relative_parameters(const param::Params<P::kSize>* p, int nodes, param::Params<P::kSize>* r) {
     const param::Params<P::kSize> inv0 = P::inverse(p[0]);
     r[0] = P::identity();
     for (int j = 1; j < nodes; ++j) {

@@ -134,3 +134,51 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(gyroscopic_matrix_is_the_velocity_derivative_of_th
         BOOST_TEST(diff > 1e-9);
     }
 }
+
+// The Gauss collocation's iteration-matrix parts K = ∂r/∂q dexp, C = ∂r/∂v, M = ∂r/∂v˙ from the
+// displacement dynamics' stage_matrices (one evaluation, then the inertial and damping rate terms
+// alone) against CollocationProblem's general rule (three evaluations at (c_v, c_a) = (0, 0),
+// (1, 0), (0, 1) and differences), at a deformed, moving stage state of a damped member, at rest
+// and in a rotating frame (Coriolis in C): K is the same evaluation (equal to the bit); C and M
+// agree to the round-off of the differences (K + C) − K, a few ε max |K| per entry: 1e-13 of
+// max |K|. A rate term missing from the override (the damping's ∂/∂v, the Coriolis term) differs
+// by O(1e-2) of max |K| or more.
+BOOST_AUTO_TEST_CASE_TEMPLATE(stage_matrices_are_the_three_evaluations_differences, P, AllParams) {
+    for (const bool spinning : {false, true}) {
+        Model m = test::moving_model(2, 3, true);
+        if (spinning) {
+            std::erase_if(m.distributed_loads,
+                          [](const DistributedLoad& l) { return l.frame != LoadFrame::follower; });
+            m.rotating_frame.angular_velocity = Vec3(0.7, -1.1, 2.3);
+            m.rotating_frame.center = Vec3(0.3, -0.2, 0.1);
+        }
+        form::DisplacementDynamics<P> d(m);
+        test::set_moving_state(d);
+        VecX v, v_dot;
+        d.start_rates(v, v_dot);
+        VecX delta(d.size());
+        for (int k = 0; k < d.size(); ++k) delta[k] = 1e-3 * std::sin(0.37 * k + 0.1);
+        VecX r_fast, r_general;
+        SparseMatrix K_fast, C_fast, M_fast, K_general, C_general, M_general;
+        d.stage_matrices(delta, v, v_dot, 0.23, r_fast, K_fast, C_fast, M_fast);
+        d.CollocationProblem::stage_matrices(delta, v, v_dot, 0.23, r_general, K_general, C_general,
+                                             M_general);
+        BOOST_TEST_REQUIRE(C_fast.nonZeros() == C_general.nonZeros());
+        BOOST_TEST_REQUIRE(M_fast.nonZeros() == M_general.nonZeros());
+        const double scale = MatX(K_general).cwiseAbs().maxCoeff();
+        const double dK = MatX(K_fast - K_general).cwiseAbs().maxCoeff();
+        const double dC = MatX(C_fast - C_general).cwiseAbs().maxCoeff() / scale;
+        const double dM = MatX(M_fast - M_general).cwiseAbs().maxCoeff() / scale;
+        std::cout << P::kName << (spinning ? ", rotating frame" : "")
+                  << ": stage matrices against three evaluations, max |ΔC|, |ΔM| / max |K|: " << dC
+                  << ", " << dM << " (max |C| " << MatX(C_general).cwiseAbs().maxCoeff()
+                  << ", max |M| " << MatX(M_general).cwiseAbs().maxCoeff() << ", max |K| " << scale
+                  << ")\n";
+        BOOST_TEST(MatX(C_general).cwiseAbs().maxCoeff() > 1e-3 * scale);  // not vacuous
+        BOOST_TEST(MatX(M_general).cwiseAbs().maxCoeff() > 0.0);
+        BOOST_TEST(dK == 0.0);
+        BOOST_TEST(dC <= 1e-13);
+        BOOST_TEST(dM <= 1e-13);
+        BOOST_TEST((r_fast - r_general).cwiseAbs().maxCoeff() == 0.0);
+    }
+}
