@@ -17,6 +17,7 @@ constexpr StudyCost kStudyCosts[] = {
     {"manufactured-time", 21.0, 400.0},      {"joined-beam-modal", 2.2, 30.0},
     {"speed-accuracy", 120.0, 600.0},        {"joined-beam-dynamics", 60.0, 1200.0},
     {"joined-beam-agreement", 30.0, 1200.0}, {"free-vibration-time", 20.0, 300.0},
+    {"effectivity", 5.0, 157.0},
 };
 // A study without an entry above, and a continuum reference run of a split study.
 constexpr double kUnknownStudySeconds = 60.0;
