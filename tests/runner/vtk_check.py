@@ -11,8 +11,8 @@ position + the JSON displacement of that step (modes: the mode amplitude equals 
 position that of the last static step about which the modes are); with a
 `centerline` in the JSON (the displacement formulation's statics), every node equals it; the
 directors are orthonormal and right-handed; a static step's error estimate is point data at the
-named points' nodes (−1 elsewhere) equal to the JSON's; the ribbon's edges are the node ± h d2 with one h for
-all nodes; the ribbon turns with the section as the JSON says: at every named point
+named points' nodes (−1 elsewhere) equal to the JSON's; the ribbon's edges are the node ± h d2
+with one h for all nodes; the ribbon turns with the section as the JSON says: at every named point
 exp(rotation_vector)ᵀ [d1 d2 d3], the reference frame R^r(s), is the same in every file (so twist and
 the turning frame's rotation show); with turning supports (`rotating_frame` in the JSON) the nodes
 are at the inertial position (the JSON's `points`) and relative_displacement equals the JSON's

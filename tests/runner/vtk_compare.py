@@ -12,8 +12,8 @@ mode_displacement at the shared nodes scaled to unit largest component, the sign
 match A's; the largest difference. Statics and dynamics with the section resultants (cell data
 section_force, section_moment) in either: both must have them, on the same nodes (so the same
 cells), and each field's largest difference relative to its largest value in A is held against
-RESULTANT_TOLERANCE (default TOLERANCE). With TOLERANCE the exit status is 1 when a printed relative difference exceeds
-it.
+RESULTANT_TOLERANCE (default TOLERANCE). With TOLERANCE the exit status is 1 when a printed
+relative difference exceeds it.
 """
 import os
 import sys
