@@ -30,6 +30,9 @@ struct FrameSnapshot {
     // With turning supports (dynamics): the frame at the output time; `nodes` and `sections` are
     // then the motion relative to it, in its axes.
     std::optional<TurningFrame> turning;
+    // Where the formulation keeps no resultants (displacement): its nodal state, from which the
+    // ParaView output evaluates them per cell (formulations/displacement/cell_resultants.hpp).
+    std::optional<NodalField> field;
 };
 
 struct FrameRecorder {
@@ -50,10 +53,14 @@ inline void record_snapshot(FrameSnapshot snapshot) {
 
 // Adds a snapshot of `state` (and a mode's node amplitudes, or the turning frame of a dynamic
 // output) when a recorder is installed.
-inline void record_frames(const StaticState& state, std::vector<Vec6> mode = {},
+inline void record_frames(const StaticProblem& state, std::vector<Vec6> mode = {},
                           std::optional<TurningFrame> turning = std::nullopt) {
     if (current_frame_recorder == nullptr) return;
-    record_snapshot({state.node_frames(), state.section_resultants(), std::move(mode), turning});
+    std::vector<SectionResultants> sections = state.section_resultants();
+    std::optional<NodalField> field;
+    if (sections.empty()) field = state.nodal_field();
+    record_snapshot(
+        {state.node_frames(), std::move(sections), std::move(mode), turning, std::move(field)});
 }
 
 // Installs a recorder for the scope; the previous one is restored on exit.

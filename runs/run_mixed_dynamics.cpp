@@ -129,7 +129,7 @@ void record_mode_frames(const form::MixedDynamicsOf<P>& dyn, const VecX& x0,
         amplitudes.push_back(node_mode(dyn, x0, shape, peak, n.node));
     }
     record_snapshot({dyn.node_frames(x0, 0.0), dyn.section_resultants(x0), std::move(amplitudes),
-                     std::nullopt});
+                     std::nullopt, std::nullopt});
 }
 
 template <class P>
@@ -347,7 +347,8 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         if (frames_recorded()) {
             std::optional<TurningFrame> turning;
             if (dyn.rotating()) turning = TurningFrame{Q, dyn.frame_center()};
-            record_snapshot({dyn.node_frames(xs, t), dyn.section_resultants(xs), {}, turning});
+            record_snapshot(
+                {dyn.node_frames(xs, t), dyn.section_resultants(xs), {}, turning, std::nullopt});
         }
         if constexpr (P::kSize == 4) track_norm_drift(dyn.norm_drift(xs, t), drift);
     };

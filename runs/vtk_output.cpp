@@ -1,5 +1,6 @@
 #include "vtk_output.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -8,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/geometry.hpp"
 #include "core/so3.hpp"
+#include "formulations/displacement/cell_resultants.hpp"
 
 namespace rotbeam {
 
@@ -100,6 +102,54 @@ void estimate_field_data(const nlohmann::json& result, size_t index, DataArrayWr
         write("estimate_" + name + "_displacement", p.value("displacement", nlohmann::json()));
         write("estimate_" + name + "_rotation", p.value("rotation", nlohmann::json()));
     }
+}
+
+// Point data of the step's error estimate: the estimated error of the displacement and of the
+// rotation at each named point the step has one for, at the node at that point (and the ribbon's
+// points beside it), with its `reliable` as 1 or 0; every other point has −1, "no estimate" (the
+// program estimates the error of the named points' quantities only). Statics only: a mode's
+// estimate is of its frequency, a dynamic run's a bound over its whole history (field data, JSON).
+void estimate_point_data(const Model& model, const nlohmann::json& result, size_t index,
+                         const std::vector<StaticState::NodeFrame>& nodes, DataArrayWriter& w) {
+    if (result.contains("modes")) return;
+    const nlohmann::json& step = result["steps"][index];
+    if (!step.contains("estimate")) return;
+    const nlohmann::json& e = step["estimate"];
+    std::vector<double> scale{1.0};  // the structure's size, for the position match
+    for (const Point& p : model.points) scale.push_back(p.position.cwiseAbs().maxCoeff());
+    const double slack = 1e-12 * *std::max_element(scale.begin(), scale.end());
+    const size_t n = nodes.size();
+    for (const char* quantity : {"displacement", "rotation"}) {
+        std::vector<double> error(n, -1.0), reliable(n, -1.0);
+        for (const Point& p : model.points) {
+            if (!step["points"].contains(p.name)) continue;
+            const nlohmann::json& q =
+                (e.contains(p.name) ? e[p.name] : e).value(quantity, nlohmann::json());
+            if (!q.is_object() || !q.contains("error")) continue;
+            for (size_t i = 0; i < n; ++i) {
+                if ((nodes[i].reference - p.position).norm() > slack) continue;
+                error[i] = q["error"].get<double>();
+                reliable[i] = q.value("reliable", false) ? 1.0 : 0.0;
+            }
+        }
+        const std::string name = std::string("estimate_") + quantity;
+        w.floats(name, 3 * n, 1, [&](size_t i, int) { return error[i % n]; });
+        w.floats(name + "_reliable", 3 * n, 1, [&](size_t i, int) { return reliable[i % n]; });
+    }
+}
+
+// Whether `r` holds one resultant per line cell, in their order: on the cell's member, between
+// its nodes.
+bool resultants_fit_cells(const std::vector<SectionResultants>& r,
+                          const std::vector<StaticState::NodeFrame>& nodes,
+                          const std::vector<size_t>& segments) {
+    if (segments.empty() || r.size() != segments.size()) return false;
+    for (size_t c = 0; c < segments.size(); ++c) {
+        const StaticState::NodeFrame& a = nodes[segments[c]];
+        const StaticState::NodeFrame& b = nodes[segments[c] + 1];
+        if (r[c].member != a.member || !(r[c].s > a.s && r[c].s < b.s)) return false;
+    }
+    return true;
 }
 
 // The step's load factor or time, or the mode's number (from 1).
@@ -196,12 +246,16 @@ std::string vtk_unstructured_grid(const Model& model, const nlohmann::json& resu
         per_point("mode_displacement", [&](size_t i) { return Vec3(snapshot.mode[i].head<3>()); });
         per_point("mode_rotation", [&](size_t i) { return Vec3(snapshot.mode[i].tail<3>()); });
     }
+    estimate_point_data(model, result, index, nodes, w);
     os << "      </PointData>\n      <CellData>\n";
     w.floats("member", cells, 1,
              [&](size_t c, int) { return static_cast<double>(cell_member[c]); });
-    // The mixed formulation's resultants: one per element, ordered like the segments.
-    if (snapshot.sections.size() == segments.size() && !segments.empty()) {
-        const std::vector<SectionResultants>& r = snapshot.sections;
+    // The section resultants, one per line cell: the mixed formulation's (its element
+    // mid-points), or the displacement formulation's evaluated midway between the nodes.
+    const std::vector<SectionResultants> r =
+        snapshot.field ? form::displacement_cell_resultants(model, *snapshot.field)
+                       : snapshot.sections;
+    if (resultants_fit_cells(r, nodes, segments)) {
         const size_t k = segments.size();
         // Inertial components turned from a turning frame's axes; the material ones as they are.
         const Mat3 Q = snapshot.turning ? snapshot.turning->rotation : Mat3::Identity();

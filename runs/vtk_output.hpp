@@ -8,10 +8,14 @@
 // ribbon's two edge points carry their node's values): displacement, rotation_vector (principal
 // value of R = R^c R^rᵀ), director_1..3 (the section frame R R^r(s), d1 the reference tangent
 // carried along), reference_position, arc_length, member; modes: mode_displacement,
-// mode_rotation (normalized like the result's modes). Cell data: member, and where the
-// formulation gives them (the mixed formulation: one per element) section_force, section_moment
-// (inertial components) and section_force_material, section_moment_material. Field data:
-// TimeValue, and the run's error estimate of the step where it has one (per named point
+// mode_rotation (normalized like the result's modes); a static step's error estimate,
+// estimate_displacement and estimate_rotation with estimate_..._reliable (1 or 0) at the named
+// points' nodes, −1 ("no estimate") at every other point. Cell data: member, and per line cell
+// section_force, section_moment (inertial components) and section_force_material,
+// section_moment_material (the deformed section's axes): the mixed formulation's unknowns (one
+// per element), the displacement formulation's elastic resultant C [ε; κ] midway between the
+// cell's nodes (formulations/displacement/cell_resultants.hpp). Field data: TimeValue, and the
+// run's error estimate of the step where it has one (per named point
 // estimate_<point>_displacement and _rotation, the estimated error; or a mode's
 // estimate_frequency_hz), with estimate_..._reliable 1 or 0.
 //

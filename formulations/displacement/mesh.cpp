@@ -8,6 +8,7 @@
 #include "core/lagrange.hpp"
 #include "core/quadrature.hpp"
 #include "core/so3.hpp"
+#include "formulations/displacement/mesh_element.hpp"
 
 namespace rotbeam::form {
 
@@ -68,6 +69,18 @@ int point_node(Mesh& mesh, const Model& model, int point) {
     return mesh.point_node[point];
 }
 
+}  // namespace
+
+// x^r′ from the nodal reference positions (seed 000's equivalent strain): with u interpolated by
+// the same functions, a rigid motion is strain-free exactly.
+void set_reference_tangents(const Mesh& mesh, MeshElement& e) {
+    for (size_t q = 0; q < e.qp.size(); ++q) {
+        Vec3 t = Vec3::Zero();
+        for (size_t j = 0; j < e.nodes.size(); ++j) t += e.dN(j, q) * mesh.nodes[e.nodes[j]].x0;
+        e.qp[q].x0_prime = t;
+    }
+}
+
 MeshElement make_element(const Model& model, int member, const ReferenceGeometry& g, double s0,
                          double s1, const LagrangeBasis& basis, const QuadratureRule& rule) {
     const Member& m = model.members[member];
@@ -94,6 +107,8 @@ MeshElement make_element(const Model& model, int member, const ReferenceGeometry
     }
     return e;
 }
+
+namespace {
 
 // The trapezoidal rule of element [s0, s1] of member m: breakpoints at the element's ends and at
 // every section station strictly inside it, each interval divided into d.refine parts. A station
@@ -159,13 +174,7 @@ void add_member(Mesh& mesh, const Model& model, int member, const LagrangeBasis&
         MeshElement e = make_element(model, member, g, s0, s1, basis, rule);
         e.nodes = std::move(nodes);
         e.node_s = std::move(node_s);
-        // x^r′ from the nodal reference positions (seed 000's equivalent strain): with u
-        // interpolated by the same functions, a rigid motion is strain-free exactly.
-        for (size_t q = 0; q < e.qp.size(); ++q) {
-            Vec3 t = Vec3::Zero();
-            for (size_t j = 0; j < e.nodes.size(); ++j) t += e.dN(j, q) * mesh.nodes[e.nodes[j]].x0;
-            e.qp[q].x0_prime = t;
-        }
+        set_reference_tangents(mesh, e);
         mesh.elements.push_back(std::move(e));
     }
 }

@@ -10,8 +10,9 @@ named point (found by its reference_position, which equals the case's point) is 
 position + the JSON displacement of that step (modes: the mode amplitude equals the JSON's, the
 position that of the last static step about which the modes are); with a
 `centerline` in the JSON (the displacement formulation's statics), every node equals it; the
-directors are orthonormal and right-handed; the ribbon's edges are the node ± h d2 with one h for
-all nodes; the ribbon turns with the section as the JSON says: at every named point
+directors are orthonormal and right-handed; a static step's error estimate is point data at the
+named points' nodes (−1 elsewhere) equal to the JSON's; the ribbon's edges are the node ± h d2
+with one h for all nodes; the ribbon turns with the section as the JSON says: at every named point
 exp(rotation_vector)ᵀ [d1 d2 d3], the reference frame R^r(s), is the same in every file (so twist and
 the turning frame's rotation show); with turning supports (`rotating_frame` in the JSON) the nodes
 are at the inertial position (the JSON's `points`) and relative_displacement equals the JSON's
@@ -132,6 +133,8 @@ def check_file(index, mesh, entry, result, case):
                 got = data["relative_displacement"][at[0]]
                 check(np.abs(got - relative).max() <= EPS * max(np.abs(relative).max(), 1e-300),
                       f"{where}: {name}: relative displacement {got} != JSON {relative}")
+    if "estimate" in entry and "modes" not in result:
+        check_estimate(where, data, entry, ref, case)
     if "stations" in entry:
         check_stations(where, ref, data["mode_displacement"][:n], member,
                        entry["stations"], case)
@@ -148,6 +151,31 @@ def check_file(index, mesh, entry, result, case):
     scale = np.abs(mesh.points).max()
     check(np.abs(mesh.points[n:2 * n] - (x - h[:, None] * d[1])).max() <= 2 * EPS * scale and
           np.ptp(h) <= 2 * EPS * scale, f"{where}: ribbon edges are not x -+ h d2")
+
+
+def check_estimate(where, data, entry, ref, case):
+    """The step's error estimate as point data: at the node of every named point (and the ribbon's
+    points beside it) the JSON's estimated error of its displacement and rotation, and
+    `reliable` as 1/0; −1 ("no estimate") at every other point. Read back exactly."""
+    n = len(ref)
+    estimate = entry["estimate"]
+    for quantity in ("displacement", "rotation"):
+        name = f"estimate_{quantity}"
+        check(name in data and f"{name}_reliable" in data, f"{where}: no {name} point data")
+        if name not in data or f"{name}_reliable" not in data:
+            continue
+        error, reliable = np.full(n, -1.0), np.full(n, -1.0)
+        for point in entry["points"]:
+            q = estimate.get(point, estimate).get(quantity)
+            if not isinstance(q, dict) or "error" not in q:
+                continue
+            at = np.all(ref == np.array(case["points"][point], dtype=float), axis=1)
+            error[at] = q["error"]
+            reliable[at] = 1.0 if q.get("reliable", False) else 0.0
+        for array, expected in ((name, error), (f"{name}_reliable", reliable)):
+            got = np.asarray(data[array]).ravel()
+            check(np.array_equal(got, np.tile(expected, 3)),
+                  f"{where}: {array} differs from the JSON's estimate (-1 elsewhere)")
 
 
 def check_rotation(where, name, data, i, psi):

@@ -30,9 +30,25 @@ grep -q 'Name="estimate_tip_displacement"' "$work/static-displacement"/*_0006.vt
 check dynamic free-vibration --estimate off --set analysis.end_time=0.02
 # The mixed runs beside a displacement run of the same linear discrete model (linear elements,
 # one-point stiffness and mass: the mixed element, docs/displacement-modal.md), compared at their
-# shared nodes (vtk_compare.py) in every file.
+# shared nodes (vtk_compare.py) in every file, the section resultants cell by cell.
 linear=(--formulation displacement --order 1 --set discretization.mass_rule=midpoint
     --set discretization.quadrature=reduced)
+# The section resultants against statics (vtk_equilibrium.py): a cantilever (L = 1 m) under a dead
+# tip force P = 1 N along e3, at λ = 1 (tip deflection 0.2 % of L) and λ = 3000 (0.86 m): F = λP
+# and M = (x_tip − x) × λP at every section, which the linear one-point displacement element and
+# the mixed element satisfy exactly at a cell's midpoint (their discrete equilibrium); on the
+# reference line M = −λP (L − x) e2 to within 2 max|u| λ|P|. Tolerance 1e-7 of λ|P| (of λ|P| L
+# for M): the resultant is C [ε; κ] with EA = 2.1e7 N and ε formed from unit-size terms to a few
+# ulps, ~2e-8 N of round-off, 2e-8 of the 1 N step (measured 2026-11-27: force 1.7e-9, moment
+# 2.8e-16; Newton's scaled residual 6e-12). A resultant at the nodes instead of the midpoints is
+# off by λP h/2 = 6e-2 λ|P| L, a material-axis one by the rotation (0.9 rad at λ = 3000).
+tip=(--set 'analysis.load_factors=[1,3000]' --estimate off)
+check static-tip-linear tip-load-cantilever "${linear[@]}" "${tip[@]}"
+check static-tip-mixed tip-load-cantilever --formulation mixed "${tip[@]}"
+for run in static-tip-linear static-tip-mixed; do
+    "$python" "$(dirname "$0")/vtk_equilibrium.py" "$work/$run"/*.pvd 0,0,1 1e-7 ||
+        fail "$run: section resultants against the tip force's statics"
+done
 check dynamic-linear free-vibration "${linear[@]}" --estimate off --set analysis.end_time=0.02
 check dynamic-mixed free-vibration --formulation mixed --rotation rotation-vector --estimate off \
     --set analysis.end_time=0.02 --set analysis.integrator=trapezoidal \
@@ -69,12 +85,22 @@ check turning-modal-mixed "$work/turning-modal.yaml" --formulation mixed --eleme
 # 3.4e-11). Modes about the undeformed state: linear, the same eigenproblem solved by two solvers
 # to Ritz tolerance 1e-12: 1e-6 (measured 9.1e-10). Turning: the relative rotations stay below
 # 7e-3 rad, so the formulations' nonlinear terms are ~1e-2 of the relative motion, itself a tenth
-# of the inertial one (0.2 m against 2 m): 1e-3 (measured 1.1e-6, rotations 3.3e-6).
+# of the inertial one (0.2 m against 2 m): 1e-3 (measured 1.1e-6, rotations 3.3e-6). The tip
+# force's statics: the same discrete equations solved by two Newton solvers, so they differ by
+# the stopping and the round-off of the resultants (~2e-8 N against 3000 N): 1e-9 (measured
+# positions 1.8e-16, force 4.4e-12, moment 4.2e-16). The section resultants (relative to each
+# one's largest) are the positions' difference amplified: the shear force is kGA γ, γ formed from
+# the difference of neighbouring nodes over h, so a difference δ of the positions moves it by
+# kGA δ / h. Free vibration: kGA/h = 5.4e7 N/m, δ = 1.8e-11 m: 1e-3 N of a largest 2.9 N, 3e-4;
+# tolerance 1e-3 (measured force 8.3e-5, moment 2.1e-8), while the resultants of the next output
+# time differ by ~5 % (Δt = 1e-3 s of a 0.12 s period) and a neighbouring cell's moment by 1/8.
+# Turning: within the motion's 1e-3 (measured force 6.2e-5, moment 6.0e-5).
 compare() {
-    "$python" "$(dirname "$0")/vtk_compare.py" "$work/$1"/*.pvd "$work/$2"/*.pvd "$3" ||
+    "$python" "$(dirname "$0")/vtk_compare.py" "$work/$1"/*.pvd "$work/$2"/*.pvd "${@:3}" ||
         fail "$1 against $2: vtk_compare.py"
 }
-compare dynamic-linear dynamic-mixed 1e-5
+compare static-tip-linear static-tip-mixed 1e-9
+compare dynamic-linear dynamic-mixed 1e-5 1e-3
 compare modal modal-mixed 1e-6
 compare turning-linear turning-mixed 1e-3
 # What --vtk cannot write is refused before the run, with nothing written.
