@@ -368,19 +368,21 @@ Model load_case(const std::string& path, const std::vector<std::string>& overrid
     if (cases::is_beamdyn_driver_path(path)) {
         return load_case_text(cases::import_beamdyn(path), path + " (imported)", overrides);
     }
-    const std::string text = read_text_file(path, "case file");
+    std::string text = read_text_file(path, "case file");
+    std::string file_name = path;
+    std::vector<std::string> all = overrides;
     // A catalog entry that is a BeamDyn deck: the import, then the entry's overrides and the
-    // user's (cases/loader/deck_case.hpp).
+    // user's (cases/loader/deck_case.hpp); its published references beside it like any case's.
     if (const std::optional<cases::DeckCase> deck = cases::read_deck_case(text, path)) {
-        std::vector<std::string> all = deck->overrides;
+        text = cases::import_beamdyn(deck->driver);
+        file_name = path + " (" + deck->driver + ", imported)";
+        all = deck->overrides;
         all.insert(all.end(), overrides.begin(), overrides.end());
-        return load_case_text(cases::import_beamdyn(deck->driver),
-                              path + " (" + deck->driver + ", imported)", all);
     }
     const std::filesystem::path published = published_references_path(path);
     std::vector<std::string> case_overrides;
     bool sets_a_reference = false;
-    for (const std::string& o : overrides) {
+    for (const std::string& o : all) {
         if (sets_references(o)) {
             sets_a_reference = true;
         } else {
@@ -392,10 +394,10 @@ Model load_case(const std::string& path, const std::vector<std::string>& overrid
     std::error_code ec;
     if ((parts == CaseParts::case_file && !sets_a_reference) ||
         !std::filesystem::is_regular_file(published, ec)) {
-        return load_case_text(text, path, overrides);
+        return load_case_text(text, file_name, all);
     }
-    Model model = load_case_text(text, path, case_overrides);
-    read_published_references(published.string(), overrides, path, model);
+    Model model = load_case_text(text, file_name, case_overrides);
+    read_published_references(published.string(), all, path, model);
     return model;
 }
 

@@ -43,11 +43,26 @@ const ReferenceValue& reference(const Model& m, const std::string& id) {
 BOOST_AUTO_TEST_SUITE(case_loader)
 
 BOOST_AUTO_TEST_CASE(every_catalog_case_loads_and_names_its_points) {
-    const std::vector<std::string> catalog = {
-        "cantilever-moment", "cantilever-moment-4",  "bend-45",        "joined-beam",
-        "joined-beam-dead",  "joined-beam-follower", "blade-mh104",    "helix",
-        "helix-precessing",  "tip-load-cantilever",  "free-vibration", "nrel5mw-gravity",
-        "nrel5mw-rotating"};
+    const std::vector<std::string> catalog = {"cantilever-moment",
+                                              "cantilever-moment-4",
+                                              "bend-45",
+                                              "joined-beam",
+                                              "joined-beam-dead",
+                                              "joined-beam-follower",
+                                              "blade-mh104",
+                                              "helix",
+                                              "helix-precessing",
+                                              "tip-load-cantilever",
+                                              "free-vibration",
+                                              "nrel5mw-gravity",
+                                              "nrel5mw-rotating",
+                                              "beamdyn-cantilever-gravity",
+                                              "beamdyn-curved-beam",
+                                              "beamdyn-distributed-load",
+                                              "beamdyn-quadratic-twist",
+                                              "beamdyn-rollup",
+                                              "beamdyn-rotating-cantilever",
+                                              "beamdyn-twisted-beam"};
     for (const std::string& name : catalog) {
         BOOST_TEST_CONTEXT(name) {
             const Model m = load_case(case_path(name));
@@ -377,6 +392,25 @@ BOOST_AUTO_TEST_CASE(published_references_are_read_from_beside_the_case) {
         [&] { load_case(path, {"references.exact-0p4.point=nowhere"}, CaseParts::case_file); });
     BOOST_TEST(message.rfind(published + ":", 0) == 0, message);
     BOOST_TEST(message.find("references.exact-0p4.point") != std::string::npos, message);
+}
+
+// A catalog entry made of a BeamDyn deck keeps its published references beside it like any case:
+// the roll-up entry's exact arc and BeamDyn's printed tip are read with the imported deck (and not
+// for `run`, which reads the case file alone), and a --set of a reference applies to that file.
+BOOST_AUTO_TEST_CASE(a_deck_entry_reads_its_published_references) {
+    const std::string path = case_path("beamdyn-rollup");
+    const Model all = load_case(path);
+    BOOST_TEST(all.name == "beamdyn-rollup");
+    BOOST_TEST(all.members.at(0).elements ==
+               16);  // the entry's `set` applied to the deck (its 1, 15)
+    BOOST_TEST(all.discretization.order == 6);
+    BOOST_TEST(reference(all, "exact").value.at(0) == 5.4986774284);
+    BOOST_TEST(reference(all, "beamdyn-output").value.at(1) == -2.43174319);
+    BOOST_TEST(load_case(path, {}, CaseParts::case_file).references.empty());
+    const std::string published = published_references_path(path).string();
+    const std::string message = input_error(
+        [&] { load_case(path, {"references.exact.point=nowhere"}, CaseParts::case_file); });
+    BOOST_TEST(message.rfind(published + ":", 0) == 0, message);
 }
 
 // One place for the numbers: a case with its own references block and a references file beside it
