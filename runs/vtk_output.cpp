@@ -107,8 +107,9 @@ void estimate_field_data(const nlohmann::json& result, size_t index, DataArrayWr
 // Point data of the step's error estimate: the estimated error of the displacement and of the
 // rotation at each named point the step has one for, at the node at that point (and the ribbon's
 // points beside it), with its `reliable` as 1 or 0; every other point has −1, "no estimate" (the
-// program estimates the error of the named points' quantities only). Statics only: a mode's
-// estimate is of its frequency, a dynamic run's a bound over its whole history (field data, JSON).
+// program estimates the error of the named points' quantities only). A static step's estimate
+// and a dynamic run's at each output time (space + time); not a mode's, which is of its frequency
+// (field data).
 void estimate_point_data(const Model& model, const nlohmann::json& result, size_t index,
                          const std::vector<StaticState::NodeFrame>& nodes, DataArrayWriter& w) {
     if (result.contains("modes")) return;

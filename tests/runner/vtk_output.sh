@@ -28,6 +28,11 @@ grep -q 'Name="section_moment"' "$work/static-mixed"/*_0006.vtu ||
 grep -q 'Name="estimate_tip_displacement"' "$work/static-displacement"/*_0006.vtu ||
     fail "static-displacement: no estimate field data"
 check dynamic free-vibration --estimate off --set analysis.end_time=0.02
+# A dynamic run's estimate (space + time at every output time, docs/error-estimates.md) is point
+# data of each output time's file like a static step's (vtk_check.py compares it with the JSON).
+check dynamic-estimated free-vibration --set analysis.end_time=0.01
+grep -q 'Name="estimate_displacement"' "$work/dynamic-estimated"/*_0010.vtu ||
+    fail "dynamic-estimated: no estimate point data"
 # The mixed runs beside a displacement run of the same linear discrete model (linear elements,
 # one-point stiffness and mass: the mixed element, docs/displacement-modal.md), compared at their
 # shared nodes (vtk_compare.py) in every file, the section resultants cell by cell.
