@@ -134,6 +134,11 @@ RefinedQuadraticPair refine_quadratic_pair(const QuadraticPencil& p, std::comple
         if (moved <= eigenvalue_error(p, c, out.s, out.x, out.y)) break;
     }
     out.error = eigenvalue_error(p, c, out.s, out.x, out.y);
+    if (p.discretization_skew != nullptr) {
+        const VecXc nx = p.discretization_skew->cast<Complex>() * out.x;
+        out.error +=
+            std::abs(out.y.dot(nx)) / std::abs(out.y.dot(c.derivative_times(out.s, out.x)));
+    }
     // How far s₀ may be from its eigenvalue: the Cauchy–Schwarz form of the estimate, a bound to
     // first order whatever direction the Arnoldi pair's residual has.
     const VecXc x0n = x0.normalized();

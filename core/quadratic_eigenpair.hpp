@@ -39,6 +39,13 @@
 // itself is u ‖|K||x|‖ (1.5e-5 on the spinning beams, GA/ρ = 1e12), a bound of 1e-6 |s|, while
 // the componentwise term, of the same origin but seen by the eigenvalue, gives ≤ 7e-8 |s|.
 //
+// A stiffness asymmetry of the discretization, not of the model (`discretization_skew` N, the
+// skew part of K when every load is conservative: the displacement formulation's Petrov–Galerkin
+// weak form, docs/rotating-frame.md) moves s to first order by −yᴴNx / yᴴQ'(s)x; with a
+// gyroscopic G that move is a real growth or decay rate (xᴴNx is imaginary, yᴴQ'x too), which
+// the model does not have. So its modulus joins δ: the eigenvalue of the conservative model is
+// known to no better than that.
+//
 // Check (core/eigenpair_check.hpp): the backward error η = ‖r‖ / ((|s|²‖M‖_F + |s|‖G‖_F +
 // ‖K‖_F)‖x‖) (Tisseur's Thm. 1 with Frobenius norms, as the linear pencils' check) at most
 // kBackwardErrorTolerance; a finite δ; and the refined s is the eigenvalue s₀ approximates:
@@ -60,6 +67,9 @@ struct QuadraticPencil {
     const SparseMatrix& G;
     const SparseMatrix& K;
     bool conservative;  // M, K symmetric and G skew (to round-off: the caller decides)
+    // The skew part of K that is the discretization's, not the model's (header comment); none
+    // when null.
+    const SparseMatrix* discretization_skew = nullptr;
 };
 
 struct RefinedQuadraticPair {

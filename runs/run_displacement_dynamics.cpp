@@ -79,8 +79,10 @@ std::vector<Vec6> node_amplitudes(const form::Mesh& mesh, const VecX& shape) {
 // eigenvector, phase removed (largest component real), real part. `add_mode(shape, mode)`.
 template <class AddMode>
 void gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G, const SparseMatrix& M,
-                      int count, const AddMode& add_mode, nlohmann::json& result) {
-    const form::GyroscopicModes s = form::solve_gyroscopic_modes(K, G, M, count);
+                      int count, bool conservative_loads, const AddMode& add_mode,
+                      nlohmann::json& result) {
+    const form::GyroscopicModes s =
+        form::solve_gyroscopic_modes(K, G, M, count, conservative_loads);
     for (const form::GyroscopicMode& m : s.modes) {
         VecXc x = m.shape;
         Eigen::Index peak = 0;
@@ -105,6 +107,13 @@ void gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G, const Sparse
         {"rotating_frame",
          "modes about the steady rotating state: centrifugal stiffening and spin softening in K, "
          "the Coriolis (gyroscopic) coupling in G (docs/rotating-frame.md)"}};
+    if (s.discretization_asymmetry > 0.0) {
+        result["modal"]["stiffness_asymmetry"] = s.discretization_asymmetry;
+        result["modal"]["asymmetry"] =
+            "the loads are conservative: K's skew part is the weak form's discretization error, "
+            "its first-order growth or decay rate is in each mode's error estimate "
+            "(docs/rotating-frame.md)";
+    }
 }
 
 template <class P>
@@ -148,7 +157,8 @@ void modal(const Model& model, bool trace, nlohmann::json& result) {
         }
         const Vec3 omega = std::sqrt(lambda) * model.rotating_frame.angular_velocity;
         const SparseMatrix G = form::gyroscopic_matrix(M, omega);
-        gyroscopic_modes(K, G, M, model.analysis.modal.modes, add_mode, result);
+        gyroscopic_modes(K, G, M, model.analysis.modal.modes,
+                         problem.non_conservative_load_reason().empty(), add_mode, result);
         result["modal"]["mass_rule"] = choice_name(model.discretization.displacement.mass_rule);
     } else {
         const form::ModalSolution s = form::solve_modal(K, M, model.analysis.modal.modes);

@@ -164,6 +164,10 @@ class DisplacementStatics : public StaticProblem, public PotentialSystem, public
     double force_scale() const { return force_scale_; }
     double length_scale() const { return length_scale_; }
 
+    // Why the loads have no potential, a rotating frame's centrifugal load aside (empty: they
+    // have one: gravity, dead forces).
+    std::string non_conservative_load_reason() const;
+
   private:
     struct NodeLoad {
         int node = -1;

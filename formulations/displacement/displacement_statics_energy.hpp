@@ -61,6 +61,12 @@ template <param::RotationParameterization P>
 std::string DisplacementStatics<P>::no_potential_reason() const {
     if (model_.rotating_frame.active())
         return "a rotating frame: its inertial forces are not in the potential";
+    return non_conservative_load_reason();
+}
+
+// Why the loads (the frame's aside) have no potential (empty: they have one).
+template <param::RotationParameterization P>
+std::string DisplacementStatics<P>::non_conservative_load_reason() const {
     for (const NodeLoad& l : point_loads_) {
         if (l.follower) return "follower loads: not conservative, no potential energy";
         if (l.moment.squaredNorm() > 0.0) {

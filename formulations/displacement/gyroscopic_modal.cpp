@@ -96,7 +96,7 @@ double gyroscopic_structure_defect(const SparseMatrix& S, double sign) {
 }  // namespace
 
 GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G,
-                                       const SparseMatrix& M, int count) {
+                                       const SparseMatrix& M, int count, bool conservative_loads) {
     ROTBEAM_VERIFY(count > 0, "modal analysis: a positive mode count");
     const GyroscopicPencil pencil = gyroscopic_pencil(K, G, M);
     const auto D = pencil.scaling.asDiagonal();
@@ -112,7 +112,13 @@ GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix
     const int nev = std::min(2 * count + 4, static_cast<int>(2 * n) - 2);
     const ShiftInvertRitz ritz = shift_invert_arnoldi(pencil.A, pencil.B, nev, 0.0);
     out.arnoldi_vectors = ritz.arnoldi_vectors;
-    const QuadraticPencil q{Ms, Gs, Ks, out.conservative};
+    QuadraticPencil q{Ms, Gs, Ks, out.conservative};
+    // Conservative loads and a K that is not symmetric: the weak form's skew part (header).
+    const SparseMatrix skew = 0.5 * (Ks - SparseMatrix(Ks.transpose()));
+    if (conservative_loads && !out.conservative) {
+        q.discretization_skew = &skew;
+        out.discretization_asymmetry = gyroscopic_structure_defect(Ks, -1.0);
+    }
     for (RefinedRitzMode& r : refined_ritz_modes(ritz, 0.0, q, count, "about the rotating state")) {
         GyroscopicMode m;
         m.s = r.s;

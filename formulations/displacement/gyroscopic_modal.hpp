@@ -25,6 +25,15 @@
 // system (K symmetric and G skew to kStiffnessSymmetryTolerance, M symmetric) the refinement puts
 // a stable s on the imaginary axis exactly.
 //
+// A deformed state's K is not symmetric even when every load is conservative: the residual tests
+// the moment rows with the interpolated spin, not the variation of the interpolated rotation (a
+// Petrov–Galerkin weak form, docs/solver-convergence.md "Why not the Newton tangent"), so its
+// skew part N is a discretization error, O(h²) and proportional to the load. Through G it gives
+// the modes a growth or decay rate the conservative model does not have (1e-7 1/s on the NREL
+// 5-MW blade under gravity, docs/rotating-frame.md). With conservative loads that skew part's
+// first-order move of s joins each pair's error estimate (core/quadratic_eigenpair.hpp), so the
+// verdict does not read it as flutter.
+//
 // Kept: one of each conjugate pair of oscillatory eigenvalues (Im s > 0) and the growing member
 // of each real pair (s > 0, f = 0: divergence; a gyroscopic system's spectrum is symmetric about
 // the imaginary axis, so −s is found with it); a real s < 0 without damping is dropped, as it
@@ -67,11 +76,18 @@ struct GyroscopicModes {
     std::vector<GyroscopicMode> modes;  // ascending Im s: divergences first
     int arnoldi_vectors = 0;
     bool conservative = false;  // the refinement's structure (header comment)
+    // With conservative loads, K's asymmetry (scaled, relative to its largest entry) when it is
+    // the discretization's (header comment); 0 otherwise.
+    double discretization_asymmetry = 0.0;
 };
 
 // The `count` modes nearest s = 0 (header comment), refined and checked. Throws SolverError as
 // gyroscopic_pencil, when K is singular, or when fewer than `count` modes are found.
+// `conservative_loads`: every load of the state has a potential (gravity, dead forces, the
+// frame's centrifugal load), so a skew part of K is the weak form's discretization error and its
+// first-order move of each s joins the error estimate (header comment).
 GyroscopicModes solve_gyroscopic_modes(const SparseMatrix& K, const SparseMatrix& G,
-                                       const SparseMatrix& M, int count);
+                                       const SparseMatrix& M, int count,
+                                       bool conservative_loads = false);
 
 }  // namespace rotbeam::form
