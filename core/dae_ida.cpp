@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -152,7 +154,9 @@ void statistics(void* ida, DaeOutcome& out) {
 
 std::string failure(const char* where, double t, int flag, const IdaUser& user) {
     std::ostringstream m;
-    m << where << " failed at t = " << t << ": " << IDAGetReturnFlagName(flag);
+    // SUNDIALS 6 returns the flag's name in a malloc'ed string that the caller frees.
+    const std::unique_ptr<char, decltype(&std::free)> name(IDAGetReturnFlagName(flag), &std::free);
+    m << where << " failed at t = " << t << ": " << (name ? name.get() : "unknown IDA flag");
     if (!user.message.empty()) m << " (" << user.message << ")";
     return m.str();
 }
