@@ -11,40 +11,13 @@
 namespace rotbeam::test {
 
 // Diagonal section stiffness [EA, GA2, GA3, GJ, EI2, EI3] with its compliance.
-inline Section diagonal_section(double EA, double GA2, double GA3, double GJ, double EI2,
-                                double EI3) {
-    Section s;
-    Vec6 d;
-    d << EA, GA2, GA3, GJ, EI2, EI3;
-    s.stiffness = Mat6(d.asDiagonal());
-    s.compliance = Mat6(d.cwiseInverse().asDiagonal());
-    return s;
-}
+Section diagonal_section(double EA, double GA2, double GA3, double GJ, double EI2, double EI3);
 
-inline Section full_section(const Mat6& C) {
-    Section s;
-    s.stiffness = C;
-    s.compliance = C.inverse();
-    return s;
-}
+// The section of stiffness C, its compliance C⁻¹.
+Section full_section(const Mat6& C);
 
 // One member from point "root" to point "tip"; root clamped.
-inline Model cantilever(const Vec3& tip, const Section& section, int elements, int order) {
-    Model m;
-    m.points = {{"root", Vec3::Zero()}, {"tip", tip}};
-    Member mem;
-    mem.name = "beam";
-    mem.start_point = 0;
-    mem.end_point = 1;
-    mem.sections = {{0.0, section}};
-    mem.elements = elements;
-    m.members = {mem};
-    Constraint c;
-    c.point = 0;
-    m.constraints = {c};
-    m.discretization.order = order;
-    return m;
-}
+Model cantilever(const Vec3& tip, const Section& section, int elements, int order);
 
 // docs/benchmarks.md §1, the catalog's cantilever-moment: L = 12, E = 30e6, 1×1 square
 // (EI = 2.5e6), ν = 0.3, shear factor 5/6; tip moment −π EI / L e_y at load factor λ = 1.
