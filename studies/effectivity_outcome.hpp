@@ -15,7 +15,9 @@
 namespace rotbeam::cli {
 
 // What the tables say about a sequence.
-struct SequenceHeader {
+// bugprone-exception-escape: the implicit special members may throw through the json and string
+// members; the headers and outcomes are built once and never moved inside a noexcept context.
+struct SequenceHeader {                   // NOLINT(bugprone-exception-escape)
     std::string case_name;                // "cantilever-moment", "manufactured motion in time"
     std::string combination;              // "mixed/quaternion", or the motion run's label
     std::string strategy;                 // "p+1", "h/2,h/4", "dt/2", "tolerance/4"
@@ -33,7 +35,7 @@ struct EffectivityRange {
     std::string text() const;  // "0.868 … 1.009", "—" when empty
 };
 
-struct SequenceOutcome {
+struct SequenceOutcome {  // NOLINT(bugprone-exception-escape): as SequenceHeader
     SequenceHeader h;
     std::vector<std::string> statuses;  // per level: the run's status
     std::vector<EffectivityRow> rows;
