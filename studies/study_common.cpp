@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "core/oracles/rollup.hpp"
 #include "core/results.hpp"
+#include "effectivity_motion.hpp"
 #include "gnuplot.hpp"
 #include "manufactured_rod_case.hpp"
 #include "parameterizations/registry.hpp"
@@ -61,6 +62,7 @@ Model manufactured_rod_model(const RunSpec& spec) {
 
 Model build_model(const RunSpec& spec) {
     if (spec.case_name == kManufacturedRodCase) return manufactured_rod_model(spec);
+    if (spec.case_name == kManufacturedMotionCase) return motion_run_model(motion_spec_of(spec));
     const Combination& c = spec.combination;
     std::vector<std::string> overrides = {
         "discretization.formulation=" + std::string(choice_name(c.formulation)),
@@ -82,6 +84,11 @@ Model build_model(const RunSpec& spec) {
 
 nlohmann::json run_spec(const RunSpec& spec, bool estimate) {
     try {
+        if (spec.case_name == kManufacturedMotionCase) {
+            const MotionRunSpec m = motion_spec_of(spec);
+            return estimate ? estimated_motion_run(m)
+                            : motion_result_json(run_manufactured_motion(m), m);
+        }
         const Model model = build_model(spec);
         if (estimate) {
             SolvedPath solved;

@@ -13,6 +13,8 @@
 
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
+#include "effectivity_dynamic.hpp"
+#include "effectivity_outcome.hpp"
 #include "effectivity_sequences.hpp"
 #include "manufactured_rod_case.hpp"
 #include "studies.hpp"
@@ -54,41 +56,25 @@ std::vector<StudyRun> plan_effectivity(const StudyOptions& o) {
                        {estimated_key(s.spec(k)), StudyRun::Kind::estimated_case_run, s.spec(k)});
         }
     }
+    plan_motion_runs(plan, o.quick);
     return plan;
 }
 
-// Effectivity range and count over some rows.
-struct Range {
-    int n = 0;
-    double lo = 1e300, hi = 0.0;
-    void add(double e) {
-        ++n;
-        lo = std::min(lo, e);
-        hi = std::max(hi, e);
-    }
-    std::string text() const { return n == 0 ? "—" : fixed(lo, 3) + " … " + fixed(hi, 3); }
-};
-
-struct SequenceOutcome {
-    const EffectivitySequence* s = nullptr;
-    std::vector<std::string> statuses;  // per level: the run's status
-    std::vector<EffectivityRow> rows;
-    Range asymptotic, other;
-    std::vector<const EffectivityRow*> violations, failures;
-    int asymptotic_unreliable = 0;
-};
-
-bool in_band(double e) { return e >= kEffectivityLow && e <= kEffectivityHigh; }
-
-// A failure that neither the estimate (it says it is reliable) nor the sequence (the true error
-// falls under refinement) explains.
-bool failure_unexplained(const EffectivityRow* f) {
-    return f->q.estimate.value("reliable", false) && !f->other_state;
+SequenceHeader static_header(const EffectivitySequence& s) {
+    SequenceHeader h{s.case_name,
+                     s.combination.label(),
+                     s.strategy(),
+                     s.x_label(),
+                     s.kind == RefinementKind::p ? "p = " : "N = ",
+                     {},
+                     s.levels};
+    for (const int x : s.levels) h.level_text.push_back(std::to_string(x));
+    return h;
 }
 
 SequenceOutcome measure_sequence(const EffectivitySequence& s, const StudyResults& results) {
     SequenceOutcome out;
-    out.s = &s;
+    out.h = static_header(s);
     std::vector<json> references;
     const std::vector<RunSpec> refs = reference_specs(s);
     for (size_t i = 0; i < refs.size(); ++i) {
@@ -110,112 +96,20 @@ SequenceOutcome measure_sequence(const EffectivitySequence& s, const StudyResult
         }
     }
     out.rows = effectivity_rows(levels, s.kind, order);
-    for (const EffectivityRow& row : out.rows) {
-        if (row.failure) out.failures.push_back(&row);
-        if (!std::isfinite(row.effectivity)) continue;  // at the floor
-        (row.asymptotic ? out.asymptotic : out.other).add(row.effectivity);
-        if (row.asymptotic && !in_band(row.effectivity)) out.violations.push_back(&row);
-        if (row.asymptotic && !row.q.estimate.value("reliable", false)) ++out.asymptotic_unreliable;
-    }
+    classify_rows(out);
     return out;
 }
 
-std::string sequence_label(const EffectivitySequence& s) {
-    return s.case_name + " " + s.combination.label() + " " + s.strategy();
-}
-
-// "| case | strategy | combination | levels | asymptotic | … |" over every sequence.
-void summary_table(const std::vector<SequenceOutcome>& all, std::ostringstream& md) {
-    md << "| case | strategy | combination | levels | asymptotic rows | effectivity there | "
-          "not reliable there | other rows | effectivity there | outside [0.5, 2] | failures "
-          "(other state; reliable otherwise) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const SequenceOutcome& o : all) {
-        const EffectivitySequence& s = *o.s;
-        std::string levels;
-        for (size_t k = 0; k < s.levels.size(); ++k) {
-            levels += (k ? ", " : "") + std::to_string(s.levels[k]);
-            if (!has_solution(o.statuses[k])) levels += " (" + o.statuses[k] + ")";
-        }
-        const auto other = std::count_if(o.failures.begin(), o.failures.end(),
-                                         [](auto* r) { return r->other_state; });
-        const auto reliable =
-            std::count_if(o.failures.begin(), o.failures.end(), failure_unexplained);
-        md << "| " << s.case_name << " | " << s.strategy() << " | " << s.combination.label()
-           << " | " << (s.kind == RefinementKind::p ? "p = " : "N = ") << levels << " | "
-           << o.asymptotic.n << " | " << o.asymptotic.text() << " | " << o.asymptotic_unreliable
-           << " | " << o.other.n << " | " << o.other.text() << " | " << o.violations.size() << " | "
-           << o.failures.size() << " (" << other << "; " << reliable << ") |\n";
-    }
-    md << "\n";
-}
-
-// Per case and strategy: the effectivity range at each level, with the asymptotic rows' count.
-void level_tables(const std::vector<SequenceOutcome>& all, std::ostringstream& md) {
-    std::map<std::string, std::vector<const SequenceOutcome*>> groups;
-    std::vector<std::string> order;
-    for (const SequenceOutcome& o : all) {
-        const std::string g = o.s->case_name + ", " + o.s->strategy();
-        if (!groups.count(g)) order.push_back(g);
-        groups[g].push_back(&o);
-    }
-    for (const std::string& g : order) {
-        const EffectivitySequence& first = *groups[g].front()->s;
-        md << "**" << g << "**: effectivity per level (" << first.x_label()
-           << "), min … max over the quantities above the floor, [asymptotic / all]\n\n| "
-              "combination |";
-        for (const int x : first.levels) md << " " << x << " |";
-        md << "\n|---|";
-        for (size_t k = 0; k < first.levels.size(); ++k) md << "---|";
-        md << "\n";
-        for (const SequenceOutcome* o : groups[g]) {
-            md << "| " << o->s->combination.label() << " |";
-            for (size_t k = 0; k < o->s->levels.size(); ++k) {
-                Range r;
-                int asymptotic = 0;
-                for (const EffectivityRow& row : o->rows) {
-                    if (row.level != k || !std::isfinite(row.effectivity)) continue;
-                    r.add(row.effectivity);
-                    asymptotic += row.asymptotic ? 1 : 0;
-                }
-                md << " " << (has_solution(o->statuses[k]) ? r.text() : o->statuses[k]) << " ["
-                   << asymptotic << "/" << r.n << "] |";
-            }
-            md << "\n";
-        }
-        md << "\n";
-    }
-}
-
-void row_list(const std::vector<SequenceOutcome>& all, bool violations, std::ostringstream& md) {
-    int n = 0;
-    for (const SequenceOutcome& o : all) {
-        for (const EffectivityRow* row : violations ? o.violations : o.failures) {
-            ++n;
-            md << "- " << sequence_label(*o.s) << ", " << o.s->x_label() << " "
-               << o.s->levels[row->level] << ", " << markdown_cell(row->q.quantity) << ": ";
-            if (violations) {
-                md << "effectivity " << fixed(row->effectivity, 3) << " (true "
-                   << sci(row->q.true_error) << ", next levels " << sci(row->next_true[0]) << ", "
-                   << sci(row->next_true[1]) << "; "
-                   << (row->q.estimate.value("reliable", false) ? "reliable" : "not reliable")
-                   << ")\n";
-            } else {
-                md << markdown_cell(*row->failure) << "\n";
-            }
-        }
-    }
-    if (n == 0) md << "None.\n";
-    md << "\n";
-}
-
 // One data file per strategy: "x effectivity asymptotic(0/1)".
-std::string plot_effectivity(const StudyOptions& o, const std::vector<SequenceOutcome>& all) {
+std::string plot_effectivity(const StudyOptions& o,
+                             const std::vector<EffectivitySequence>& sequences,
+                             const std::vector<SequenceOutcome>& all) {
     std::map<RefinementKind, std::ostringstream> data;
-    for (const SequenceOutcome& s : all) {
-        for (const EffectivityRow& row : s.rows) {
+    for (size_t i = 0; i < all.size(); ++i) {
+        for (const EffectivityRow& row : all[i].rows) {
             if (!std::isfinite(row.effectivity)) continue;
-            data[s.s->kind] << s.s->levels[row.level] << " " << row.effectivity << " "
-                            << (row.asymptotic ? 1 : 0) << "\n";
+            data[sequences[i].kind] << sequences[i].levels[row.level] << " " << row.effectivity
+                                    << " " << (row.asymptotic ? 1 : 0) << "\n";
         }
     }
     const std::string p_file = "data/effectivity_p.dat", h_file = "data/effectivity_h.dat";
@@ -236,25 +130,11 @@ json combine_effectivity(const StudyOptions& o, const StudyResults& results) {
     std::vector<SequenceOutcome> all;
     for (const EffectivitySequence& s : sequences) all.push_back(measure_sequence(s, results));
     json out = {{"study", "effectivity"}, {"quick", o.quick}, {"sequences", json::array()}};
-    int asymptotic = 0, violations = 0, failures = 0, unexplained_n = 0, other_state = 0;
-    for (const SequenceOutcome& s : all) {
-        json rows = json::array();
-        for (const EffectivityRow& row : s.rows) rows.push_back(to_json(row));
-        out["sequences"].push_back({{"case", s.s->case_name},
-                                    {"combination", s.s->combination.label()},
-                                    {"strategy", s.s->strategy()},
-                                    {"x_is", s.s->x_label()},
-                                    {"levels", s.s->levels},
-                                    {"statuses", s.statuses},
-                                    {"rows", rows}});
-        asymptotic += s.asymptotic.n;
-        violations += static_cast<int>(s.violations.size());
-        failures += static_cast<int>(s.failures.size());
-        for (const EffectivityRow* f : s.failures) {
-            unexplained_n += failure_unexplained(f) ? 1 : 0;
-            other_state += f->other_state ? 1 : 0;
-        }
-    }
+    for (const SequenceOutcome& s : all) out["sequences"].push_back(outcome_json(s));
+    const OutcomeTotals totals = outcome_totals(all);
+    const int asymptotic = totals.asymptotic, violations = totals.violations,
+              failures = totals.failures, unexplained_n = totals.unexplained,
+              other_state = totals.other_state;
     out["asymptotic_rows"] = asymptotic;
     out["band_violations"] = violations;
     out["unexplained_failures"] = unexplained_n;
@@ -286,9 +166,8 @@ json combine_effectivity(const StudyOptions& o, const StudyResults& results) {
           "three or more levels the smallest above half the largest): the discrete solutions "
           "converge to another state than the reference (another solution of the equations, "
           "reached by the continuation, or the reference's own error), which no discretization "
-          "estimate can see. The "
-          "manufactured motion (in time) is measured in test_estimate_dynamic "
-          "(docs/error-estimates.md)."
+          "estimate can see. The manufactured motion's dynamic estimate has its own section "
+          "below."
        << (o.quick ? " Quick form: the roll-up, the bend and the manufactured rod with the "
                      "quaternion only."
                    : "")
@@ -301,9 +180,10 @@ json combine_effectivity(const StudyOptions& o, const StudyResults& results) {
     row_list(all, true, md);
     md << "**Estimator failures** (true error > 3 × estimate, with the cause)\n\n";
     row_list(all, false, md);
-    const std::string figure = plot_effectivity(o, all);
+    const std::string figure = plot_effectivity(o, sequences, all);
     out["figures"] = {figure};
     md << "![" << figure << "](" << figure << ")\n\n";
+    out["dynamic"] = dynamic_effectivity(o.quick, results, md);
     write_text(o, "study-effectivity.md", md.str());
     out["schema_version"] = kSchemaVersion;
     write_text(o, "study-effectivity.json", out.dump(1) + "\n");

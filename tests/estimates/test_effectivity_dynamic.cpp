@@ -29,9 +29,8 @@
 #include <iostream>
 
 #include "core/oracles/manufactured_motion.hpp"
-#include "core/so3.hpp"
-#include "estimates/history_estimate.hpp"
 #include "parameterizations/registry.hpp"
+#include "studies/effectivity_motion.hpp"
 #include "studies/manufactured_motion_runs.hpp"
 
 namespace rotbeam {
@@ -41,32 +40,6 @@ namespace {
 using json = nlohmann::json;
 
 const char* const kPoints[] = {"root", "q1", "mid", "q3", "tip"};
-
-// A motion run as the result JSON of a dynamic run (the fields the estimate reads).
-json result_json(const cli::MotionRunResult& r, const cli::MotionRunSpec& spec) {
-    json steps = json::array();
-    const std::size_t n = r.u.size() / std::size(kPoints);
-    for (std::size_t k = 0; k < n; ++k) {
-        json points = json::object();
-        for (std::size_t p = 0; p < std::size(kPoints); ++p) {
-            const Vec3& u = r.u[k * std::size(kPoints) + p];
-            const Mat3& R = r.R[k * std::size(kPoints) + p];
-            json rows = json::array();
-            for (int i = 0; i < 3; ++i) rows.push_back({R(i, 0), R(i, 1), R(i, 2)});
-            points[kPoints[p]] = {{"displacement", {u[0], u[1], u[2]}},
-                                  {"rotation_matrix", rows},
-                                  {"rotation_angle", so3::rotation_angle(R)}};
-        }
-        steps.push_back(
-            {{"time", static_cast<double>(k) * spec.end_time / cli::kMotionOutputs}, {"points", points}});
-    }
-    return {{"status", r.status},
-            {"message", r.message},
-            {"dofs", r.dofs},
-            {"wall_seconds", r.wall_seconds},
-            {"integrator", {{"newton_iterations", r.newton_iterations}}},
-            {"steps", steps}};
-}
 
 struct Level {
     double dt = 0.0;
@@ -86,15 +59,7 @@ Level estimated_run(cli::MotionRunSpec spec, double dt) {
     }
     const cli::MotionRunResult r = cli::run_manufactured_motion(spec);
     BOOST_TEST_REQUIRE(r.ok(), spec.label() << " dt " << dt << ": " << r.message);
-    json result = result_json(r, spec);
-    estimate::add_dynamic_estimate(cli::motion_run_model(spec), result, [&](const Model& companion) {
-        cli::MotionRunSpec c = spec;
-        c.order = companion.discretization.order;
-        c.elements = companion.members[0].elements;
-        c.dt = companion.analysis.dynamics.time_step;
-        c.tolerance = companion.analysis.dynamics.relative_tolerance;
-        return result_json(cli::run_manufactured_motion(c), c);
-    });
+    json result = cli::with_motion_estimate(r, spec);
     const json& e = result["estimate"];
     BOOST_TEST_REQUIRE(e["status"].get<std::string>() == "estimated", e.dump());
     Level l;

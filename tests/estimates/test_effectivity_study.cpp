@@ -17,7 +17,8 @@
 //   reason, and none are expected on these levels either.
 // - Enough asymptotic rows per sequence, so that the band is actually checked.
 // A halved estimate (effectivity ~0.43 … 0.5 on the p rows) fails the band: checked by halving the
-// error of estimates/quantity_estimate.cpp's p and h estimates.
+// error of estimates/quantity_estimate.cpp's p and h estimates. The dynamic rows are checked by
+// check_dynamic_rows (below).
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -46,8 +47,73 @@ bool regime_shown(const std::string& strategy, const json& row) {
     if (next[0].is_null() || next[1].is_null() || e0 <= floor) return false;
     const double e1 = next[0].get<double>(), e2 = next[1].get<double>();
     if (strategy == "p+1") return e1 < 0.5 * e0 && (e2 <= floor || e2 < 0.5 * e1);
+    // h/2, h/4 (mixed, order 2 per doubling) and dt/2 (the generalized-α and the trapezoidal
+    // rule, order 2 per halved step): the same rate 2 per level.
     if (!(e2 < e1 && e1 < e0) || e2 <= floor) return false;
     return std::abs(std::log2(e0 / e1) - 2.0) <= 0.5 && std::abs(std::log2(e1 / e2) - 2.0) <= 0.5;
+}
+
+// The Richardson factor of the Δt/2 companion for a second-order scheme: 1 / (1 − 2⁻²).
+constexpr double kRichardsonOrder2 = 4.0 / 3.0;
+
+// The dynamic rows of the quick form (studies/effectivity_motion.hpp): the manufactured motion,
+// displacement formulation, quaternion, generalized-α on its time sequence Δt = 0.025, 0.0125,
+// 0.00625, against the exact motion (space + time) and against the same mesh at Δt = 0.00625 / 8
+// (the time part). Asserted:
+// - as for the static rows: the asymptotic flag as the true errors show it (rate 2 per halved
+//   step), the band there, no estimate a third of its true error or less unless it says it is not
+//   reliable, and every failure listed with its cause;
+// - the time part against the true time errors of the level and the next, e0 and e1, both against
+//   the same fine-step run: the estimate is 4/3 max_t ‖u_Δt − u_Δt/2‖ and the level's Δt/2
+//   companion is the next level's run, so by the triangle inequality (at the time of e0's maximum,
+//   and at every time) it lies within [4/3 (e0 − e1), 4/3 (e0 + e1)] — no tolerance beyond
+//   round-off. Asymptotic (e1 ≈ e0/4) that is [1.0, 1.67] e0: a doubled time estimate (2.0 e0)
+//   or a dropped one (0) fails it, where the band [0.5, 2] alone would let the doubled one pass.
+// - enough rows checked: both tip quantities, total and time part, at the asymptotic level.
+void check_dynamic_rows(const json& dynamic) {
+    BOOST_TEST_REQUIRE(dynamic["sequences"].size() == 1u);
+    int asymptotic = 0, richardson = 0;
+    for (const json& s : dynamic["sequences"]) {
+        const std::string label = s["combination"].get<std::string>();
+        BOOST_TEST(s["strategy"] == "dt/2");
+        for (const json& status : s["statuses"]) BOOST_TEST(status == "converged", label);
+        for (const json& row : s["rows"]) {
+            const std::string what = label + " level " + std::to_string(row["level"].get<int>()) +
+                                     " " + row["quantity"].get<std::string>();
+            const double est = row["estimate"]["error"].get<double>();
+            const double e0 = row["true_error"].get<double>();
+            const bool shown = regime_shown("dt/2", row);
+            BOOST_TEST(row["asymptotic"].get<bool>() == shown, what);
+            if (shown) {
+                ++asymptotic;
+                BOOST_TEST(est >= 0.5 * e0, what << ": effectivity " << est / e0);
+                BOOST_TEST(est <= 2.0 * e0, what << ": effectivity " << est / e0);
+            }
+            const bool missed = e0 > row["floor"].get<double>() && e0 > 3.0 * est;
+            BOOST_TEST(missed == !row["failure"].is_null(), what);
+            if (missed && !row["failure"].is_null()) {
+                BOOST_TEST(row["failure"].get<std::string>().find('(') != std::string::npos,
+                           what << ": no cause: " << row["failure"]);
+                BOOST_TEST(!(row["estimate"]["reliable"].get<bool>() && !row["other_state"]),
+                           what << ": an unexplained estimator failure");
+            }
+            const std::string q = row["quantity"].get<std::string>();
+            if (!q.ends_with("time part") || row["next_true_errors"][0].is_null()) continue;
+            const double e1 = row["next_true_errors"][0].get<double>();
+            const double round_off = 1e-12 * e0;
+            BOOST_TEST(est >= kRichardsonOrder2 * (e0 - e1) - round_off,
+                       what << ": time part " << est << " below 4/3 (e0 − e1), e0 " << e0 << ", e1 "
+                            << e1);
+            BOOST_TEST(est <= kRichardsonOrder2 * (e0 + e1) + round_off,
+                       what << ": time part " << est << " above 4/3 (e0 + e1), e0 " << e0 << ", e1 "
+                            << e1);
+            ++richardson;
+        }
+    }
+    BOOST_TEST(asymptotic >= 4, asymptotic);  // 2 quantities × (total, time part) at Δt = 0.025
+    BOOST_TEST(richardson >= 4, richardson);  // the same at Δt = 0.025 and 0.0125
+    BOOST_TEST(dynamic["unexplained_failures"] == 0);
+    BOOST_TEST(dynamic["band_violations"] == 0);
 }
 
 }  // namespace
@@ -108,6 +174,7 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
         band_checked += asymptotic;
     }
     BOOST_TEST(manufactured == 2);  // both formulations
+    check_dynamic_rows(out["dynamic"]);
     BOOST_TEST_MESSAGE("effectivity study (quick): " << band_checked << " asymptotic rows");
     BOOST_TEST(out["unexplained_failures"] == 0);
     BOOST_TEST(out["band_violations"] == 0);
