@@ -50,7 +50,17 @@ struct MotionRunSpec {
     // > 0; 0 keeps the drivers' defaults (displacement: the model's 1e-12, mixed: 1e-10).
     double newton_tolerance = 0.0;
     oracle::ManufacturedMotion motion;
+    // The manufactured solution of the semi-discrete equations (studies/semi_discrete_forcing.hpp):
+    // the run is forced by −R_h(t, y_h, ẏ_h, ÿ_h), y_h the mesh's exact trajectory (displacement:
+    // the nodal interpolant of the motion; mixed: every unknown at its exact value, as the start
+    // above), and started at y_h(0); MotionRunResult::semi_discrete_error is then its time error.
+    bool semi_discrete = false;
     std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5", ".../p3/gl2"
+};
+
+// Per component: positions, rotations, velocity-level unknowns, internal forces.
+struct ComponentDifferences {
+    double u = 0.0, R = 0.0, velocity = 0.0, forces = 0.0;
 };
 
 struct MotionRunResult {
@@ -70,6 +80,10 @@ struct MotionRunResult {
     // mixed: every element's momenta [P; H]) and, mixed only, every element's internal forces
     // [F; M] (the index-3 multipliers of a closed loop; algebraic on a free rod).
     std::vector<VecX> velocity, forces;
+    // Semi-discrete runs: the error against y_h(t) per component, max over the output times (u
+    // over the length and rotation angle at every node — mixed: and element —, the velocity-level
+    // unknowns and the mixed internal forces relative to their largest magnitude in y_h).
+    ComponentDifferences semi_discrete_error;
     bool ok() const { return has_solution(status); }
 };
 
@@ -97,9 +111,6 @@ void run_difference(const MotionRunResult& a, const MotionRunResult& b, double l
 // velocity-level unknowns and the internal forces, each the max over the common output times of
 // the max-norm difference over the largest magnitude of that component in `b` (0 when a run has
 // none, e.g. forces of the displacement formulation).
-struct ComponentDifferences {
-    double u = 0.0, R = 0.0, velocity = 0.0, forces = 0.0;
-};
 ComponentDifferences component_differences(const MotionRunResult& a, const MotionRunResult& b,
                                            double length);
 
