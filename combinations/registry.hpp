@@ -70,8 +70,7 @@ inline constexpr std::array kFormulations = {
                       false,
                       "'lumped' is not available in the mixed formulation (element momenta, no "
                       "nodal masses); consistent | midpoint",
-                      "no stability criterion is known for the mixed formulation (its tangent is "
-                      "not symmetric; docs/mixed-formulation.md)"},
+                      ""},
 };
 
 namespace detail {

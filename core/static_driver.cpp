@@ -348,7 +348,8 @@ NewtonOutcome solve_from_guess(StaticSystem& problem, const NewtonSettings& sett
 // is symmetric (the straight states; docs/solver-convergence.md, Stability of the equilibrium). A
 // substituted solver (KINSOL) leaves no Jacobian here. Loads without a potential are assessed by
 // the kinetic criterion where the system forms its linearized motion and has a mass
-// (core/static_stability_kinetic.hpp); otherwise the tangent's inertia as above.
+// (core/static_stability_kinetic.hpp); otherwise the tangent's inertia as above, in a system that
+// forms an energy only (not the mixed formulation, whose tangent is a saddle point).
 StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& workspace,
                                   const StepSolver& solver) {
     auto* potential = dynamic_cast<PotentialSystem*>(&problem);
@@ -366,12 +367,19 @@ StaticStability stability_of_step(StaticSystem& problem, const NewtonWorkspace& 
         if (unavailable.empty()) return assessed;
     }
     // No energy: the kinetic criterion where the system forms its linearized motion.
+    StaticStability s;
     if (auto* kinetic = dynamic_cast<KineticSystem*>(&problem)) {
         StaticStability k = assess_kinetic_stability(kinetic->kinetic_spectrum(kKineticModes));
         if (k.criterion == StaticStability::Criterion::kinetic) return k;
         unavailable += "; " + k.reason;
     }
-    StaticStability s;
+    // A system that forms no energy at all gives no reason to read its tangent as an energy's
+    // Hessian: the mixed formulation's is a saddle point (its stress unknowns make it indefinite
+    // at every stable state, so its pivots count no unstable direction).
+    if (!potential) {
+        s.reason = unavailable;
+        return s;
+    }
     if (solver) {
         s.reason = "the step solver keeps no tangent to assess; " + unavailable;
         return s;

@@ -4,6 +4,7 @@
 // the Euler angles, with the right inverse H_m⁺ in four components for the quaternion) and for
 // Wiener–Milenković with GXBeam's continuous map.
 #include "formulations/mixed/mixed_statics_impl.hpp"
+#include "formulations/mixed/mixed_statics_kinetic.hpp"
 #include "formulations/mixed/mixed_statics_rest_terms.hpp"
 #include "parameterizations/registry.hpp"
 #include "parameterizations/wiener_milenkovic_continuous.hpp"

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/model.hpp"
+#include "core/static_stability_kinetic.hpp"
 #include "core/static_state.hpp"
 #include "formulations/mixed/mixed_element.hpp"
 #include "formulations/mixed/mixed_layout.hpp"
@@ -52,7 +53,7 @@ void add_mixed_block(SparseMatrix& J, int r0, int c0, const Eigen::MatrixBase<De
 }
 
 template <param::RotationParameterization P>
-class MixedStatics : public StaticProblem {
+class MixedStatics : public StaticProblem, public KineticSystem {
   public:
     static constexpr int K = P::kSize;
     static constexpr int kConstraintRows = param::ParameterConstraint<P>::kRows;
@@ -80,6 +81,8 @@ class MixedStatics : public StaticProblem {
     std::vector<SectionResultants> section_resultants() const override;
     std::vector<RotationStation> rotation_stations() const override;
     std::vector<NodeFrame> node_frames() const override;
+    // The linearized free motion about the current state (mixed_statics_kinetic.hpp).
+    KineticSpectrum kinetic_spectrum(int count) override;
 
     const MixedLayout& layout() const { return layout_; }
     const MixedNumbering& numbering() const { return numbering_; }

@@ -296,8 +296,9 @@ BOOST_AUTO_TEST_CASE(coarse_bend_is_stable_at_the_energys_stationary_point) {
 }
 
 // No criterion: the mixed formulation and follower loads without a mass (no energy, and no kinetic
-// criterion: tests/runs/test_kinetic_stability.cpp) say `not-assessed` with the reason, and the
-// status is the solver's (the mixed column at 1000 N converges on the straight branch too).
+// criterion: tests/runs/test_kinetic_stability.cpp, tests/runs/test_mixed_stability.cpp) say
+// `not-assessed` with the reason, and the status is the solver's (the mixed column at 1000 N
+// converges on the straight branch too).
 BOOST_AUTO_TEST_CASE(mixed_and_follower_loads_are_not_assessed_and_say_why) {
     const nlohmann::json mixed = run("tip-load-cantilever", column(1000, "mixed", "quaternion"));
     BOOST_TEST(has_solution(mixed["status"].get<std::string>()), mixed["message"]);
