@@ -14,7 +14,7 @@
 # and its sweep.csv byte for byte.
 # Usage: sweep_interrupt.sh ROTBEAM COMPARE_RESULTS_PY SOURCE_DIR
 set -u
-# rotbeam, compare; work, fail and failures; same, complete_files and limited.
+# rotbeam, compare; work, fail and failures; same, complete_files and full_disk.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 file=$3/cases/sweeps/rollup-load-elements.yaml
 # Background jobs in their own process group: a non-interactive shell would otherwise start
@@ -69,14 +69,8 @@ cmp -s "$work/ref/sweep.csv" "$dir/sweep.csv" || fail "the resumed sweep's sweep
 # sweep table (sweep.csv, ~11 KiB) is refused.
 dir="$work/full"
 for kib in 4 8; do
-    limited $kib "$work/err.txt" "$rotbeam" sweep "$file" --jobs 2 --out "$dir"
-    code=$?
-    last=$(tail -1 "$work/err.txt")
-    [ $code -eq 4 ] || fail "ulimit -f $kib: exit $code, expected 4: $last"
-    grep -q "^rotbeam: $dir/.*: write failed, nothing written: file too large" <<<"$last" ||
-        fail "ulimit -f $kib: the last line does not name the file and the limit: $last"
-    complete_files "$dir" "the sweep under ulimit -f $kib"
-    echo "ulimit -f $kib: exit $code, $(runs_in "$dir") runs kept: ${last#rotbeam: $dir/}"
+    full_disk $kib "$dir" "the sweep" "$rotbeam" sweep "$file" --jobs 2 --out "$dir"
+    echo "ulimit -f $kib: $(runs_in "$dir") runs kept: ${last#rotbeam: $dir/}"
 done
 [ "$(runs_in "$dir")" -eq "$total" ] || fail "ulimit -f 8: $(runs_in "$dir") of $total runs written"
 grep -q "^rotbeam: $dir/sweep.csv: " <<<"$last" || fail "ulimit -f 8: not the sweep table: $last"
