@@ -112,14 +112,56 @@ void run_study_whole(const std::string& name, const StudyOptions& o) {
               << "\n";
 }
 
+std::string study_name_list() {
+    std::string names = "rotations";
+    for (const std::string& name : study_names()) names += ", " + name;
+    return names + ", all";
+}
+
 void check_study_name(const std::string& name) {
     bool found = name == "all";
     for (const auto& entry : static_studies()) found = found || entry.first == name;
     if (!found) {
-        std::string names = "rotations";
-        for (const auto& entry : static_studies()) names += ", " + entry.first;
-        throw InputError("rotbeam study: unknown study '" + name + "' (available: " + names +
-                         ", all)");
+        throw InputError("rotbeam study: unknown study '" + name +
+                         "' (available: " + study_name_list() + ")");
+    }
+}
+
+namespace {
+
+// The options of `rotbeam study` that only some studies take, and which: "rotations" (the
+// rotation study alone), "registered" (every study of the registry, and all) or the name of one
+// study of the registry (it, and all, which runs it).
+struct StudyOptionScope {
+    const char* option;
+    const char* studies;
+};
+constexpr StudyOptionScope kStudyOptionScopes[] = {
+    {"json", "rotations"},
+    {"samples", "rotations"},
+    {"out", "registered"},
+    {"quick", "registered"},
+    {"reduced-follower", "joined-beam-dynamics"},
+};
+
+}  // namespace
+
+void check_study_option(const std::string& name, const std::string& option) {
+    for (const StudyOptionScope& scope : kStudyOptionScopes) {
+        if (option != scope.option) continue;
+        const std::string studies = scope.studies;
+        const bool rotations = name == "rotations";
+        const bool applies = studies == "rotations"    ? rotations
+                             : studies == "registered" ? !rotations
+                                                       : name == studies || name == "all";
+        if (!applies) {
+            throw InputError("rotbeam study: --" + option + " does not apply to study '" + name +
+                             "' (only to " +
+                             (studies == "rotations"    ? std::string("rotations")
+                              : studies == "registered" ? std::string("every study but rotations")
+                                                        : studies + " and all") +
+                             ")");
+        }
     }
 }
 

@@ -31,6 +31,15 @@ void run_suite_studies(const StudyOptions& o, int jobs);
 void run_named_study(const std::string& name, const StudyOptions& o);
 // InputError unless `name` is a study of the registry or "all".
 void check_study_name(const std::string& name);
+// Every name `rotbeam study` takes: "rotations, convergence, …, all" (the registry's in report
+// order between them), for the top-level help and the unknown-study message.
+std::string study_name_list();
+// InputError (one line naming the option and the study) unless the option of `rotbeam study`
+// (without its dashes) applies to the study `name` ("rotations", a study of the registry or
+// "all"): --json and --samples are the rotation study's, --out and --quick the registry's,
+// --reduced-follower joined-beam-dynamics's; the others apply everywhere or are checked where
+// they are read (--shard, --jobs, --timings: distributed.hpp).
+void check_study_option(const std::string& name, const std::string& option);
 // Runs one study of the registry whole into o.out_dir and prints its time.
 void run_study_whole(const std::string& name, const StudyOptions& o);
 

@@ -171,6 +171,13 @@ nlohmann::json convergence_case(const StudyOptions& o, const ConvergenceCase& c,
                                      {"order_tail", tail},
                                      {"fit_floor", floor},
                                      {"note", note}});
+            // The element order of each point, where the formulation has one (the mixed elements
+            // have their own, fixed): what the page's header names is checked against it.
+            if (comb.formulation == Formulation::displacement) {
+                out["series"].back()["orders"] = std::vector<int>(
+                    r.orders.begin(),
+                    r.orders.begin() + static_cast<std::ptrdiff_t>(s.elements.size()));
+            }
             md << "| " << c.key << " | " << s.label << " | "
                << (s.error.empty() ? "—" : sci(s.error.front()) + " → " + sci(s.error.back()))
                << " | " << sci(floor, 1) << " | " << order_text(ls) << " | " << order_text(tail)

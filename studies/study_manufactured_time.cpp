@@ -163,9 +163,10 @@ nlohmann::json time_case(const StudyOptions& o, const TimeSeries& t, std::ostrin
         }
         eu_last = b.error_u;
         eR_last = b.error_R;
+        // "?" (gnuplot's missing value) for the forces the displacement formulation has not.
         data << dt << " " << a.steps << " " << a.wall_seconds << " " << a.error_u << " "
              << a.error_R << " " << d.u << " " << d.R << " " << d.velocity << " "
-             << (components == 4 ? sci(d.forces, 6) : std::string("NaN")) << "\n";
+             << (components == 4 ? sci(d.forces, 6) : std::string("?")) << "\n";
     }
     // fit_order takes mesh sizes n (error ∝ n^−q); a step size is 1/n.
     std::vector<double> inv;
@@ -339,8 +340,9 @@ nlohmann::json semi_discrete_case(const StudyOptions& o, const MotionRunSpec& sp
     md << order_cell(q, components) << " | " << markdown_cell(r.note) << " |\n";
     for (size_t i = 0; i < r.dt.size(); ++i) {
         const ComponentDifferences& e = r.error[i];
+        // "?" (gnuplot's missing value) for the forces the displacement formulation has not.
         data << r.dt[i] << " " << e.u << " " << e.R << " " << e.velocity << " "
-             << (components == 4 ? sci(e.forces, 6) : std::string("NaN")) << "\n";
+             << (components == 4 ? sci(e.forces, 6) : std::string("?")) << "\n";
     }
     if (!r.dt.empty()) {
         const std::string f = "data/manufactured_semi_discrete_" + file_label(label) + ".dat";

@@ -528,6 +528,11 @@ int command_study(const Args& args) {
         std::cout << help_text(spec);
         return 0;
     }
+    // An unknown study first, then an option that does not apply to it.
+    if (a.positional[0] != "rotations") check_study_name(a.positional[0]);
+    for (const OptionSpec& option : spec.options) {
+        if (a.has(option.name)) check_study_option(a.positional[0], option.name);
+    }
     {
         Job job;
         job.command = "study";

@@ -17,6 +17,7 @@
 #include "dependency_versions.hpp"
 #include "distribution/distributed.hpp"
 #include "distribution/ranks.hpp"
+#include "distribution/study_registry.hpp"
 #include "interrupt.hpp"
 #include "runs/timing.hpp"
 
@@ -27,9 +28,9 @@ using rotbeam::cli::Command;
 
 int command_completion(const rotbeam::cli::Args& args);
 
-const std::map<std::string, std::pair<Command, const char*>>& commands() {
+const std::map<std::string, std::pair<Command, std::string>>& commands() {
     using namespace rotbeam::cli;
-    static const std::map<std::string, std::pair<Command, const char*>> table = {
+    static const std::map<std::string, std::pair<Command, std::string>> table = {
         {"list", {command_list, "list cases, parameterizations and formulations"}},
         {"check", {command_check, "validate a case file and describe the model"}},
         {"import", {command_import, "translate a BeamDyn input deck into a case file"}},
@@ -40,10 +41,7 @@ const std::map<std::string, std::pair<Command, const char*>>& commands() {
         {"sweep", {command_sweep, "run a sweep file: cases × combinations × ranges of case keys"}},
         {"verify", {command_verify, "compare against published numbers (exit 1 on a miss)"}},
         {"reference", {command_reference, "continuum reference solution of a static case"}},
-        {"study",
-         {command_study,
-          "run a study (rotations, convergence, singularity, extremes, speed-accuracy, "
-          "joined-beam-modal, joined-beam-dynamics)"}},
+        {"study", {command_study, "run a study (" + study_name_list() + ")"}},
         {"bench", {command_bench, "time-to-solution benchmark (static and joined-beam targets)"}},
         {"completion", {command_completion, "print the bash completion script"}},
     };

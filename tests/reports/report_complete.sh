@@ -16,6 +16,14 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 [ -f "$suite/index.md" ] || fail "no quick suite in $suite (the fixture quick_suite failed?)"
 python3 "$here/check_report.py" "$suite" || fail "the report is incomplete or inconsistent"
+# The convergence page's header naming an element order its study did not run (23: a valid order,
+# not among those its JSON records) fails the check on a copy of the report.
+cp -r "$suite" "$work/orders"
+sed -i 's/(2 elements, orders [0-9]*/(2 elements, orders 23/' "$work/orders/study-convergence.md"
+python3 "$here/check_report.py" "$work/orders" >"$work/out" &&
+    fail "a header naming an order the study did not run passed the check"
+grep -q "study-convergence.md: 'orders 23, .*element order 23 outside the orders the study ran" "$work/out" ||
+    fail "no line naming the order the study did not run: $(head -3 "$work/out")"
 
 # Without gnuplot the study stops with one message naming the figure, and writes no page.
 PATH=/nonexistent "$rotbeam" study extremes --quick --out "$work/nognuplot" >"$work/out" 2>"$work/err"

@@ -56,6 +56,25 @@ studies=$(sed -n 's/.*(available: \(.*\))$/\1/p' "$work/err" | tr -d ,)
 for name in $studies; do
     grep -q "\`$name\`" "$work/help" || fail "study --help does not list the study $name"
 done
+# So does the line of `study` in the top-level help (the same list, from the registry).
+"$rotbeam" --help >"$work/top" || fail "rotbeam --help: exit $?"
+listed=$(sed -n 's/^  study  *run a study (\(.*\))$/\1/p' "$work/top" | tr -d ,)
+[ "$listed" = "$(echo $studies)" ] ||
+    fail "rotbeam --help's study line lists '$listed', rotbeam study takes '$(echo $studies)'"
+# An option of `study` that does not apply to the study named is refused: exit 2, one line naming
+# the option and the study, nothing run or written (the timeout: without the refusal, the study
+# would run).
+for refused in "convergence --samples 5" "singularity --json $work/never.json" "rotations --quick" \
+    "rotations --out $work/never" "extremes --reduced-follower"; do
+    read -r -a words <<<"$refused"
+    timeout 20 "$rotbeam" study "${words[@]}" >"$work/out" 2>"$work/err"
+    code=$?
+    [ $code -eq 2 ] || fail "study $refused: exit $code, expected 2"
+    [ "$(wc -l <"$work/err")" -eq 1 ] && grep -qF -- "rotbeam study: ${words[1]} does not apply to study '${words[0]}'" "$work/err" ||
+        fail "study $refused: '$(cat "$work/err")'"
+    [ -s "$work/out" ] && fail "study $refused printed $(head -1 "$work/out")"
+done
+[ -e "$work/never" ] || [ -e "$work/never.json" ] && fail "a refused study wrote its output"
 
 # Every JSON file carries the schema version --version names: a run's result and verify's table.
 schema=$(sed -n 's/.*(JSON schema_version \([0-9]*\)).*/\1/p' "$work/version")

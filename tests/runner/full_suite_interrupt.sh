@@ -9,7 +9,7 @@
 # (docs/durability.md, "What is tested").
 # Usage: full_suite_interrupt.sh ROTBEAM COMPARE_RESULTS_PY
 set -u
-# rotbeam, compare; work, fail and failures; complete_files and limited.
+# rotbeam, compare; work, fail and failures; complete_files and full_disk.
 . "$(dirname "$0")/results_check.sh" "$1" "$2"
 # Background jobs in their own process group: a non-interactive shell would otherwise start
 # them with SIGINT ignored, which rotbeam (rightly) leaves ignored.
@@ -39,14 +39,8 @@ for stop in INT:2 KILL:4 TERM:6; do
 done
 
 dir="$work/full"
-limited 1 "$work/err.txt" "$rotbeam" suite --no-studies --jobs 2 --out "$dir"
-code=$?
-last=$(tail -1 "$work/err.txt")
-[ $code -eq 4 ] || fail "ulimit -f 1: exit $code, expected 4: $last"
-grep -q "^rotbeam: $dir/.*: write failed, nothing written: file too large" <<<"$last" ||
-    fail "ulimit -f 1: the last line does not name the file and the limit: $last"
-complete_files "$dir" "the whole suite under ulimit -f 1"
-echo "ulimit -f 1: exit $code: ${last#rotbeam: $dir/}"
+full_disk 1 "$dir" "the whole suite" "$rotbeam" suite --no-studies --jobs 2 --out "$dir"
+echo "ulimit -f 1: ${last#rotbeam: $dir/}"
 
 if [ $failures -ne 0 ]; then
     echo "$failures failure(s)"

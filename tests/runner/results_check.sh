@@ -1,7 +1,7 @@
 # Checks of rotbeam output folders shared by the suite tests (docs/durability.md), sourced as
 # `. results_check.sh ROTBEAM COMPARE_RESULTS_PY`: sets `rotbeam` and `compare`
 # (scripts/compare-results.py), brings scratch.sh's set-up (work, fail, failures) and defines
-# `same`, `complete_files` and `limited`.
+# `same`, `complete_files`, `limited` and `full_disk`.
 rotbeam=$1
 compare=$2
 . "$(dirname "${BASH_SOURCE[0]}")/scratch.sh"
@@ -62,4 +62,19 @@ for b in bad[:5]:
 sys.exit(1 if bad else 0)
 PY
     if find "$1" -type f -empty | grep -q .; then fail "$2: an empty file"; fi
+}
+
+# full_disk KIB DIR WHAT COMMAND...: COMMAND, which writes into DIR, under a file size limit of KIB
+# KiB must exit 4 with its last line naming a file of DIR and the limit, and leave only complete
+# files; sets `last` (that line) for the caller's further checks.
+full_disk() {
+    local kib=$1 dir=$2 what=$3 code
+    shift 3
+    limited "$kib" "$work/err.txt" "$@"
+    code=$?
+    last=$(tail -1 "$work/err.txt")
+    [ $code -eq 4 ] || fail "$what under ulimit -f $kib: exit $code, expected 4: $last"
+    grep -q "^rotbeam: $dir/.*: write failed, nothing written: file too large" <<<"$last" ||
+        fail "$what under ulimit -f $kib: the last line does not name the file and the limit: $last"
+    complete_files "$dir" "$what under ulimit -f $kib"
 }

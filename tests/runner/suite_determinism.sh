@@ -80,3 +80,11 @@ if [ $failures -ne 0 ]; then
 fi
 echo "suite ${suite_options[*]:-(whole)}: stopped 3 times and resumed with --jobs 1 = uninterrupted --jobs 2" \
     "($(find "$dir" -type f | wc -l) files compared)"
+
+# The whole suite's report, not only the quick one, is complete and consistent: every linked file
+# exists, every table's numbers parse, no NaN or absurd value in its results and data files
+# (tests/reports/check_report.py, which test_report_complete runs on the quick suite's report).
+for d in "$work/jobs2" "$dir"; do
+    python3 "$(dirname "$0")/../reports/check_report.py" "$d" ||
+        { echo "FAIL: the whole suite's report in $(basename "$d") is incomplete or inconsistent"; exit 1; }
+done
