@@ -10,6 +10,7 @@
 #include "cases/loader/file_name_part.hpp"
 #include "cases/loader/yaml_file.hpp"
 #include "core/errors.hpp"
+#include "tests/cases/input_error.hpp"
 
 using namespace rotbeam;
 
@@ -27,16 +28,7 @@ const std::string kUnnamed =
     "loads: {tip-force: {point: tip, force: [0, 0, 1]}}\n"
     "analysis: {type: static, load_factors: [1.0]}\n";
 
-// The message of the InputError thrown by `f` (empty when none is thrown).
-template <class F>
-std::string refusal(F f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::input_error;
 
 bool starts_with(const std::string& text, const std::string& prefix) {
     return text.rfind(prefix, 0) == 0;
@@ -90,18 +82,20 @@ BOOST_AUTO_TEST_CASE(utf8_is_checked_against_the_table_of_rfc_3629) {
 // and only then: an explicit start and end of the one document are fine.
 BOOST_AUTO_TEST_CASE(a_second_yaml_document_is_refused_with_its_line) {
     const std::string second = ": (yaml): a second YAML document starts here";
-    BOOST_TEST(starts_with(refusal([&] { load_case_text(kUnnamed + "---\n", "t.yaml"); }),
+    BOOST_TEST(starts_with(input_error([&] { load_case_text(kUnnamed + "---\n", "t.yaml"); }),
                            "t.yaml:7" + second));
     BOOST_TEST(starts_with(
-        refusal([&] { load_case_text(kUnnamed + "...\n# note\n---\n{a: 1}\n", "t.yaml"); }),
+        input_error([&] { load_case_text(kUnnamed + "...\n# note\n---\n{a: 1}\n", "t.yaml"); }),
         "t.yaml:9" + second));
     const std::string flow = "{points: {root: [0, 0, 0], tip: [10, 0, 0]}}\nsections: {}\n";
-    BOOST_TEST(starts_with(refusal([&] { load_case_text(flow, "t.yaml"); }), "t.yaml:2" + second));
     BOOST_TEST(
-        refusal([&] { load_case_text("---\n" + kUnnamed + "...\n# end\n", "t.yaml"); }).empty());
+        starts_with(input_error([&] { load_case_text(flow, "t.yaml"); }), "t.yaml:2" + second));
+    BOOST_TEST(input_error([&] {
+                   load_case_text("---\n" + kUnnamed + "...\n# end\n", "t.yaml");
+               }).empty());
     // A --set value is one document too.
     const std::string value =
-        refusal([&] { load_case(kMoment, {"description=first\n---\nsecond"}); });
+        input_error([&] { load_case(kMoment, {"description=first\n---\nsecond"}); });
     BOOST_TEST(starts_with(value, kMoment + ":--set: description: the value: a second YAML "
                                             "document starts here; a --set value holds one "
                                             "document"),
@@ -111,14 +105,15 @@ BOOST_AUTO_TEST_CASE(a_second_yaml_document_is_refused_with_its_line) {
 // A value from --set is reported at `:--set:`, a list item too (the tree's marks of a value
 // parsed from the command line are those of its own one-line text, not of the file).
 BOOST_AUTO_TEST_CASE(a_bad_list_item_from_set_is_reported_at_set) {
-    const std::string list = refusal([&] { load_case(kMoment, {"analysis.load_factors=[nan]"}); });
+    const std::string list =
+        input_error([&] { load_case(kMoment, {"analysis.load_factors=[nan]"}); });
     BOOST_TEST(starts_with(list, kMoment + ":--set: analysis.load_factors[0]: "), list);
-    const std::string item = refusal([&] { load_case(kMoment, {"points.tip.1=.nan"}); });
+    const std::string item = input_error([&] { load_case(kMoment, {"points.tip.1=.nan"}); });
     BOOST_TEST(starts_with(item, kMoment + ":--set: points.tip[1]: must be finite"), item);
     // An item of the file keeps its line.
     std::string text = kUnnamed;
     text.replace(text.find("[1.0]"), 5, "[1.0, nan]");
-    const std::string file = refusal([&] { load_case_text(text, "t.yaml"); });
+    const std::string file = input_error([&] { load_case_text(text, "t.yaml"); });
     BOOST_TEST(starts_with(file, "t.yaml:6: analysis.load_factors[1]: "), file);
 }
 
@@ -147,14 +142,14 @@ BOOST_AUTO_TEST_CASE(a_file_name_part_has_a_documented_character_set_and_length)
 // The name names the run's files (`OUT/NAME_ROTATION_FORMULATION.json`): from the file, from
 // --set, or from the file's own name when it has none, it is checked the same way.
 BOOST_AUTO_TEST_CASE(the_case_name_is_a_file_name_part_wherever_it_comes_from) {
-    const std::string set = refusal([&] { load_case(kMoment, {"name=../../etc/x"}); });
+    const std::string set = input_error([&] { load_case(kMoment, {"name=../../etc/x"}); });
     BOOST_TEST(starts_with(set, kMoment + ":--set: name: '../../etc/x' cannot be part of a file "
                                           "name: it holds '/'"),
                set);
-    BOOST_TEST(refusal([&] { load_case(kMoment, {"name=beam-2.v1"}); }).empty());
+    BOOST_TEST(input_error([&] { load_case(kMoment, {"name=beam-2.v1"}); }).empty());
     BOOST_TEST(load_case(kMoment, {"name=beam-2.v1"}).name == "beam-2.v1");
     BOOST_TEST(load_case_text(kUnnamed, "dir/my-beam.yaml").name == "my-beam");
-    const std::string stem = refusal([&] { load_case_text(kUnnamed, "dir/my beam.yaml"); });
+    const std::string stem = input_error([&] { load_case_text(kUnnamed, "dir/my beam.yaml"); });
     BOOST_TEST(starts_with(stem,
                            "dir/my beam.yaml:1: name: missing, so the case is named after "
                            "its file, but 'my beam' cannot be part of a file name"),
