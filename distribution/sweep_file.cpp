@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cases/loader/case_loader.hpp"
+#include "cases/loader/file_name_part.hpp"
 #include "cases/loader/limits.hpp"
 #include "cases/loader/yaml_file.hpp"
 #include "cases/loader/yaml_reader.hpp"
@@ -71,6 +72,14 @@ void expect_keys(const Where& w, const YAML::Node& map, const std::string& key,
                    "unknown key" + (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
         }
     }
+}
+
+// A value that names files or a folder (cases/loader/file_name_part.hpp).
+std::string file_name_part(const Where& w, const YAML::Node& node, const std::string& key) {
+    if (!node.IsScalar()) w.fail(node, key, "expected a name");
+    const std::string problem = cases::file_name_part_problem(node.Scalar());
+    if (!problem.empty()) w.fail(node, key, problem);
+    return node.Scalar();
 }
 
 // The items of a scalar (one) or a list; anything else is refused as not `expected`.
@@ -293,7 +302,10 @@ std::vector<CaseEntry> read_cases(const Where& w, const YAML::Node& root,
         for (const CaseEntry& c : cases) {
             if (c.path == path) w.fail(n, "cases", "'" + arg + "' listed twice");
         }
-        std::string name = fs::path(arg).stem().string();
+        // The stem names the case's run files.
+        const std::string name = fs::path(arg).stem().string();
+        if (const std::string problem = cases::file_name_part_problem(name); !problem.empty())
+            w.fail(n, "cases", "the case's file name " + problem);
         cases.push_back({name, path, n});
     }
     return cases;
@@ -476,12 +488,7 @@ Sweep read_sweep_text(const std::string& text, const std::string& file,
     Sweep sweep;
     sweep.file = file;
     if (!root["name"]) w.fail(root, "name", "missing required key");
-    sweep.name = root["name"].IsScalar() ? root["name"].Scalar() : "";
-    if (sweep.name.empty() || sweep.name.size() > 64 ||
-        sweep.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_") !=
-            std::string::npos) {
-        w.fail(root["name"], "name", "expected 1 to 64 of a-z, 0-9, '-', '_'");
-    }
+    sweep.name = file_name_part(w, root["name"], "name");
     sweep.folder = "sweep-" + sweep.name;
     if (const YAML::Node c = root["combine"]) {
         const std::vector<std::string> choices = {"product", "zip"};
@@ -491,9 +498,7 @@ Sweep read_sweep_text(const std::string& text, const std::string& file,
     if (const YAML::Node o = root["output"]) {
         expect_keys(w, o, "output", {"folder", "steps"});
         if (o["folder"]) {
-            if (!o["folder"].IsScalar() || o["folder"].Scalar().empty())
-                w.fail(o["folder"], "output.folder", "expected a folder name");
-            sweep.folder = o["folder"].Scalar();
+            sweep.folder = file_name_part(w, o["folder"], "output.folder");
         }
         if (o["steps"]) {
             if (!o["steps"].IsScalar()) w.fail(o["steps"], "output.steps", "expected last or all");

@@ -10,6 +10,7 @@
 
 #include "cases/loader/beamdyn_import.hpp"
 #include "cases/loader/deck_case.hpp"
+#include "cases/loader/file_name_part.hpp"
 #include "cases/loader/limits.hpp"
 #include "cases/loader/model_builder.hpp"
 #include "cases/loader/yaml_file.hpp"
@@ -60,7 +61,9 @@ YAML::Node override_value(const std::string& value_text, const std::string& path
     }
     try {
         cases::check_yaml_shape(value_text, "");
-        return YAML::Load(value_text);
+        const YAML::Node value = YAML::Load(value_text);
+        cases::check_one_document(value_text, value, "", "--set value");
+        return value;
     } catch (const YAML::Exception& e) {
         override_error(file, path, "the value is not valid YAML (" + e.msg + ")");
     } catch (const InputError& e) {
@@ -227,14 +230,31 @@ void read_rotating_frame(const YamlReader& r, const YAML::Node& root, Model& mod
     if (!f.active()) return;
 }
 
+// The case's name (else its file's stem) names the run's output files (file_name_part.hpp).
+void read_case_name(const YamlReader& r, const YAML::Node& root, const std::string& file,
+                    Model& model) {
+    if (const YAML::Node n = root["name"]) {
+        model.name = r.string(n, "name");
+        const std::string problem = cases::file_name_part_problem(model.name);
+        if (!problem.empty()) r.fail(n, "name", problem + "; the case name names its output files");
+        return;
+    }
+    model.name = std::filesystem::path(file).stem().string();
+    const std::string problem = cases::file_name_part_problem(model.name);
+    if (!problem.empty()) {
+        r.fail(root, "name",
+               "missing, so the case is named after its file, but " + problem +
+                   "; the case name names its output files: give one (name: ...)");
+    }
+}
+
 Model build(const YamlReader& r, const YAML::Node& root, const std::string& file) {
     r.expect_map(root, "",
                  {"name", "description", "units", "points", "sections", "members", "constraints",
                   "loads", "gravity", "rotating_frame", "analysis", "discretization", "solver",
                   "references", "expected_stops"});
     Model model;
-    model.name =
-        root["name"] ? r.string(root["name"], "name") : std::filesystem::path(file).stem().string();
+    read_case_name(r, root, file, model);
     if (root["description"]) model.description = r.string(root["description"], "description");
     if (root["units"]) model.units = r.string(root["units"], "units");
     cases::read_points(r, root, model);

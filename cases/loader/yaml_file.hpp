@@ -24,6 +24,12 @@ inline constexpr YamlFileKind kCaseFile{"case file", "sections (points, members,
 // line ends, or a malformed UTF-8 sequence), or npos.
 size_t first_non_text_byte(const std::string& text);
 
+// Throws InputError `FILE:LINE: (yaml): a second YAML document starts here; a WHAT holds one
+// document` when `text`, whose first document yaml-cpp loaded as `first`, holds another (`---`
+// then anything, even nothing).
+void check_one_document(const std::string& text, const YAML::Node& first, const std::string& file,
+                        const std::string& what);
+
 // The tree of `text` (named `file` in messages): a mapping, or InputError.
 YAML::Node parse_yaml_file(const std::string& text, const std::string& file,
                            const YamlFileKind& kind);

@@ -51,8 +51,17 @@ std::string quoted(const std::string& text) {
 }  // namespace
 
 bool YamlReader::overridden(const std::string& key) const {
+    // `--set` addresses a list item as a segment (`points.tip.0`), a message as `points.tip[0]`.
+    std::string path;
+    for (const char c : key) {
+        if (c == '[') {
+            path += '.';
+        } else if (c != ']') {
+            path += c;
+        }
+    }
     for (const std::string& o : overridden_) {
-        if (key == o || key.rfind(o + ".", 0) == 0) return true;
+        if (path == o || path.rfind(o + ".", 0) == 0) return true;
     }
     return false;
 }

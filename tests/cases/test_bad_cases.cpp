@@ -117,6 +117,27 @@ BOOST_AUTO_TEST_CASE(each_size_limit_is_inclusive) {
             BOOST_CHECK_THROW(load_case(path, {key + "=" + std::to_string(limit + 1)}), InputError);
         }
     }
+    // analysis.load_factors limits a list's length: kMaxLoadFactors increasing factors are
+    // accepted, one more is refused by that limit (not by the sub-step product, which with one
+    // sub-step per factor stays far below its own).
+    const auto factors = [](long count) {
+        std::string list = "analysis.load_factors=[";
+        for (long i = 1; i <= count; ++i) {
+            if (i > 1) list += ',';
+            list += std::to_string(i);
+        }
+        return list + "]";
+    };
+    BOOST_CHECK_NO_THROW(load_case(path, {factors(cases::kMaxLoadFactors)}));
+    try {
+        load_case(path, {factors(cases::kMaxLoadFactors + 1)});
+        BOOST_FAIL("one load factor past the limit accepted");
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        BOOST_TEST(m.find(":--set: analysis.load_factors: has 10001 entries, more than 10000") !=
+                       std::string::npos,
+                   m);
+    }
     // refine belongs to the trapezoidal rule: its limit is checked with it.
     const std::string trapezoidal = "discretization.quadrature=trapezoidal";
     const std::string refine = "discretization.refine=";

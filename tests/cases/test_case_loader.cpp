@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "core/geometry.hpp"
 #include "parameterizations/registry.hpp"
+#include "tests/cases/input_error.hpp"
 
 using namespace rotbeam;
 
@@ -20,16 +21,7 @@ std::string case_path(const std::string& name) {
     return std::string(ROTBEAM_SOURCE_DIR) + "/cases/" + name + ".yaml";
 }
 
-// The message of the InputError thrown by `f` (empty when none is thrown).
-template <class F>
-std::string input_error(F f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::input_error;
 
 const ReferenceValue& reference(const Model& m, const std::string& id) {
     const auto it = std::find_if(m.references.begin(), m.references.end(),

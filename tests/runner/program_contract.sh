@@ -93,6 +93,21 @@ expect_bad_value "--set recursive alias" "the value: alias *a is inside the node
     check cantilever-moment --set 'points.tip=&a [*a]'
 expect_bad_value "--set '*' on a value" "'*' must stand for the keys of an existing mapping" \
     check cantilever-moment --set 'gravity.*.x=1'
+# A bad item of a list given with --set is named at `:--set:`, not at a line of the file.
+expect_bad_value "--set list item" ":--set: analysis.load_factors[0]: " \
+    check cantilever-moment --set 'analysis.load_factors=[nan]'
+# The case name becomes part of the output files' names (docs/case-format.md, Top level): a name
+# that would leave --out, hide the file or name nothing is refused by check and by run, and
+# nothing is written.
+mkdir -p "$work/names/out"
+for n in ../../escaped '""' 'beam 1/2' .hidden; do
+    expect_bad_value "check --set name=$n" ":--set: name: " check cantilever-moment --set "name=$n"
+    grep -qF "cannot be part of a file name" "$work/err" || fail "name=$n: $(cat "$work/err")"
+    expect_bad_value "run --set name=$n" ":--set: name: " run cantilever-moment --set "name=$n" \
+        --estimate off --quiet --out "$work/names/out"
+done
+[ -z "$(find "$work/names" "$work" -maxdepth 1 -name '*escaped*')" ] &&
+    [ -z "$(ls -A "$work/names/out")" ] || fail "a refused case name wrote files"
 for v in 0 -1 abc 1.5 99999999999 nan 257; do
     expect_bad_value "suite --jobs $v" "--jobs: expected an integer from 1 to 256, got '$v'" \
         suite --jobs "$v" --out "$work/never"
