@@ -250,7 +250,8 @@ bool make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
     const auto start = std::chrono::steady_clock::now();
     switch (u.kind) {
         case Unit::Kind::case_run: {
-            const PlannedRun& run = plan.case_runs[u.plan];
+            PlannedRun run = plan.case_runs[u.plan];
+            run.time_limit_seconds = s.time_limit;
             if (!s.force && up_to_date(run)) return false;
             write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
             return true;

@@ -68,6 +68,7 @@ struct ShardSettings {
     int jobs = 1;
     bool force = false;                // make every unit again
     std::vector<std::string> timings;  // folders with earlier results whose times balance
+    double time_limit = 0.0;           // each case run's wall-clock limit, seconds (0: none)
 };
 
 // Makes the units of shard I/N of the job into settings.dir (resuming: units whose file is valid

@@ -114,13 +114,25 @@ double run_cost(const PlannedRun& run) {
     }
 }
 
+// Whether the result, or a run inside it (a companion of its estimate, an attempt of accuracy
+// control), has the status `time-limit`: an answer cut short, not a result of its inputs.
+bool stopped_by_time_limit(const nlohmann::json& j) {
+    if (j.is_object()) {
+        const auto status = j.find("status");
+        if (status != j.end() && *status == "time-limit") return true;
+    }
+    if (!j.is_object() && !j.is_array()) return false;
+    return std::any_of(j.begin(), j.end(),
+                       [](const nlohmann::json& item) { return stopped_by_time_limit(item); });
+}
+
 }  // namespace
 
 bool up_to_date(const PlannedRun& run) {
     if (!fs::exists(run.output)) return false;
     try {
         const nlohmann::json j = nlohmann::json::parse(read_text_file(run.output));
-        return j.value("input_key", "") == run.key;
+        return j.value("input_key", "") == run.key && !stopped_by_time_limit(j);
     } catch (const std::exception&) {
         return false;  // a damaged file is simply run again
     }
@@ -182,7 +194,7 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
         const bool estimate = run.estimate && model.analysis.estimate;
         // The run's solved path: its estimate's companions start from it (add_run_estimate).
         SolvedPath solved;
-        RunRequest request{run.case_path, model};
+        RunRequest request{run.case_path, model, false, run.time_limit_seconds};
         if (run.as_run && model.analysis.accuracy > 0.0) return run_to_accuracy(request);
         if (estimate) request.path = &solved;
         nlohmann::json result = run_case(request);

@@ -23,6 +23,9 @@ struct PlannedRun {
     // states one.
     bool as_run = false;
     double modelled_seconds = 0.0;  // expected run time by the cost model (run_cost.hpp)
+    // Wall-clock limit of the run, seconds (0: none; `--time-limit`): not an input of its result,
+    // so not in its key; a run it stopped (status time-limit) is made again on a rerun.
+    double time_limit_seconds = 0.0;
 };
 
 // The whole file as text ("" when it cannot be read).
@@ -37,7 +40,7 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
                                   bool estimate);
 
 // The run's result file exists, parses, and carries the run's input key (same case text, settings
-// and rotbeam version): resuming skips it.
+// and rotbeam version), and the run was not stopped by a time limit: resuming skips it.
 bool up_to_date(const PlannedRun& run);
 
 // Makes the run (the code path of `rotbeam run`, its estimate included); a combination that does

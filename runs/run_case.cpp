@@ -10,6 +10,7 @@
 #include "combinations/registry.hpp"
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
+#include "core/non_finite.hpp"
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/static_stability.hpp"
@@ -286,11 +287,11 @@ nlohmann::json run_case(const RunRequest& request) {
     }
     result["wall_seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!all_finite(result)) {
-        // A result never prints NaN: drop the numbers, say what happened.
+    if (const std::string where = first_non_finite(result); !where.empty()) {
+        // A result never prints NaN: drop the numbers, say what happened and where it showed.
         result["status"] = "error";
-        result["message"] =
-            "non-finite values in the solution (" + result["message"].get<std::string>() + ")";
+        result["message"] = "non-finite values in the solution, first at " + where + " (" +
+                            result["message"].get<std::string>() + ")";
         result["steps"] = nlohmann::json::array();
     }
     return result;

@@ -18,6 +18,11 @@ Integers and strings (statuses, iteration and step counts) must still be equal. 
 that a restructuring changed no result beyond round-off; the largest relative difference found is
 printed.
 
+A run stopped by its wall-clock limit (`--time-limit`: the status `time-limit` in the run's file,
+at its top or in a run inside it, such as a companion of its estimate) depends on the machine's
+speed, not on its inputs: such a file is left out of the comparison when either folder's copy is
+one (it must still exist in both), and the output names how many were left out.
+
 Exit 0 when identical, 1 with one line per difference (at most 40) otherwise.
 """
 import json
@@ -46,6 +51,18 @@ EXCLUDED = {
 }
 
 TEMPORARY_MARKER = ".rotbeam-tmp."
+TIME_LIMIT_STATUS = "time-limit"
+
+
+def stopped_by_time_limit(value):
+    """Whether the document, or a run inside it, has the status time-limit."""
+    if isinstance(value, dict):
+        if value.get("status") == TIME_LIMIT_STATUS:
+            return True
+        return any(stopped_by_time_limit(v) for v in value.values())
+    if isinstance(value, list):
+        return any(stopped_by_time_limit(v) for v in value)
+    return False
 
 
 def strip(value):
@@ -137,6 +154,7 @@ def main():
         elif name not in a_files or name not in b_files:
             problems.append(f"{name}: only in {a_root if name in a_files else b_root}")
     compared = 0
+    time_limited = []
     for name in sorted(a_files & b_files):
         if not name.endswith(".json") or TEMPORARY_MARKER in name:
             continue
@@ -144,10 +162,17 @@ def main():
         b = load(os.path.join(b_root, name), problems)
         if a is None or b is None:
             continue
+        if stopped_by_time_limit(a) or stopped_by_time_limit(b):
+            time_limited.append(name)
+            continue
         compared += 1
         d = first_difference(strip(a), strip(b), "")
         if d:
             problems.append(f"{name}: {d}")
+    if time_limited:
+        shown = ", ".join(time_limited[:5]) + (", ..." if len(time_limited) > 5 else "")
+        print(f"left out {len(time_limited)} JSON file(s) of runs stopped by the time limit "
+              f"(status {TIME_LIMIT_STATUS}): {shown}")
     for p in problems[:40]:
         print(p)
     if problems:

@@ -260,6 +260,7 @@ Model build(const YamlReader& r, const YAML::Node& root, const std::string& file
     cases::read_points(r, root, model);
     const cases::SectionTable sections = cases::read_sections(r, root);
     cases::read_members(r, root, sections, model);
+    cases::check_distinct_points(r, root, model);
     cases::read_constraints(r, root, model);
     cases::read_loads(r, root, model);
     if (root["gravity"]) model.gravity = r.vec3(root["gravity"], "gravity");

@@ -21,6 +21,13 @@ std::vector<std::string> point_names(const Model& model);
 SectionTable read_sections(const YamlReader& r, const YAML::Node& root);
 void read_members(const YamlReader& r, const YAML::Node& root, const SectionTable& sections,
                   Model& model);
+// Geometry that double arithmetic resolves (geometry_checks.cpp, docs/case-format.md): the
+// problem with a member of `length` whose elements are too short to compute with, else empty;
+// the distance between its end points (a straight member's length, computed without underflow).
+std::string element_length_problem(const Model& model, const Member& member, double length);
+double chord_length(const Model& model, const Member& member);
+// No two points closer than such an element: one place has one name.
+void check_distinct_points(const YamlReader& r, const YAML::Node& root, const Model& model);
 void read_constraints(const YamlReader& r, const YAML::Node& root, Model& model);
 void read_loads(const YamlReader& r, const YAML::Node& root, Model& model);
 TimeFunction read_time_function(const YamlReader& r, const YAML::Node& node,

@@ -356,8 +356,17 @@ void read_members(const YamlReader& r, const YAML::Node& root, const SectionTabl
         const std::string name = item.first.Scalar();
         const std::string key = "members." + name;
         model.members.push_back(read_member(r, item.second, key, name, sections, model));
-        // The geometry refuses coincident ends, inconsistent arcs, coincident key points.
+        // The geometry refuses coincident ends, inconsistent arcs, coincident key points;
+        // elements too short for double arithmetic are refused with their length (a straight
+        // member's before the geometry divides by it).
         try {
+            const Member& member = model.members.back();
+            if (member.line.kind == LineKind::straight ||
+                (member.line.kind == LineKind::keypoints && member.line.keypoints.empty())) {
+                const double chord = chord_length(model, member);
+                const std::string problem = element_length_problem(model, member, chord);
+                if (chord > 0.0 && !problem.empty()) throw InputError(problem);
+            }
             const ReferenceGeometry g(model, static_cast<int>(model.members.size()) - 1);
             // Coordinates so large (or a member so long) that the length, the frame or the
             // curvature overflow would reach the solver as NaN: refused here, with the length.
@@ -374,6 +383,8 @@ void read_members(const YamlReader& r, const YAML::Node& root, const SectionTabl
                   << "): use units that keep coordinates well below 1e150";
                 throw InputError(m.str());
             }
+            const std::string problem = element_length_problem(model, member, g.length());
+            if (!problem.empty()) throw InputError(problem);
         } catch (const InputError& e) {
             const YAML::Node line = item.second["line"];
             r.fail(line ? line : item.second, line ? key + ".line" : key, e.what());

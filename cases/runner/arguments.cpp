@@ -56,6 +56,16 @@ std::optional<double> ParsedArguments::positive_number(const std::string& comman
     return x;
 }
 
+const OptionSpec kTimeLimitOption{
+    "time-limit", "SECONDS",
+    "stop each run after this wall-clock time with the status time-limit; a stopped run keeps no "
+    "numbers, is made again on a rerun and is left out of scripts/compare-results.py (default: no "
+    "limit)"};
+
+double time_limit_option(const ParsedArguments& a, const std::string& command) {
+    return a.positive_number(command, "time-limit", kMaxTimeLimit).value_or(0.0);
+}
+
 namespace {
 
 const OptionSpec* find_option(const CommandSpec& spec, const std::string& name) {

@@ -16,7 +16,7 @@ namespace rotbeam::cli {
 inline constexpr int kMaxJobs = 256;       // suite --jobs: worker threads
 inline constexpr int kMaxRepeats = 1000;   // bench --repeats: timing repeats per measurement
 inline constexpr int kMaxSamples = 20000;  // study rotations --samples: angles in the sweep
-inline constexpr double kMaxTimeLimit = 604800.0;  // run --time-limit: seconds (a week)
+inline constexpr double kMaxTimeLimit = 604800.0;  // --time-limit: seconds (a week)
 
 struct OptionSpec {
     std::string name;        // without the leading "--"
@@ -64,6 +64,12 @@ std::string help_text(const CommandSpec& spec);
 // parsing, so the command stops there.
 struct SpecCaptured {};
 inline thread_local std::vector<CommandSpec>* spec_capture = nullptr;
+
+// --time-limit SECONDS of `run`, `suite` and `sweep`: the wall-clock limit of each run
+// (core/time_limit.hpp; docs/durability.md, "Time limit"), one option text for all three.
+extern const OptionSpec kTimeLimitOption;
+// Its value in seconds, 0 when not given; InputError naming `command` outside (0, kMaxTimeLimit].
+double time_limit_option(const ParsedArguments& a, const std::string& command);
 
 // The shorthand options of `run` and `check`: each stands for a --set override of one case key
 // (`*`: every member): {option without its dashes, key}.

@@ -401,9 +401,7 @@ int command_run(const Args& args) {
           "(docs/paraview-output.md; default: not written)"},
          {"quiet", "", "print nothing on success"},
          {"trace-newton", "", "print every Newton iteration and step cut to stderr"},
-         {"time-limit", "SECONDS",
-          "stop the run after this wall-clock time with the status time-limit (default: no "
-          "limit)"},
+         kTimeLimitOption,
          {"estimate", "on|off",
           "estimate the discretization error with companion runs (default: the case's "
           "analysis.estimate, on; docs/error-estimates.md)"},
@@ -425,7 +423,7 @@ int command_run(const Args& args) {
     // A run reads the case file alone: the published references beside a catalog case are for
     // check, verify and the suite (case_loader.hpp).
     const Model model = load_with_options(path, a, CaseParts::case_file);
-    const double limit = a.positive_number("run", "time-limit", kMaxTimeLimit).value_or(0.0);
+    const double limit = time_limit_option(a, "run");
     // --estimate overrides the case's analysis.estimate.
     const std::string estimate =
         a.value("estimate").value_or(model.analysis.estimate ? "on" : "off");

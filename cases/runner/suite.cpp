@@ -44,6 +44,7 @@ int command_suite(const Args& args) {
          {"estimate", "on|off",
           "every case run with its error estimate, companion runs that cost 2-8x the run; off "
           "for timing (default: on, or the case's analysis.estimate; docs/error-estimates.md)"},
+         kTimeLimitOption,
          {"shard", "I/N",
           "make only the I-th of N shards of the runs into --out, for `rotbeam merge` "
           "(default: every run, no shard; docs/distributed-runs.md)"},
@@ -59,6 +60,7 @@ int command_suite(const Args& args) {
     const std::string out = a.value("out").value_or("out");
     const int jobs = a.positive_int("suite", "jobs", kMaxJobs)
                          .value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const double time_limit = time_limit_option(a, "suite");
     const std::string glob = a.value("cases").value_or("*");
     const std::vector<std::string> catalog = catalog_cases();
     if (std::none_of(catalog.begin(), catalog.end(), [&](const std::string& name) {
@@ -81,12 +83,14 @@ int command_suite(const Args& args) {
     job.estimate = estimate == "on";
     if (const auto code = run_distributed(
             job, a.value("shard"),
-            ShardSettings{{}, out, jobs, a.has("force"), a.values("timings")}, a.has("jobs"))) {
+            ShardSettings{{}, out, jobs, a.has("force"), a.values("timings"), time_limit},
+            a.has("jobs"))) {
         return *code;
     }
     if (a.has("timings"))
         throw InputError("rotbeam suite: --timings: only with --shard I/N or under mpirun");
-    const std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"), estimate == "on");
+    std::vector<PlannedRun> runs = plan_runs(glob, out, a.has("quick"), estimate == "on");
+    for (PlannedRun& run : runs) run.time_limit_seconds = time_limit;
     std::cout << "rotbeam suite: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
     // A suite killed with SIGKILL in the middle of a write left a temporary (never a partial

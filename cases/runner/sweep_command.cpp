@@ -48,6 +48,7 @@ int command_sweep(const Args& args) {
          {"jobs", "N", "worker threads, 1 to 256 (default: all cores)"},
          {"force", "", "rerun everything"},
          {"list", "", "print the runs the file expands to and stop"},
+         kTimeLimitOption,
          {"shard", "I/N",
           "make only the I-th of N shards of the runs into --out, for `rotbeam merge` "
           "(default: every run, no shard; docs/distributed-runs.md)"},
@@ -62,6 +63,7 @@ int command_sweep(const Args& args) {
     }
     const int jobs = a.positive_int("sweep", "jobs", kMaxJobs)
                          .value_or(std::max(1u, std::thread::hardware_concurrency()));
+    const double time_limit = time_limit_option(a, "sweep");
     const Sweep sweep = read_sweep(a.positional[0]);
     const std::string out = a.value("out").value_or(sweep.folder);
     if (a.has("list")) {
@@ -74,12 +76,14 @@ int command_sweep(const Args& args) {
     job.sweep_key = sweep_file_key(job.sweep);
     if (const auto code = run_distributed(
             job, a.value("shard"),
-            ShardSettings{{}, out, jobs, a.has("force"), a.values("timings")}, a.has("jobs"))) {
+            ShardSettings{{}, out, jobs, a.has("force"), a.values("timings"), time_limit},
+            a.has("jobs"))) {
         return *code;
     }
     if (a.has("timings"))
         throw InputError("rotbeam sweep: --timings: only with --shard I/N or under mpirun");
-    const std::vector<PlannedRun> runs = plan_sweep_runs(sweep, out);
+    std::vector<PlannedRun> runs = plan_sweep_runs(sweep, out);
+    for (PlannedRun& run : runs) run.time_limit_seconds = time_limit;
     std::cout << "rotbeam sweep: " << runs.size() << " runs on " << jobs << " threads → " << out
               << "\n";
     fs::create_directories(fs::path(out) / "runs");

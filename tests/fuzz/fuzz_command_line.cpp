@@ -96,6 +96,7 @@ const std::map<std::string, CommandSpec>& specs() {
            {"studies", "", ""},
            {"no-studies", "", ""},
            {"estimate", "on|off", ""},
+           {"time-limit", "SECONDS", ""},
            {"shard", "I/N", ""},
            {"timings", "DIR", "", true}}}},
         {"sweep",
@@ -108,6 +109,7 @@ const std::map<std::string, CommandSpec>& specs() {
            {"jobs", "N", ""},
            {"force", "", ""},
            {"list", "", ""},
+           {"time-limit", "SECONDS", ""},
            {"shard", "I/N", ""},
            {"timings", "DIR", "", true}}}},
         {"merge", {"merge", "SHARD_DIR...", 1, -1, "", {{"out", "DIR", ""}}}},
@@ -163,7 +165,7 @@ void parse(const std::vector<std::string>& argv) {
     (void)a.positive_int("suite", "jobs", rotbeam::cli::kMaxJobs);
     (void)a.positive_int("bench", "repeats", rotbeam::cli::kMaxRepeats);
     (void)a.positive_int("study", "samples", rotbeam::cli::kMaxSamples, 2);
-    (void)a.positive_number("run", "time-limit", rotbeam::cli::kMaxTimeLimit);
+    (void)rotbeam::cli::time_limit_option(a, spec.name);
     if (const auto shard = a.value("shard")) (void)rotbeam::cli::parse_shard(spec.name, *shard);
     if (spec.name == "check" || spec.name == "run" || spec.name == "reference") {
         const rotbeam::Model model = rotbeam::load_case_text(
