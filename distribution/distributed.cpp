@@ -18,12 +18,25 @@
 #include "runs/catalog.hpp"
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
+#include "runs/run_file.hpp"
 
 namespace rotbeam::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+RunFileKind run_file_kind(const Unit& u) {
+    switch (u.kind) {
+        case Unit::Kind::case_run:
+            return RunFileKind::case_run;
+        case Unit::Kind::study_run:
+            return RunFileKind::study_run;
+        case Unit::Kind::whole_study:
+            return RunFileKind::whole_study;
+    }
+    return RunFileKind::case_run;
+}
 
 std::string case_text(const std::string& case_name) {
     try {
@@ -58,13 +71,12 @@ std::optional<double> measured_seconds(const std::vector<std::string>& folders, 
         const fs::path file = fs::path(folder) / u.file;
         if (!fs::exists(file)) continue;
         try {
-            const nlohmann::json j = nlohmann::json::parse(read_text_file(file.string()));
+            const nlohmann::json j = *read_run_file(file.string(), run_file_kind(u), std::nullopt);
             for (const char* key : {"wall_seconds", "seconds"}) {
-                if (j.contains(key) && j[key].is_number() && j[key].get<double>() >= 0.0)
-                    return j[key].get<double>();
+                if (j.contains(key) && j[key].get<double>() >= 0.0) return j[key].get<double>();
             }
-        } catch (const nlohmann::json::exception&) {
-            // an unreadable timing is no timing: the cost model stands in
+        } catch (const InputError&) {
+            // a damaged file's timing is no timing: the cost model stands in
         }
     }
     return std::nullopt;
@@ -208,33 +220,36 @@ bool inside_folder(const nlohmann::json& name) {
 UnitCheck check_unit(const std::string& dir, const Unit& u) {
     const fs::path file = fs::path(dir) / u.file;
     if (!fs::exists(file)) return {UnitState::absent, ""};
-    nlohmann::json j;
+    std::optional<nlohmann::json> read;
     try {
-        j = nlohmann::json::parse(read_text_file(file.string()));
-    } catch (const nlohmann::json::exception& e) {
-        return {UnitState::damaged, "not complete JSON (" + std::string(e.what()) + ")"};
+        read = read_run_file(file.string(), run_file_kind(u), u.key);
+    } catch (const InputError& e) {
+        return {UnitState::damaged, e.what()};
     }
-    if (!j.is_object() || !j.contains("input_key") || j["input_key"] != u.key) {
-        return {UnitState::damaged,
-                "made from other inputs or another rotbeam version (input_key is not the "
-                "plan's)"};
+    if (!read) {
+        return {UnitState::stale, file.string() +
+                                      ": input_key: made from other inputs or another rotbeam "
+                                      "version (not the plan's)"};
     }
-    if (u.kind == Unit::Kind::study_run && (!j.contains("result") || !j["result"].is_object()))
-        return {UnitState::damaged, "no result"};
+    const nlohmann::json& j = *read;
     if (u.kind == Unit::Kind::whole_study) {
-        if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
-            return {UnitState::damaged, "no list of the study's files"};
+        if (j["files"].empty())
+            return {UnitState::damaged, file.string() + ": files: empty (no study file listed)"};
         const fs::path folder = fs::path(dir) / "studies" / u.study;
         for (const auto& name : j["files"]) {
             // Merge copies these files into its output folder: names inside the study's folder
             // only (relative, no `..`), never a path that would read or write elsewhere.
-            if (!inside_folder(name))
-                return {UnitState::damaged, "files: " + name.dump() + " is not a file name"};
+            if (!inside_folder(name)) {
+                return {UnitState::damaged,
+                        file.string() + ": files: " + name.dump() + " is not a file name"};
+            }
             const fs::path f = folder / name.get<std::string>();
-            if (!fs::exists(f)) return {UnitState::damaged, f.string() + " is missing"};
+            if (!fs::exists(f))
+                return {UnitState::damaged,
+                        file.string() + ": files: " + f.string() + " is missing"};
             if (f.extension() == ".json") {
                 if (!nlohmann::json::accept(read_text_file(f.string())))
-                    return {UnitState::damaged, f.string() + " is not complete JSON"};
+                    return {UnitState::damaged, f.string() + ": not complete JSON"};
             }
         }
     }
@@ -321,6 +336,15 @@ void run_shard(const Job& job, const ShardSettings& s) {
     // Longest first within the shard too: the worker threads end together.
     std::stable_sort(mine.begin(), mine.end(),
                      [&](size_t a, size_t b) { return expected[a] > expected[b]; });
+    // Every unit's file already there is checked before any is made: a damaged one is refused
+    // (a unit of other inputs is made again), as a suite refuses its damaged results.
+    if (!s.force) {
+        for (const size_t i : mine) {
+            const UnitCheck check = check_unit(s.dir, plan.units[i]);
+            if (check.state == UnitState::damaged)
+                throw InputError(check.problem + "; delete it to make it again");
+        }
+    }
     double my_seconds = 0.0;
     for (const size_t i : mine) my_seconds += expected[i];
     write_shard_manifest(plan, s, mine);

@@ -54,8 +54,9 @@ struct JobPlan {
 JobPlan plan_job(const Job& job, const std::string& dir);
 
 // Whether a shard folder holds the unit: its file absent, there with the unit's input key (and,
-// for a whole study, every file it listed), or there but damaged (the problem in words).
-enum class UnitState { made, absent, damaged };
+// for a whole study, every file it listed), there but made from other inputs (another input key),
+// or damaged (runs/run_file.hpp). `problem`: one line, naming the file and the key.
+enum class UnitState { made, absent, stale, damaged };
 struct UnitCheck {
     UnitState state;
     std::string problem;

@@ -18,6 +18,7 @@
 #include "distribution/distributed.hpp"
 #include "distribution/study_registry.hpp"
 #include "distribution/sweep_runs.hpp"
+#include "runs/run_file.hpp"
 
 namespace rotbeam::cli {
 
@@ -42,6 +43,14 @@ Job read_shards(const std::vector<std::string>& dirs, std::vector<ShardFolder>& 
                 "rotbeam merge: " + file +
                 ": missing: not a shard folder (written by `rotbeam suite|study|sweep ... "
                 "--shard I/N --out DIR`)");
+        }
+        // A folder given twice (under the same name or another) would count its runs twice.
+        for (const ShardFolder& earlier : shards) {
+            std::error_code ec;
+            if (fs::equivalent(dir, earlier.dir, ec)) {
+                throw InputError("rotbeam merge: " + dir + ": the same folder as " + earlier.dir +
+                                 ", given twice (give each shard folder once)");
+            }
         }
         const ShardManifest m = [&] {
             try {
@@ -124,11 +133,13 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
                 break;
             case Unit::Kind::study_run:
                 results[u.plan][u.index] =
-                    nlohmann::json::parse(read_text_file(from.string()))["result"];
+                    read_run_file(from.string(), RunFileKind::study_run, std::nullopt)
+                        ->at("result");
                 break;
             case Unit::Kind::whole_study: {
                 const fs::path folder = fs::path(found.at(&u)) / "studies" / u.study;
-                const nlohmann::json record = nlohmann::json::parse(read_text_file(from.string()));
+                const nlohmann::json record =
+                    *read_run_file(from.string(), RunFileKind::whole_study, std::nullopt);
                 for (const auto& name : record.at("files")) {
                     const fs::path target = fs::path(out) / name.get<std::string>();
                     fs::create_directories(target.parent_path());
@@ -179,9 +190,8 @@ int merge_shard_folders(const std::vector<std::string>& dirs, const std::string&
     for (const Unit& u : plan.units) {
         for (const ShardFolder& s : shards) {
             const UnitCheck check = check_unit(s.dir, u);
-            if (check.state == UnitState::damaged) {
-                throw InputError("rotbeam merge: " + (fs::path(s.dir) / u.file).string() + ": " +
-                                 check.problem + "; remove it and run shard " +
+            if (check.state == UnitState::damaged || check.state == UnitState::stale) {
+                throw InputError("rotbeam merge: " + check.problem + "; remove it and run shard " +
                                  std::to_string(s.shard.index) + "/" +
                                  std::to_string(s.shard.count) + " again");
             }

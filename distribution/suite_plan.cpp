@@ -15,6 +15,7 @@
 #include "combinations/registry.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "core/results.hpp"
 #include "core/version.hpp"
 #include "distribution/gate.hpp"
 #include "distribution/study_registry.hpp"
@@ -27,6 +28,7 @@
 #include "runs/parallel.hpp"
 #include "runs/progress.hpp"
 #include "runs/run_case.hpp"
+#include "runs/run_file.hpp"
 
 namespace rotbeam::cli {
 
@@ -131,10 +133,15 @@ bool stopped_by_time_limit(const nlohmann::json& j) {
 bool up_to_date(const PlannedRun& run) {
     if (!fs::exists(run.output)) return false;
     try {
-        const nlohmann::json j = nlohmann::json::parse(read_text_file(run.output));
-        return j.value("input_key", "") == run.key && !stopped_by_time_limit(j);
-    } catch (const std::exception&) {
-        return false;  // a damaged file is simply run again
+        // A file of other inputs or another version (another input_key) is made again, and so
+        // is a run stopped by the time limit.
+        const std::optional<nlohmann::json> j =
+            read_run_file(run.output, RunFileKind::case_run, run.key);
+        return j.has_value() && !stopped_by_time_limit(*j);
+    } catch (const InputError& e) {
+        // A damaged file is refused, not run again over: something other than rotbeam changed
+        // the folder (an interrupted write leaves only a hidden temporary, never a damaged file).
+        throw InputError(std::string(e.what()) + "; delete it to make the run again");
     }
 }
 
@@ -174,6 +181,20 @@ std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& ou
 
 namespace {
 
+// The result of a run the case or the combination refuses: its status `error` and the reason,
+// with the schema version and the build like every result.
+nlohmann::json refused_run(const PlannedRun& run, const std::string& message) {
+    return {{"schema_version", kSchemaVersion},
+            {"version", kGitDescribe},
+            {"case", run.case_name},
+            {"rotation", run.rotation},
+            {"formulation", run.formulation},
+            {"status", "error"},
+            {"message", message},
+            {"steps", nlohmann::json::array()},
+            {"wall_seconds", 0.0}};
+}
+
 nlohmann::json execute_unkeyed(const PlannedRun& run) {
     Model model;
     try {
@@ -185,10 +206,7 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
             for (Member& m : model.members) m.elements = run.elements_per_member;
         }
     } catch (const InputError& e) {
-        return {
-            {"case", run.case_name}, {"rotation", run.rotation}, {"formulation", run.formulation},
-            {"status", "error"},     {"message", e.what()},      {"steps", nlohmann::json::array()},
-            {"wall_seconds", 0.0}};
+        return refused_run(run, e.what());
     }
     try {
         const bool estimate = run.estimate && model.analysis.estimate;
@@ -206,10 +224,7 @@ nlohmann::json execute_unkeyed(const PlannedRun& run) {
         return result;
     } catch (const InputError& e) {
         // The combination does not exist for this case (e.g. a formulation not built yet).
-        return {
-            {"case", run.case_name}, {"rotation", run.rotation}, {"formulation", run.formulation},
-            {"status", "error"},     {"message", e.what()},      {"steps", nlohmann::json::array()},
-            {"wall_seconds", 0.0}};
+        return refused_run(run, e.what());
     }
 }
 
@@ -248,13 +263,19 @@ void run_planned_runs(const std::vector<PlannedRun>& runs, int jobs, bool force,
     for (const PlannedRun& run : runs) total_cost += run.modelled_seconds;
     ProgressOptions options = progress_options_for_stderr();
     options.workers = jobs;
+    // Every result already there is checked before any run starts: a damaged one stops the
+    // command before it has written anything.
+    std::vector<char> current(runs.size(), 0);
+    if (!force) {
+        for (size_t i = 0; i < runs.size(); ++i) current[i] = up_to_date(runs[i]);
+    }
     Progress progress(what, runs.size(), std::cerr, options);
     progress.set_total_cost(total_cost);
     for_each_parallel(runs.size(), jobs, [&](size_t i) {
         const PlannedRun& run = runs[i];
         const std::string label = fs::path(run.output).stem().string();
         progress.started(label, run.modelled_seconds);
-        if (force || !up_to_date(run)) {
+        if (!current[i]) {
             write_file_atomically(run.output, execute_planned_run(run).dump(1) + "\n");
             progress.finished(label);
         } else {

@@ -39,8 +39,10 @@ std::string planned_run_key(const std::string& case_text, const PlannedRun& run)
 std::vector<PlannedRun> plan_runs(const std::string& glob, const std::string& out_dir, bool quick,
                                   bool estimate);
 
-// The run's result file exists, parses, and carries the run's input key (same case text, settings
-// and rotbeam version), and the run was not stopped by a time limit: resuming skips it.
+// The run's result file exists and carries the run's input key (same case text, settings and
+// rotbeam version), and the run was not stopped by a time limit: resuming skips it. A file there
+// that is damaged (runs/run_file.hpp) is refused: InputError naming the file and the key, and
+// saying to delete it.
 bool up_to_date(const PlannedRun& run);
 
 // Makes the run (the code path of `rotbeam run`, its estimate included); a combination that does

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "distribution/sweep_runs.hpp"
 #include "reports/report.hpp"
+#include "runs/run_file.hpp"
 
 namespace rotbeam::cli {
 
@@ -145,7 +146,8 @@ void write_sweep_report(const std::string& out, const Sweep& sweep,
     std::map<std::string, int> statuses;
     for (size_t i = 0; i < runs.size(); ++i) {
         const SweepRun& s = sweep.runs[i];
-        const nlohmann::json result = nlohmann::json::parse(read_text_file(runs[i].output));
+        const nlohmann::json result =
+            *read_run_file(runs[i].output, RunFileKind::case_run, std::nullopt);
         SweepRow base = {{"run", fs::path(runs[i].output).stem().string()},
                          {"case", s.case_name},
                          {"formulation", s.formulation},

@@ -25,6 +25,7 @@
 #include "report_ribbon.hpp"
 #include "report_summary.hpp"
 #include "report_table_one.hpp"
+#include "runs/run_file.hpp"
 #include "studies/gnuplot.hpp"
 #include "studies/study_common.hpp"
 
@@ -211,8 +212,9 @@ void write_report(const std::string& out_dir, const std::vector<std::string>& ru
                   const nlohmann::json& published_checks) {
     std::vector<nlohmann::json> runs;
     for (const std::string& f : run_files) {
-        nlohmann::json j = read_json(f);
-        if (!j.is_null()) runs.push_back(std::move(j));
+        // A run whose result was not written (it failed to write) has no row; a result that is
+        // there was checked when the suite or the merge began and is checked again here.
+        if (fs::exists(f)) runs.push_back(*read_run_file(f, RunFileKind::case_run, std::nullopt));
     }
     std::ostringstream md;
     md << "## Runs\n\nEvery static, modal and dynamic catalog case with every "

@@ -2,7 +2,7 @@
 # Build the libFuzzer targets (preset fuzz: clang, ASan + UBSan) and run one of them.
 # Usage: scripts/fuzz.sh TARGET SECONDS [libFuzzer options...]
 #   TARGET: fuzz_case_loader | fuzz_beamdyn_import | fuzz_command_line | fuzz_shard_manifest |
-#           fuzz_sweep_file (docs/fuzzing.md)
+#           fuzz_sweep_file | fuzz_run_file (docs/fuzzing.md)
 # New inputs go to build/fuzz/corpus-TARGET (the committed corpus tests/fuzz/corpus/TARGET is read
 # only); a crashing input is written to build/fuzz/TARGET-crash-* and the run stops with status 1.
 set -euo pipefail
@@ -15,8 +15,8 @@ target=$1
 seconds=$2
 shift 2
 case "$target" in
-  fuzz_case_loader | fuzz_beamdyn_import | fuzz_command_line | fuzz_shard_manifest | fuzz_sweep_file) ;;
-  *) echo "fuzz.sh: unknown target '$target' (fuzz_case_loader | fuzz_beamdyn_import | fuzz_command_line | fuzz_shard_manifest | fuzz_sweep_file)" >&2; exit 2 ;;
+  fuzz_case_loader | fuzz_beamdyn_import | fuzz_command_line | fuzz_shard_manifest | fuzz_sweep_file | fuzz_run_file) ;;
+  *) echo "fuzz.sh: unknown target '$target' (fuzz_case_loader | fuzz_beamdyn_import | fuzz_command_line | fuzz_shard_manifest | fuzz_sweep_file | fuzz_run_file)" >&2; exit 2 ;;
 esac
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j 2 --target "$target"

@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "distribution/distributed.hpp"
 #include "distribution/sweep_runs.hpp"
+#include "runs/shards.hpp"
 
 namespace rotbeam::cli {
 
@@ -66,6 +67,8 @@ int command_sweep(const Args& args) {
     const double time_limit = time_limit_option(a, "sweep");
     const Sweep sweep = read_sweep(a.positional[0]);
     const std::string out = a.value("out").value_or(sweep.folder);
+    // --shard is checked before --list: a bad shard is refused whatever else is asked.
+    if (const auto shard = a.value("shard")) parse_shard("sweep", *shard);
     if (a.has("list")) {
         list_runs(sweep, plan_sweep_runs(sweep, out));
         return 0;
