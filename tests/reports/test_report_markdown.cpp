@@ -16,6 +16,7 @@
 #include "reports/report_summary.hpp"
 #include "runs/catalog.hpp"
 #include "studies/study_common.hpp"
+#include "tests/reports/suite_run_files.hpp"
 
 using namespace rotbeam::cli;
 namespace fs = std::filesystem;
@@ -66,8 +67,7 @@ BOOST_AUTO_TEST_CASE(a_stop_message_with_a_pipe_and_backticks_stays_in_its_cell)
         {"case", "tip-load-cantilever"},    {"elements", 4},        {"rotation", "quaternion"},
         {"formulation", "displacement"},    {"status", "diverged"}, {"message", kMessage},
         {"steps", nlohmann::json::array()}, {"wall_seconds", 0.5}};
-    std::ofstream((dir / "run.json").string()) << run.dump();
-    write_report(dir.string(), {(dir / "run.json").string()}, {});
+    write_report(dir.string(), rotbeam::test::write_suite_run_files(dir, {run}), {});
 
     const std::string md = text_of(dir / "index.md");
     // The runs table's row (the summary's matrix has a row of the case too).
@@ -92,9 +92,13 @@ namespace {
 // tip at that step.
 nlohmann::json rollup_run(const std::string& rotation, const std::string& formulation,
                           const std::string& status, double estimate = -1.0) {
-    nlohmann::json step = {{"load_factor", 2.0},
-                           {"newton_iterations", 3},
-                           {"points", {{"tip", {{"displacement", {-12.0, 0.0, 1.2e-8}}}}}}};
+    nlohmann::json step = {
+        {"load_factor", 2.0},
+        {"newton_iterations", 3},
+        // Two full turns: the tip back at the clamp, rotation vector zero.
+        {"points",
+         {{"tip",
+           {{"displacement", {-12.0, 0.0, 1.2e-8}}, {"rotation_vector", {0.0, 0.0, 0.0}}}}}}};
     nlohmann::json run = {{"case", "cantilever-moment"},
                           {"elements", 16},
                           {"elements_per_member", {{"beam", 16}}},
@@ -146,11 +150,7 @@ BOOST_AUTO_TEST_CASE(the_summary_says_which_combination_met_its_accuracy_and_lin
         check("displacement/rodrigues/relative", "stop", "pass"),
         check("mixed/quaternion", "displacement", "FAIL"),
         check("mixed/rotation-vector elements=8", "displacement", "pass")};  // another mesh
-    std::vector<std::string> files;
-    for (size_t i = 0; i < runs.size(); ++i) {
-        files.push_back((dir / ("run" + std::to_string(i) + ".json")).string());
-        std::ofstream(files.back()) << runs[i].dump();
-    }
+    const std::vector<std::string> files = rotbeam::test::write_suite_run_files(dir, runs);
     write_report(dir.string(), files, {}, checks);
     const std::string md = text_of(dir / "index.md");
     // Columns in the order of the runs (the suite plans them in registry order).

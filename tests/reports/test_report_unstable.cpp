@@ -23,6 +23,7 @@
 #include "core/static_stability.hpp"
 #include "reports/report.hpp"
 #include "runs/run_case.hpp"
+#include "tests/reports/suite_run_files.hpp"
 
 using namespace rotbeam;
 using namespace rotbeam::cli;
@@ -75,11 +76,7 @@ BOOST_AUTO_TEST_CASE(an_unstable_equilibrium_is_shown_unstable_and_never_counted
     const fs::path dir = fs::temp_directory_path() / "rotbeam-test-report-unstable";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    std::vector<std::string> files;
-    for (size_t i = 0; i < runs.size(); ++i) {
-        files.push_back((dir / ("run" + std::to_string(i) + ".json")).string());
-        std::ofstream(files.back()) << runs[i].dump();
-    }
+    const std::vector<std::string> files = rotbeam::test::write_suite_run_files(dir, runs);
     write_report(dir.string(), files, {}, checks);
     const std::string md = page_text(dir / "index.md");
     // The matrix: the stable column met by its estimate, the unstable one linked to its row.
