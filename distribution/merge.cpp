@@ -12,7 +12,6 @@
 #include <map>
 #include <set>
 
-#include "cases/loader/file_name_part.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
@@ -26,23 +25,6 @@ namespace rotbeam::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-// A file a whole study's record lists is written to OUT/NAME: each '/'-separated part of NAME
-// must be a plain file-name part (cases/loader/file_name_part.hpp), so that no record can make
-// merge write outside its output folder.
-void check_study_file_name(const std::string& record, const std::string& name) {
-    std::string::size_type start = 0;
-    while (true) {
-        const std::string::size_type slash = name.find('/', start);
-        const std::string problem =
-            cases::file_name_part_problem(name.substr(start, slash - start));
-        if (!problem.empty()) {
-            throw InputError("rotbeam merge: " + record + ": files: '" + name + "': " + problem);
-        }
-        if (slash == std::string::npos) return;
-        start = slash + 1;
-    }
-}
 
 struct ShardFolder {
     std::string dir;
@@ -159,7 +141,6 @@ void write_merged(const JobPlan& plan, const std::map<const Unit*, std::string>&
                 const nlohmann::json record =
                     *read_run_file(from.string(), RunFileKind::whole_study, std::nullopt);
                 for (const auto& name : record.at("files")) {
-                    check_study_file_name(from.string(), name.get<std::string>());
                     const fs::path target = fs::path(out) / name.get<std::string>();
                     fs::create_directories(target.parent_path());
                     write_file_atomically(
