@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -327,6 +328,12 @@ DynamicSpeedProblem free_vibration_problem(bool quick) {
 
 std::vector<DynamicSpeedProblem> dynamic_speed_problems(bool quick) {
     return {joined_beam_problem(quick), free_vibration_problem(quick)};
+}
+
+DynamicSpeedProblem dynamic_speed_problem(const std::string& key, bool quick) {
+    for (DynamicSpeedProblem& p : dynamic_speed_problems(quick))
+        if (p.key == key) return p;
+    throw std::invalid_argument("no dynamic speed problem " + key);
 }
 
 DynamicSpeedResult measure_dynamic_speed(const DynamicSpeedProblem& p,

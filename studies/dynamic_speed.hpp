@@ -75,6 +75,9 @@ struct DynamicSpeedProblem {
 // The joined beam (dead load) and the free vibration; --quick: shorter windows, a coarser free
 // vibration mesh, one parameterization per formulation and fewer settings.
 std::vector<DynamicSpeedProblem> dynamic_speed_problems(bool quick);
+// The one of them whose key is `key` ("joined_beam" | "free_vibration"; std::invalid_argument
+// otherwise).
+DynamicSpeedProblem dynamic_speed_problem(const std::string& key, bool quick);
 
 struct DynamicSpeedResult {
     std::vector<DynamicPoint> points;

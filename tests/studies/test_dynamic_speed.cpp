@@ -17,11 +17,7 @@ using namespace rotbeam::cli;
 namespace {
 
 const DynamicSpeedProblem& free_vibration_quick() {
-    static const DynamicSpeedProblem p = [] {
-        for (const DynamicSpeedProblem& q : dynamic_speed_problems(true))
-            if (q.key == "free_vibration") return q;
-        throw std::runtime_error("no free_vibration problem");
-    }();
+    static const DynamicSpeedProblem p = dynamic_speed_problem("free_vibration", true);
     return p;
 }
 

@@ -17,18 +17,9 @@ using namespace rotbeam::cli;
 
 namespace {
 
-const DynamicSpeedProblem& free_vibration_full() {
-    static const DynamicSpeedProblem p = [] {
-        for (const DynamicSpeedProblem& q : dynamic_speed_problems(false))
-            if (q.key == "free_vibration") return q;
-        throw std::runtime_error("no free_vibration problem");
-    }();
-    return p;
-}
-
 // The problem's reference of `combination` ("displacement/quaternion"), computed (no cache).
 ReferenceResponse full_reference(const std::string& combination) {
-    const DynamicSpeedProblem& p = free_vibration_full();
+    const DynamicSpeedProblem p = dynamic_speed_problem("free_vibration", false);
     for (const Combination& c : p.combinations) {
         if (c.label() != combination) continue;
         return same_mesh_reference(c, p.window, p.coarse_step.at(c.formulation), "");
