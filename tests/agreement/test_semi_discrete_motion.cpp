@@ -192,7 +192,8 @@ void check_gauss_legendre_3_fast_motion(const std::vector<ParameterizationId>& r
 // parameterizations/wiener_milenkovic_continuous.hpp), which this motion does, so the
 // semi-discrete system is not smooth there and Radau shows no order (4.4, then 0.0 in u); the Euler
 // angles' momenta fall with 4.92, 4.33 (least squares 4.62; 4.60 at 0.0125 → 0.00625, the same
-// digits at a Newton tolerance of 1e-14, so not the stage iteration's floor; cause not found)
+// digits at a Newton tolerance of 1e-14, so not the stage iteration's floor; not the start
+// either: at t = 0.025, after 1, 2, 4 steps, the momenta error keeps 5.0; cause not found)
 // while their u, R, F keep 5. Rodrigues' forces are pre-asymptotic at the coarse steps: pairs 6.15
 // (0.05 → 0.025), 5.73, 5.06, their excess over 5 falling towards 0, and the next halving
 // (0.003125) reaches the round-off floor (F 4.7e-12, pair 2.67, u 6.9e-13): their last pair is
