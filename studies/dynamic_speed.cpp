@@ -96,6 +96,12 @@ nlohmann::json dynamic_front(const StudyOptions& o, const std::vector<DynamicPoi
     std::vector<const DynamicPoint*> on;
     for (size_t i = 0; i < points.size(); ++i)
         if (front[i]) on.push_back(&points[i]);
+    // No run with a finite time error (every reference failed, or every run stopped): no front,
+    // and no data file, which would be empty (an empty file reads as a truncated one).
+    if (on.empty()) {
+        md << "No Pareto front: no run gave a time error.\n\n";
+        return nlohmann::json::array();
+    }
     std::sort(on.begin(), on.end(),
               [](const DynamicPoint* a, const DynamicPoint* b) { return a->cpu < b->cpu; });
     std::ostringstream data;
@@ -414,10 +420,11 @@ nlohmann::json problem_section(const StudyOptions& o, const DynamicSpeedProblem&
                                 series[label]),
                    rotation);
     }
-    // No run, no figure: every reference failed (each listed above with its reason), and a link
-    // to a figure that gnuplot was given nothing to draw would leave a hole in the report.
-    if (order.empty()) {
-        md << "No figure: no run was made (every reference failed, listed above).\n\n";
+    // No run with a time error, no figure: every reference failed (each listed above with its
+    // reason) or every run stopped, and a link to a figure that gnuplot was given nothing to
+    // draw would leave a hole in the report.
+    if (out["front"].empty()) {
+        md << "No figure: no run gave a time error (the references and runs are listed).\n\n";
     } else {
         plot_panels(o, figure,
                     {{"xcol", "3"},

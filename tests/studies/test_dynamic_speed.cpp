@@ -5,6 +5,7 @@
 // sixth-order scheme is more accurate than the second-order one at the same step.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
@@ -71,6 +72,23 @@ BOOST_AUTO_TEST_CASE(the_front_is_exactly_the_non_dominated_runs) {
         on_front += front[i] ? 1 : 0;
     }
     BOOST_TEST(on_front >= 2);  // a cheapest-but-coarse run and a dearer accurate one at least
+}
+
+// No run with a time error (every reference failed, or every run stopped, as the full free
+// vibration's references did at 125 / 62.5 µs): no front, and no data file at all, since an empty
+// one reads as a truncated file (the whole suite's check of its folder failed on it).
+BOOST_AUTO_TEST_CASE(no_run_with_a_time_error_gives_no_front_and_no_file) {
+    StudyOptions o;
+    o.out_dir = (std::filesystem::temp_directory_path() / "rotbeam-dynamic-front-none").string();
+    std::filesystem::remove_all(o.out_dir);
+    DynamicPoint stopped;  // cpu and error kNoValue: a run that gave no time error
+    stopped.status = "diverged";
+    std::ostringstream md;
+    const nlohmann::json front = dynamic_front(o, {stopped, stopped}, "data/front.dat", md);
+    BOOST_TEST(front.empty());
+    BOOST_TEST(!std::filesystem::exists(o.out_dir + "/data/front.dat"));
+    BOOST_TEST(md.str().find("No Pareto front") != std::string::npos, md.str());
+    std::filesystem::remove_all(o.out_dir);
 }
 
 BOOST_AUTO_TEST_CASE(the_words_name_the_cheapest_run_at_each_level_which_is_on_the_front) {
