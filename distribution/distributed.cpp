@@ -287,10 +287,11 @@ bool make_unit(const JobPlan& plan, const Unit& u, const ShardSettings& s) {
             const fs::path folder = fs::path(s.dir) / "studies" / u.study;
             fs::remove_all(folder);
             fs::remove(file);
-            for (const std::string& study : u.studies) {
-                run_study_whole(study, StudyOptions{folder.string(), plan.job.quick,
-                                                    plan.job.reduced_follower});
-            }
+            // A timed unit runs alone, so its untimed parallel work may take every worker
+            // thread; a pooled one has one thread, as each of its neighbours.
+            const StudyOptions o{folder.string(), plan.job.quick, plan.job.reduced_follower,
+                                 u.timed ? s.jobs : 1};
+            for (const std::string& study : u.studies) run_study_whole(study, o);
             const nlohmann::json record = {{"study", u.study},
                                            {"input_key", u.key},
                                            {"seconds", since(start)},

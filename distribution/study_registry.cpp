@@ -142,6 +142,7 @@ constexpr StudyOptionScope kStudyOptionScopes[] = {
     {"out", "registered"},
     {"quick", "registered"},
     {"reduced-follower", "joined-beam-dynamics"},
+    {"jobs", "registered"},
 };
 
 }  // namespace
@@ -253,10 +254,13 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
                       options);
     progress.set_total_cost(std::accumulate(pooled_cost.begin(), pooled_cost.end(), 0.0),
                             alone_cost);
+    // A whole study in the pool has one thread, as each of its neighbours.
+    StudyOptions pooled = o;
+    pooled.jobs = 1;
     for_each_parallel(whole.size() + items.size(), jobs, [&](size_t i) {
         if (i < whole.size()) {
             progress.started("study " + whole[i], pooled_cost[i]);
-            run_study_whole(whole[i], o);
+            run_study_whole(whole[i], pooled);
             progress.finished("study " + whole[i]);
         } else {
             const auto [p, r] = items[i - whole.size()];
@@ -279,9 +283,12 @@ void run_suite_studies(const StudyOptions& o, int jobs) {
             << (std::filesystem::path(o.out_dir) / ("study-" + split[p].first + ".md")).string()
             << "\n";
     }
+    // Run alone, a timed study may take every thread for its untimed work (its references).
+    StudyOptions alone = o;
+    alone.jobs = jobs;
     for (const std::string& name : timed) {
         progress.started("study " + name, whole_study_seconds(name, o.quick), true);
-        run_study_whole(name, o);
+        run_study_whole(name, alone);
         progress.finished("study " + name);
     }
 }

@@ -22,7 +22,8 @@ const std::vector<std::pair<std::string, SplitStudy>>& split_studies();
 
 // The suite's studies: the accuracy studies in parallel over `jobs` threads (the split ones as
 // their runs, pooled with the others, then combined), then the speed-accuracy study alone (its
-// timings must not share the cores); joined-beam-dynamics only by name or `all`
+// timings must not share the cores; its untimed references on `jobs` threads before them);
+// joined-beam-dynamics only by name or `all`
 // (study_commands.cpp says why).
 void run_suite_studies(const StudyOptions& o, int jobs);
 

@@ -83,16 +83,23 @@ struct DynamicSpeedResult {
     std::vector<DynamicPoint> points;
     std::vector<ReferenceResponse> references;  // one per combination, in its order
     std::vector<std::string> not_run;           // combinations without a reference, and why
-    double cpu_seconds = 0.0;                   // references and sweep, this thread
+    double cpu_seconds = 0.0;  // the references' (0 when cached) and the sweep's, every thread
 };
 
-// References and every (combination, setting) point of the problem, on this thread (the
-// references read from / written to `cache_dir` when not empty).
-DynamicSpeedResult measure_dynamic_speed(const DynamicSpeedProblem& p,
-                                         const std::string& cache_dir);
+// The reference of every combination of every problem (same_mesh_reference at the problem's
+// coarse_step of the combination's formulation), on `threads` threads (compute_references),
+// read from / written to `cache_dir` when not empty: per problem, one per combination, in order.
+std::vector<std::vector<ReferenceResponse>> speed_references(
+    const std::vector<DynamicSpeedProblem>& problems, const std::string& cache_dir, int threads);
 
-// The speed-accuracy study's dynamic section: every problem measured, its references, front,
-// words, figure and table appended to md; the JSON returned.
+// Every (combination, setting) point of the problem against `references` (speed_references: one
+// per combination), on this thread: the points are timed.
+DynamicSpeedResult measure_dynamic_speed(const DynamicSpeedProblem& p,
+                                         std::vector<ReferenceResponse> references);
+
+// The speed-accuracy study's dynamic section: every problem's references first, on o.jobs
+// threads, then its points on this thread; references, front, words, figure and table appended
+// to md; the JSON returned.
 nlohmann::json dynamic_speed_section(const StudyOptions& o, std::ostringstream& md);
 
 }  // namespace rotbeam::cli

@@ -11,6 +11,7 @@
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
 #include "core/version.hpp"
+#include "runs/parallel.hpp"
 
 namespace rotbeam::cli {
 
@@ -335,6 +336,20 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
         {{"displacement", history_json(hf.displacement)}, {"rotation", history_json(hf.rotation)}});
     if (ref.status != "converged") ref.history = ref.rotation = History{};
     return ref;
+}
+
+void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cache_dir,
+                        int threads) {
+    std::vector<size_t> order(jobs.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const auto steps = [&](size_t i) { return jobs[i].window.end_time / jobs[i].coarse_step; };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return steps(a) > steps(b); });
+    for_each_parallel(order.size(), threads, [&](size_t k) {
+        ReferenceJob& j = jobs[order[k]];
+        j.result =
+            same_mesh_reference(j.combination, j.window, j.coarse_step, cache_dir, j.agreement);
+    });
 }
 
 ReferenceResponse richardson_reference(const Combination& c, const ResponseWindow& w,

@@ -108,6 +108,22 @@ ReferenceResponse same_mesh_reference(const Combination& c, const ResponseWindow
                                       double coarse_step, const std::string& cache_dir,
                                       double agreement = kReferenceAgreement);
 
+// One same_mesh_reference to make: its inputs and, once made, its result.
+struct ReferenceJob {
+    Combination combination;
+    ResponseWindow window;
+    double coarse_step;
+    ReferenceResponse result;
+    double agreement = kReferenceAgreement;
+};
+
+// Makes every job's same_mesh_reference on `threads` threads, the job with the most time steps
+// first (the coarser run's end_time / coarse_step: the costliest start first, so that the last
+// one to finish is short). References are not timed, and each is two single-threaded runs, so
+// the thread that makes one does not change it. A reference that cannot be written (a full disk)
+// stops the others and is rethrown here (runs/parallel.hpp).
+void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cache_dir, int threads);
+
 // The joint displacement's reference of the formulation's second-order fixed-step scheme
 // (generalized-α with ρ∞ = 1 | the trapezoidal rule) at `coarse_step` and `coarse_step`/2,
 // extrapolated pointwise at order 2 (both schemes are the trapezoidal rule for this undamped

@@ -28,6 +28,9 @@ struct StudyOptions {
     // joined-beam-dynamics only: the follower load with the --quick sweep (fixed step to 0.5 ms,
     // IDA to 1e-5) on the full window, when the full sweep of both loads costs too much.
     bool reduced_follower = false;
+    // Threads for a study's untimed work that runs in parallel (the dynamic studies' same-mesh
+    // references); what a study times runs on one thread whatever this is.
+    int jobs = 1;
 };
 
 // Formulation × parameterization (× interpolation), from the registry (combinations/registry.hpp);

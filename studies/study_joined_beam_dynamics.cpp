@@ -40,25 +40,6 @@ nlohmann::json reference_json(const ReferenceResponse& r) {
             {"from_cache", r.from_cache}};
 }
 
-// Computes the references of `jobs` on two threads (they are not timed; each run is
-// single-threaded), in order of the list.
-struct ReferenceJob {
-    Combination combination;
-    ResponseWindow window;
-    double coarse_step;
-    ReferenceResponse result;
-    double agreement = kReferenceAgreement;
-};
-
-// On two threads; a reference that cannot be written (a full disk) stops the others and is
-// rethrown here (runs/parallel.hpp), not left to end the program from its thread.
-void compute_references(std::vector<ReferenceJob>& jobs, const std::string& cache_dir) {
-    for_each_parallel(jobs.size(), 2, [&](size_t i) {
-        jobs[i].result = same_mesh_reference(jobs[i].combination, jobs[i].window,
-                                             jobs[i].coarse_step, cache_dir, jobs[i].agreement);
-    });
-}
-
 }  // namespace
 
 namespace {
@@ -111,7 +92,7 @@ nlohmann::json reference_checks(const StudyOptions& o, bool quick, const Respons
         ida_cpu = thread_cpu_seconds() - c0;
     });
     try {
-        compute_references(jobs, cache);
+        compute_references(jobs, cache, o.jobs);
     } catch (...) {
         ida_thread.join();  // a joinable thread's destructor would end the program
         throw;
@@ -223,7 +204,7 @@ void measure_load(const StudyOptions& o, LoadStudy& l) {
     for (const Combination& c : all_combinations(false)) {
         jobs.push_back({c, w, reference_coarse_step(c.formulation, o.quick), {}});
     }
-    compute_references(jobs, cache);
+    compute_references(jobs, cache, o.jobs);
     std::vector<DynamicPoint> points;
     std::vector<std::string> notes;
     // Panels in the order of the table: per formulation, its schemes in the sweep's order.

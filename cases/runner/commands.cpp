@@ -519,8 +519,9 @@ int command_study(const Args& args) {
           "model, docs/distributed-runs.md; under mpirun: --out)",
           true},
          {"jobs", "N",
-          "with --shard: worker threads, 1 to 256 (default: all cores); under mpirun: per rank "
-          "(default 1)"}}};
+          "worker threads, 1 to 256 (default: all cores): with --shard, for its runs; under "
+          "mpirun, per rank (default 1); else for a study's untimed references (what a study "
+          "times runs on one thread)"}}};
     const ParsedArguments a = parse_arguments(spec, args);
     if (a.help) {
         std::cout << help_text(spec);
@@ -531,14 +532,14 @@ int command_study(const Args& args) {
     for (const OptionSpec& option : spec.options) {
         if (a.has(option.name)) check_study_option(a.positional[0], option.name);
     }
+    const int jobs = a.positive_int("study", "jobs", kMaxJobs)
+                         .value_or(std::max(1u, std::thread::hardware_concurrency()));
     {
         Job job;
         job.command = "study";
         job.study = a.positional[0];
         job.quick = a.has("quick");
         job.reduced_follower = a.has("reduced-follower");
-        const int jobs = a.positive_int("study", "jobs", kMaxJobs)
-                             .value_or(std::max(1u, std::thread::hardware_concurrency()));
         if (const auto code = run_distributed(
                 job, a.value("shard"),
                 ShardSettings{{}, a.value("out").value_or("out"), jobs, false, a.values("timings")},
@@ -546,12 +547,12 @@ int command_study(const Args& args) {
             return *code;
         }
     }
-    if (a.has("timings") || a.has("jobs"))
-        throw InputError(
-            "rotbeam study: --timings and --jobs: only with --shard I/N or under mpirun");
+    if (a.has("timings"))
+        throw InputError("rotbeam study: --timings: only with --shard I/N or under mpirun");
     if (a.positional[0] != "rotations") {
-        run_named_study(a.positional[0], StudyOptions{a.value("out").value_or("out"),
-                                                      a.has("quick"), a.has("reduced-follower")});
+        run_named_study(a.positional[0],
+                        StudyOptions{a.value("out").value_or("out"), a.has("quick"),
+                                     a.has("reduced-follower"), jobs});
         return 0;
     }
     const int samples = a.positive_int("study", "samples", kMaxSamples, 2).value_or(721);

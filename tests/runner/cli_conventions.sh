@@ -65,7 +65,7 @@ listed=$(sed -n 's/^  study  *run a study (\(.*\))$/\1/p' "$work/top" | tr -d ,)
 # the option and the study, nothing run or written (the timeout: without the refusal, the study
 # would run).
 for refused in "convergence --samples 5" "singularity --json $work/never.json" "rotations --quick" \
-    "rotations --out $work/never" "extremes --reduced-follower"; do
+    "rotations --out $work/never" "extremes --reduced-follower" "rotations --jobs 2"; do
     read -r -a words <<<"$refused"
     timeout 20 "$rotbeam" study "${words[@]}" >"$work/out" 2>"$work/err"
     code=$?

@@ -1,8 +1,9 @@
 // The dynamic part of the speed-accuracy study (studies/dynamic_speed.hpp) in its quick form on
 // its smaller problem, the free vibration (2 elements, 0–0.1 s, quaternion and
 // Wiener–Milenkovic): every scheme is measured, the front holds exactly the non-dominated runs,
-// the words name for each accuracy the cheapest run reaching it (which is on the front), and the
-// sixth-order scheme is more accurate than the second-order one at the same step.
+// the words name for each accuracy the cheapest run reaching it (which is on the front), the
+// sixth-order scheme is more accurate than the second-order one at the same step, and the
+// references come out the same on two threads as on one.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -23,7 +24,8 @@ const DynamicSpeedProblem& free_vibration_quick() {
 }
 
 const DynamicSpeedResult& measured() {
-    static const DynamicSpeedResult r = measure_dynamic_speed(free_vibration_quick(), "");
+    static const DynamicSpeedResult r = measure_dynamic_speed(
+        free_vibration_quick(), speed_references({free_vibration_quick()}, "", 2).front());
     return r;
 }
 
@@ -72,6 +74,27 @@ BOOST_AUTO_TEST_CASE(the_front_is_exactly_the_non_dominated_runs) {
         on_front += front[i] ? 1 : 0;
     }
     BOOST_TEST(on_front >= 2);  // a cheapest-but-coarse run and a dearer accurate one at least
+}
+
+// The references are made on several threads (speed_references: the costliest first) and must
+// come out as on one, bit for bit: each is two single-threaded runs, whichever thread makes it,
+// so a difference is shared state between runs. Both forms of the quick free vibration's pair
+// (quaternion, Wiener–Milenkovic), once on one thread and once on two, compared exactly.
+BOOST_AUTO_TEST_CASE(references_made_on_two_threads_equal_those_made_on_one) {
+    const std::vector<DynamicSpeedProblem> problems = {free_vibration_quick()};
+    const auto one = speed_references(problems, "", 1).front();
+    const std::vector<ReferenceResponse>& two = measured().references;
+    BOOST_TEST_REQUIRE(one.size() == two.size());
+    const auto same = [](const History& a, const History& b) {
+        return a.time == b.time && a.x == b.x && a.y == b.y && a.z == b.z;
+    };
+    for (size_t i = 0; i < one.size(); ++i) {
+        BOOST_TEST(one[i].status == two[i].status);
+        BOOST_TEST(one[i].history.size() > 0);
+        BOOST_TEST(same(one[i].history, two[i].history), one[i].how);
+        BOOST_TEST(same(one[i].rotation, two[i].rotation), one[i].how);
+        BOOST_TEST(one[i].step_difference == two[i].step_difference);
+    }
 }
 
 // No run with a time error (every reference failed, or every run stopped, as the full free
