@@ -83,12 +83,18 @@ void MixedDynamics<P>::build_scales(double time_scale, double mass_scale, double
     state_scale_.head(numbering_.node_unknowns) = static_increments.head(numbering_.node_unknowns);
     const double Ls = layout_.length_scale;
     const double Vs = Ls / (time_scale > 0.0 ? time_scale : 1.0);
+    // An element's rotation parameters at their change per radian at the identity (1 for the
+    // three-parameter charts, ½ for the quaternion's half-angle components), so that the time
+    // integrators' error tolerances on the configuration (IDA's absolute tolerance, the Radau IIA
+    // and Gauss–Legendre error weights) read in radians whatever the parameterization.
+    const double per_radian = 1.0 / P::spatial_tangent(P::identity()).colwise().norm().maxCoeff();
     for (int e = 0; e < element_count(); ++e) {
         const int r = element_row(e), c = element_column(e);
         residual_scale_.segment<MixedElementResult<K>::kRows>(r) =
             static_rows.segment<MixedElementResult<K>::kRows>(statics.element_row(e));
         state_scale_.segment<MixedElementResult<K>::kCols>(c) =
             static_increments.segment<MixedElementResult<K>::kCols>(statics.element_column(e));
+        state_scale_.segment<K>(c + numbering_.c()) *= per_radian;
         residual_scale_.segment<3>(r + numbering_.fP()).setConstant(Vs);       // velocity
         residual_scale_.segment<3>(r + numbering_.fH()).setConstant(Vs / Ls);  // angular velocity
         state_scale_.segment<3>(c + numbering_.P()).setConstant(mass_scale * Vs);
