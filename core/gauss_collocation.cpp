@@ -124,7 +124,8 @@ class GaussStepper {
   private:
     void predict(double h);
     void extrapolate(double h);
-    // The iteration matrix at the stage mean of Z_ (zero: the step start) and t_mid.
+    // The iteration matrix at the stage mean of Z_ (the predicted stages, or the best iterate) and
+    // t_mid.
     bool factor(double t_mid, double h);
     bool refactor(double t, double h);
     // budget: iterate_stages' (0: none).
@@ -385,7 +386,7 @@ NewtonOutcome GaussStepper::iterate(double t, double h, int budget) {
 }
 
 // The stage iteration with kept matrices when they serve (KeptMatrices: within their iteration
-// limit), else or then with the matrix of the step start; when that fails (not for a singular
+// limit), else or then with fresh ones at the predicted stages; when that fails (not for a singular
 // matrix or a refused state), once more from its best iterate with the matrix refreshed at that
 // iterate's stage mean: the frozen matrix neglects dexp(Δ_i) − I and the change of K, C, M over
 // the step, which grows with the rotation per step.
@@ -401,13 +402,12 @@ NewtonOutcome GaussStepper::step(double t, double h) {
         }
     }
     const int spent = out.iterations;
-    for (VecX& z : Z_) z.setZero();
+    predict(h);
     if (!refactor(t, h)) {
         out.singular = true;
         out.failure = "the stage iteration matrix is singular";
         return out;
     }
-    predict(h);
     out = iterate(t, h, 0);
     if (out.accepted()) kept_.converged(out.iterations, rate_, true);
     out.iterations += spent;
