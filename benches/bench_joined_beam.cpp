@@ -25,6 +25,14 @@ constexpr double kModalAccuracy = 1e-6;
 constexpr double kModalTargetSeconds = 0.020;
 constexpr double kDynamicAccuracy = 1e-3;
 constexpr double kDynamicTargetSeconds = 0.5;
+// The displacement formulation's Newton (stage-iteration) tolerance in the dynamic target's runs:
+// 1e-4 of the accuracy asked, as stiff integrators tie their Newton stop to the error tolerance
+// (Hairer & Wanner II, §IV.8: a fraction κ of it) rather than to round-off. The case's 1e-12 is
+// kept for the references. What it costs in accuracy, measured (joined beam, dead load, GL3 at
+// 1.25 ms, 0–2 s): the joint displacement history moves by 3.0e-6 of its amplitude at 1e-7
+// against 1e-12 (4.0e-7 at 1e-8), 0.3 % of the 1e-3 asked; the stage iterations fall from 10 433
+// to 5 383 (docs/performance.md, "joined-beam-dynamic").
+constexpr double kDynamicNewtonFraction = 1e-4;
 // The converged frequencies: two p-converged discretizations must agree to this before either is
 // used (1e-3 of the target accuracy).
 constexpr double kModalReferenceAgreement = 1e-9;
@@ -349,8 +357,10 @@ nlohmann::json bench_joined_beam_dynamic(bool quick, int repeats, const std::str
             // (finer ones cost more).
             std::vector<std::string> done;
             const JointResponse reference = ref.response();
-            for (const TimeSetting& s : time_settings(c.formulation, quick)) {
+            for (TimeSetting s : time_settings(c.formulation, quick)) {
                 if (std::find(done.begin(), done.end(), s.scheme()) != done.end()) continue;
+                if (c.formulation == Formulation::displacement)
+                    s.newton_tolerance = kDynamicNewtonFraction * kDynamicAccuracy;
                 Attempt a;
                 a.description = s.scheme() + " " + s.label();
                 a.spec = response_spec(c, s, w);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -34,6 +35,7 @@ std::string TimeSetting::label() const {
     } else {
         s << "dt=" << time_step;
     }
+    if (newton_tolerance > 0.0) s << ", newton=" << newton_tolerance;
     return s.str();
 }
 
@@ -75,6 +77,14 @@ std::vector<std::string> response_overrides(const Combination& c, const TimeSett
         o.push_back("analysis.absolute_tolerance=" + number(s.tolerance));
     } else if (s.tolerance > 0.0) {
         o.push_back("analysis.time_tolerance=" + number(s.tolerance));
+    }
+    if (s.newton_tolerance > 0.0) {
+        if (c.formulation != Formulation::displacement) {
+            throw std::invalid_argument(
+                "a Newton tolerance of the time steps is the displacement formulation's only");
+        }
+        o.push_back("solver.residual_tolerance=" + number(s.newton_tolerance));
+        o.push_back("solver.increment_tolerance=" + number(s.newton_tolerance));
     }
     if (c.formulation == Formulation::displacement) {
         o.push_back("discretization.order=" + std::to_string(w.order));
