@@ -320,8 +320,8 @@ DynamicSpeedProblem free_vibration_problem(bool quick) {
                       // Down to the steps that resolve the 1–20 kHz modes (above 125 µs every
                       // setting's tip-rotation error is floored at their ~1e-3); 7.8125 µs
                       // reaches ~1e-5 (10 / 5 µs differ by 1.04e-5).
-                      fixed_steps(Integrator::gauss_legendre_3, {5e-3, 2.5e-3, 1.25e-3, 1.25e-4,
-                                                                 3.125e-5, 1.5625e-5, 7.8125e-6}),
+                      fixed_steps(Integrator::gauss_legendre_3,
+                                  {5e-3, 2.5e-3, 1.25e-3, 1.25e-4, 3.125e-5, 1.5625e-5, 7.8125e-6}),
                       // Adaptive to 1e-5, not 1e-6: at 1e-6 the step-doubling pair resolves the
                       // mesh modes with 169 400 steps (57–92 s per combination, 2.3e-6), the fixed
                       // 7.8125 µs above costs a tenth of it for the 1e-5 level.

@@ -86,7 +86,7 @@ void MixedDynamics<P>::build_scales(double time_scale, double mass_scale, double
     // An element's rotation parameters at their change per radian at the identity (1 for the
     // three-parameter charts, ½ for the quaternion's half-angle components), so that the time
     // integrators' error tolerances on the configuration (IDA's absolute tolerance, the Radau IIA
-    // and Gauss–Legendre error weights) read in radians whatever the parameterization.
+    // and trapezoidal error weights) read in radians whatever the parameterization.
     const double per_radian = 1.0 / P::spatial_tangent(P::identity()).colwise().norm().maxCoeff();
     for (int e = 0; e < element_count(); ++e) {
         const int r = element_row(e), c = element_column(e);

@@ -37,7 +37,8 @@ namespace {
 template <class P>
 long adaptive_steps(Integrator integrator, double end) {
     // The model's discretization.rotation is not read here: P is the type solved with.
-    const Model model = test::catalog_model("joined-beam-dead", {"discretization.formulation=mixed"});
+    const Model model =
+        test::catalog_model("joined-beam-dead", {"discretization.formulation=mixed"});
     form::MixedDynamicsOf<P> dyn(model, end, 1e-9);
     VecX x = dyn.from_static_state(form::MixedStaticsOf<P>(model).state_vector());
     VecX xdot = VecX::Zero(dyn.size());

@@ -90,7 +90,8 @@ BOOST_AUTO_TEST_CASE(a_newton_tolerance_reaches_the_displacement_runs_and_the_mi
     BOOST_TEST(a.value("status", "") == "converged", a.value("message", ""));
     BOOST_TEST(b.value("status", "") == "converged", b.value("message", ""));
     BOOST_TEST_MESSAGE("stage iterations: newton 1e-12 " << dynamic_newton_iterations(a)
-                                                         << ", 1e-7 " << dynamic_newton_iterations(b));
+                                                         << ", 1e-7 "
+                                                         << dynamic_newton_iterations(b));
     BOOST_TEST(dynamic_newton_iterations(b) < dynamic_newton_iterations(a));
     const double moved = response_error(joint_response(b), joint_response(a));
     BOOST_TEST_MESSAGE("history moved by " << moved << " of its amplitude");
