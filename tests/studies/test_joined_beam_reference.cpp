@@ -71,10 +71,11 @@ BOOST_AUTO_TEST_CASE(a_reference_whose_two_steps_disagree_is_refused) {
 // iterations when looser, the history within what the looser tolerance allows), and the mixed
 // formulation, whose time steps keep their own tolerance, refuses it instead of ignoring it.
 // The joined beam 0–0.1 s, Gauss–Legendre 3 at 1 ms: measured 1e-12 → 1e-7 takes the stage
-// iterations from ~6.5 to ~3.4 per step over 0–2 s; asserted only fewer. The histories: each
-// step's stages stop within the tolerance of the scaled increment (1 m and 1 rad here), and the
-// error left grows at most linearly over the 100 steps, so ≤ 100 × 1e-7 = 1e-5 of the unit
-// scale; relative to the joint's largest displacement (~0.1 m by 0.1 s) at most 1e-4.
+// iterations from 630 to 330 over the 100 steps; asserted only fewer. The histories: each step's
+// stages stop within the tolerance of the scaled increment (1 m and 1 rad here), and the error
+// left grows at most linearly over the 100 steps, so ≤ 100 × 1e-7 = 1e-5 of the unit scale;
+// relative to the joint's largest displacement (0.27 m by 0.1 s) ≤ 3.7e-5, asserted ≤ 1e-4
+// (measured 1.1e-6).
 BOOST_AUTO_TEST_CASE(a_newton_tolerance_reaches_the_displacement_runs_and_the_mixed_refuse_it) {
     ResponseWindow w = quick_window();
     w.end_time = 0.1;
