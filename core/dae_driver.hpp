@@ -42,6 +42,26 @@ inline NewtonSettings time_step_newton_settings() {
     return s;
 }
 
+// The time steps' Newton settings of a run: the solver's tolerances where the case gives them,
+// else the defaults above (DaeSettings::newton says why 1e-10), and its iteration limit.
+inline NewtonSettings time_step_newton_settings(const SolverSettings& solver) {
+    NewtonSettings s = time_step_newton_settings();
+    s.residual_tolerance = solver.residual_tolerance.value_or(s.residual_tolerance);
+    s.increment_tolerance = solver.increment_tolerance.value_or(s.increment_tolerance);
+    s.max_iterations = solver.max_iterations;
+    return s;
+}
+
+// The Newton settings of a run's steps: the mixed formulation's time steps above; the load steps,
+// and the displacement formulation's time steps, the statics' (newton_settings_from).
+inline NewtonSettings step_newton_settings(const Model& model) {
+    if (model.analysis.kind == AnalysisKind::dynamic &&
+        model.discretization.formulation == Formulation::mixed) {
+        return time_step_newton_settings(model.solver);
+    }
+    return newton_settings_from(model.solver, model.analysis.statics);
+}
+
 struct DaeSettings {
     double start_time = 0.0;
     double end_time = 0.0;

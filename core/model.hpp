@@ -265,8 +265,12 @@ struct Discretization {
 };
 
 struct SolverSettings {
-    double residual_tolerance = 1e-12;   // on the scaled residual (force/moment scales below)
-    double increment_tolerance = 1e-12;  // on the scaled Newton increment
+    // On the scaled residual (force/moment scales below) and the scaled Newton increment. Unset,
+    // each solve takes its own default: 1e-12 (NewtonSettings, core/static_driver.hpp), 1e-10 for
+    // the mixed formulation's time steps (time_step_newton_settings, core/dae_driver.hpp); a value
+    // the case or --set gives applies to every solve of the run.
+    std::optional<double> residual_tolerance;
+    std::optional<double> increment_tolerance;
     int max_iterations = 50;
     bool line_search = true;
     LinearSolver linear_solver = LinearSolver::sparse;  // core/sparse_lu.hpp

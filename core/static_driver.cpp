@@ -43,8 +43,8 @@ bool has_solution(const std::string& status) {
 
 NewtonSettings newton_settings_from(const SolverSettings& solver, const StaticSettings& statics) {
     NewtonSettings s;
-    s.residual_tolerance = solver.residual_tolerance;
-    s.increment_tolerance = solver.increment_tolerance;
+    s.residual_tolerance = solver.residual_tolerance.value_or(s.residual_tolerance);
+    s.increment_tolerance = solver.increment_tolerance.value_or(s.increment_tolerance);
     s.max_iterations = solver.max_iterations;
     s.line_search = solver.line_search;
     s.max_step_cuts = statics.max_step_cuts;

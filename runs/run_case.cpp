@@ -8,6 +8,7 @@
 
 #include "analyses.hpp"
 #include "combinations/registry.hpp"
+#include "core/dae_driver.hpp"
 #include "core/errors.hpp"
 #include "core/kinematic_check.hpp"
 #include "core/non_finite.hpp"
@@ -46,6 +47,7 @@ const char* quadrature_name(Quadrature q) {
 nlohmann::json result_header(const RunRequest& request) {
     const Model& m = request.model;
     const Discretization& d = m.discretization;
+    const NewtonSettings newton = step_newton_settings(m);
     int elements = 0;
     nlohmann::json per_member = nlohmann::json::object();
     for (const Member& member : m.members) {
@@ -74,8 +76,8 @@ nlohmann::json result_header(const RunRequest& request) {
               {"quadrature_points", d.quadrature_points},
               {"mass_rule", choice_name(d.mass_rule())},
               {"driver", choice_name(m.solver.driver)},
-              {"residual_tolerance", m.solver.residual_tolerance},
-              {"increment_tolerance", m.solver.increment_tolerance},
+              {"residual_tolerance", newton.residual_tolerance},
+              {"increment_tolerance", newton.increment_tolerance},
               {"assemble_all_terms", m.solver.assemble_all_terms}}},
             {"steps", nlohmann::json::array()}};
 }

@@ -298,7 +298,7 @@ void dynamic(const Model& model, bool trace, nlohmann::json& result) {
         // the tolerance, not bounded by it; the time companion checks it (tolerance/4).
         s.relative_tolerance = s.absolute_tolerance = d.time_tolerance;
     }
-    s.newton.max_iterations = model.solver.max_iterations;
+    s.newton = time_step_newton_settings(model.solver);
     if (trace) s.newton.trace = &std::cerr;
     std::vector<PointState> states(model.points.size());
     result["steps"] = nlohmann::json::array();

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "core/results.hpp"
 #include "core/static_driver.hpp"
@@ -79,10 +78,6 @@ std::vector<std::string> response_overrides(const Combination& c, const TimeSett
         o.push_back("analysis.time_tolerance=" + number(s.tolerance));
     }
     if (s.newton_tolerance > 0.0) {
-        if (c.formulation != Formulation::displacement) {
-            throw std::invalid_argument(
-                "a Newton tolerance of the time steps is the displacement formulation's only");
-        }
         o.push_back("solver.residual_tolerance=" + number(s.newton_tolerance));
         o.push_back("solver.increment_tolerance=" + number(s.newton_tolerance));
     }
@@ -144,8 +139,11 @@ std::vector<TimeSetting> time_settings(Formulation formulation, bool quick) {
     } else {
         fixed(Integrator::trapezoidal,
               quick ? std::vector<double>{1e-3, 5e-4} : std::vector<double>{5e-4, 2.5e-4});
-        fixed(Integrator::radau_iia_3, quick ? std::vector<double>{2e-3, 1e-3}
-                                             : std::vector<double>{1e-3, 5e-4, 4e-4, 2.5e-4});
+        // 2/3 ms: three steps per output, between 1 ms (1.09e-3, just above the 1e-3 of the
+        // target) and 0.5 ms (1.6e-4).
+        fixed(Integrator::radau_iia_3,
+              quick ? std::vector<double>{2e-3, 1e-3}
+                    : std::vector<double>{1e-3, 2e-3 / 3.0, 5e-4, 4e-4, 2.5e-4});
         // IDA's Δt is only the initial step hint; the case's 1 ms.
         for (double tol :
              quick ? std::vector<double>{1e-4, 1e-5} : std::vector<double>{1e-5, 1e-6, 1e-7})

@@ -34,9 +34,9 @@ struct TimeSetting {
     // IDA: rtol = atol (analysis.relative_tolerance and absolute_tolerance); the other schemes:
     // adaptive steps with analysis.time_tolerance when > 0, fixed steps when 0.
     double tolerance = 0.0;
-    // > 0: the displacement formulation's Newton and stage-iteration tolerance
-    // (solver.residual_tolerance and increment_tolerance); 0: the case's (1e-12). The mixed
-    // formulation's time steps keep their own (core/dae_driver.hpp): refused there.
+    // > 0: the time steps' Newton and stage-iteration tolerance (solver.residual_tolerance and
+    // increment_tolerance); 0: the defaults (1e-12; the mixed formulation's time steps 1e-10,
+    // core/dae_driver.hpp). It applies to the static start too.
     double newton_tolerance = 0.0;
     std::string label() const;   // "dt=0.001" | "tol=1e-06", then ", newton=1e-07" when set
     std::string scheme() const;  // "gauss-legendre-3" | "gauss-legendre-3 adaptive"

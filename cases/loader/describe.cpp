@@ -4,6 +4,7 @@
 
 #include "cases/loader/case_loader.hpp"
 #include "cases/loader/limits.hpp"
+#include "core/dae_driver.hpp"
 #include "core/geometry.hpp"
 #include "parameterizations/registry.hpp"
 
@@ -136,7 +137,7 @@ void describe_analysis(const Model& model, std::ostream& os) {
        << choice_name(d.mass_rule()) << (d.displacement.rescale ? ", rescale" : ", no rescale")
        << "\n";
     os << "solver: " << choice_name(model.solver.driver) << ", residual tol "
-       << model.solver.residual_tolerance << ", max " << model.solver.max_iterations
+       << step_newton_settings(model).residual_tolerance << ", max " << model.solver.max_iterations
        << " iterations\n";
     os << "references: " << model.references.size();
     int gated = 0;

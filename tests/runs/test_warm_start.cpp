@@ -83,7 +83,8 @@ void check_warm_start(const std::string& name, const Combination& c,
         // the two states differ by at most the sum. The chord between the case's points is
         // shorter than the member, so scaling by it is the stricter test.
         const double length = estimate::reference_length(model);
-        const double newton = model.solver.increment_tolerance;
+        const double newton =
+            newton_settings_from(model.solver, model.analysis.statics).increment_tolerance;
         int cold_iterations = 0, warm_iterations = 0;
         for (std::size_t k = 0; k < cold["steps"].size(); ++k) {
             const json& a = cold["steps"][k];
@@ -184,7 +185,8 @@ BOOST_AUTO_TEST_CASE(estimate_companions_start_from_the_run_and_from_each_other)
     Model p1 = model, p2 = model;
     p1.discretization.order = 4;
     p2.discretization.order = 5;
-    const double newton = model.solver.increment_tolerance;
+    const double newton =
+        newton_settings_from(model.solver, model.analysis.statics).increment_tolerance;
     const double bound = 4.0 * std::max(largest_bound(run_case(RunRequest{"", p1}), newton),
                                         largest_bound(run_case(RunRequest{"", p2}), newton));
     const double length = estimate::reference_length(model);
