@@ -35,36 +35,44 @@ struct InertialBlocks {
     Mat6 K = Mat6::Zero();  // inertial stiffness ∂F/∂(u, δθ)
 };
 
-// The blocks of the material mass M* rotated to inertial axes by Q that F^I reads (every 3×3
-// block transforms as Q B Qᵀ): all but the upper right m η̃ᵀ, which only the tangent ∂F/∂(u¨, ω˙)
-// holds; that block of M is left as it was.
-inline void rotate_mass_force_blocks(const Mat6& M_star, const Mat3& Q, Mat6& M) {
-    M.topLeftCorner<3, 3>() = Q * M_star.topLeftCorner<3, 3>() * Q.transpose();
-    M.bottomLeftCorner<3, 3>() = Q * M_star.bottomLeftCorner<3, 3>() * Q.transpose();
-    M.bottomRightCorner<3, 3>() = Q * M_star.bottomRightCorner<3, 3>() * Q.transpose();
-}
-
-// The material mass M* rotated to inertial axes by Q.
+// The material mass M* rotated to inertial axes by Q (every 3×3 block transforms as Q B Qᵀ).
 inline Mat6 rotate_mass(const Mat6& M_star, const Mat3& Q) {
     Mat6 M;
-    rotate_mass_force_blocks(M_star, Q, M);
+    M.topLeftCorner<3, 3>() = Q * M_star.topLeftCorner<3, 3>() * Q.transpose();
     M.topRightCorner<3, 3>() = Q * M_star.topRightCorner<3, 3>() * Q.transpose();
+    M.bottomLeftCorner<3, 3>() = Q * M_star.bottomLeftCorner<3, 3>() * Q.transpose();
+    M.bottomRightCorner<3, 3>() = Q * M_star.bottomRightCorner<3, 3>() * Q.transpose();
     return M;
 }
 
-// The terms of F^I at one section, which the tangent blocks reuse: m, a = m η (a_tilde = m η̃ the
-// rotated mass's lower-left block), ρ, ω̃, ω˙~, ω˙~ + ω̃ω̃, ρ ω and ρ ω˙.
+// F^I from rotated vectors, without the rotated mass: a = m η = Q (m η*) (m η* the axial vector
+// of M*'s lower-left block m η̃*), ρ ω = Q ρ* Qᵀ ω and ρ ω˙ likewise; ã u¨ = a × u¨. Three
+// products of Q with a vector and two of Qᵀ instead of three Q B Qᵀ: the residual's inertial
+// term costs about a third of the rotated-mass form. The tangent's F (calculate_inertial_blocks)
+// is this one, so a residual is the same to the bit with or without its tangent.
+inline Vec6 calculate_inertial_force(const Mat6& M_star, const InertialState& s) {
+    const Mat3 Qt = s.Q.transpose();
+    const Vec3 a = s.Q * so3::axial(M_star.bottomLeftCorner<3, 3>());
+    const Vec3 w_star = Qt * s.omega;
+    const Vec3 wd_star = Qt * s.omega_dot;
+    const Vec3 rho_w = s.Q * (M_star.bottomRightCorner<3, 3>() * w_star);
+    const Vec3 rho_wd = s.Q * (M_star.bottomRightCorner<3, 3>() * wd_star);
+    Vec6 F;
+    F.head<3>() = M_star(0, 0) * s.u_ddot + s.omega_dot.cross(a) + s.omega.cross(s.omega.cross(a));
+    F.tail<3>() = a.cross(s.u_ddot) + rho_wd + s.omega.cross(rho_w);
+    return F;
+}
+
+// The terms of the tangent blocks at one section: a = m η (a_tilde = m η̃ the rotated mass's
+// lower-left block), ρ, ω̃, ω˙~, ω˙~ + ω̃ω̃, ρ ω and ρ ω˙.
 struct InertialTerms {
-    double m = 0.0;
     Mat3 a_tilde, rho, w, wd, wdww;
     Vec3 a, rho_w, rho_wd;
-    Vec6 F;  // F^I
 };
 
-// From the rotated mass's force blocks (rotate_mass_force_blocks) and the state.
+// From the rotated mass and the state.
 inline InertialTerms inertial_terms(const Mat6& M, const InertialState& s) {
     InertialTerms t;
-    t.m = M(0, 0);
     t.a_tilde = M.bottomLeftCorner<3, 3>();
     t.a = so3::axial(t.a_tilde);
     t.rho = M.bottomRightCorner<3, 3>();
@@ -73,18 +81,7 @@ inline InertialTerms inertial_terms(const Mat6& M, const InertialState& s) {
     t.rho_w = t.rho * s.omega;
     t.rho_wd = t.rho * s.omega_dot;
     t.wdww = t.wd + t.w * t.w;
-    t.F.head<3>() = t.m * s.u_ddot + t.wdww * t.a;
-    t.F.tail<3>() = t.a_tilde * s.u_ddot + t.rho_wd + t.w * t.rho_w;
     return t;
-}
-
-// F^I alone, for a residual without its tangent: the same arithmetic as
-// calculate_inertial_blocks(M_star, s).F (the same bits), without the upper-right mass block and
-// the blocks G^I, K^I.
-inline Vec6 calculate_inertial_force(const Mat6& M_star, const InertialState& s) {
-    Mat6 M;
-    rotate_mass_force_blocks(M_star, s.Q, M);
-    return inertial_terms(M, s).F;
 }
 
 // F^I and its three tangent blocks at one section (formulas in the header comment).
@@ -93,7 +90,7 @@ inline InertialBlocks calculate_inertial_blocks(const Mat6& M_star, const Inerti
     b.M = rotate_mass(M_star, s.Q);
     const InertialTerms t = inertial_terms(b.M, s);
     const Mat3 ud = so3::skew(s.u_ddot);
-    b.F = t.F;
+    b.F = calculate_inertial_force(M_star, s);
     b.G.topRightCorner<3, 3>() = -so3::skew(t.w * t.a) - t.w * t.a_tilde;
     b.G.bottomRightCorner<3, 3>() = t.w * t.rho - so3::skew(t.rho_w);
     b.K.topRightCorner<3, 3>() = -t.wdww * t.a_tilde;

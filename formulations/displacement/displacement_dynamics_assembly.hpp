@@ -317,44 +317,55 @@ bool DisplacementDynamics<P>::energy_terms(EnergyTerms& terms) {
 }
 
 // Kinetic energy on the mass points (the quadratic form of the assembled mass matrix), strain
-// energy on the stiffness points: ½ eᵀ C e with C = Q C* Qᵀ equals ½ e*ᵀ C* e*, e* = Qᵀ e.
+// energy on the stiffness points. Both section matrices are X = T X* Tᵀ with T = diag(Q, Q)
+// (rotate_mass, rotate_section), so each quadratic form is taken in the material frame, aᵀ X a =
+// a*ᵀ X* a* with a* = Tᵀ a, and the momentum M v = T (M* v*): two rotations of a vector instead of
+// the rotated 6 × 6 matrix (the energy is evaluated at every time step, for the energy balance).
 template <param::RotationParameterization P>
 BeamEnergy DisplacementDynamics<P>::energy() {
     BeamEnergy E;
+    const auto material = [](const Mat3& Q, const Vec6& a) {
+        Vec6 out;
+        out.head<3>().noalias() = Q.transpose() * a.head<3>();
+        out.tail<3>().noalias() = Q.transpose() * a.tail<3>();
+        return out;
+    };
     for_each_point(mass_mesh_.elements, [&](int, const MeshElement& e, int q,
                                             const InterpolatedRotation<P>& rot) {
         const int nn = static_cast<int>(e.nodes.size());
         Vec6 v = Vec6::Zero();
         Vec3 x = Vec3::Zero();
         for (int j = 0; j < nn; ++j) v += e.N(j, q) * v_[e.nodes[j]];
-        const Mat6 M = rotate_mass(e.qp[q].M_star, rot.R * e.qp[q].Rr);
+        const Mat3 Q = rot.R * e.qp[q].Rr;
+        const Mat6& M_star = e.qp[q].M_star;
         if (!spinning_) {
             // The frame at rest: the velocity is absolute, and the angular momentum is not
             // reported (the energy balance weighs it by the frame's Ω = 0).
-            E.kinetic += 0.5 * e.qp[q].weight * v.dot(M * v);
+            const Vec6 v_star = material(Q, v);
+            E.kinetic += 0.5 * e.qp[q].weight * v_star.dot(M_star * v_star);
             return;
         }
         for (int j = 0; j < nn; ++j) {
             x += e.N(j, q) * (mesh().nodes[e.nodes[j]].x0 + statics_.node_displacement(e.nodes[j]));
         }
-        const Vec6 v_f = absolute_velocity(Vec6::Zero(), x);
-        E.frame_kinetic += 0.5 * e.qp[q].weight * v_f.dot(M * v_f);
-        v = absolute_velocity(v, x);
-        const Vec6 momentum = M * v;
-        E.kinetic += 0.5 * e.qp[q].weight * v.dot(momentum);
-        E.angular_momentum +=
-            e.qp[q].weight * ((x - center_).cross(momentum.head<3>()) + momentum.tail<3>());
+        const Vec6 v_f = material(Q, absolute_velocity(Vec6::Zero(), x));
+        E.frame_kinetic += 0.5 * e.qp[q].weight * v_f.dot(M_star * v_f);
+        const Vec6 v_star = material(Q, absolute_velocity(v, x));
+        const Vec6 momentum_star = M_star * v_star;
+        E.kinetic += 0.5 * e.qp[q].weight * v_star.dot(momentum_star);
+        const Vec3 linear = Q * momentum_star.head<3>();
+        const Vec3 angular = Q * momentum_star.tail<3>();
+        E.angular_momentum += e.qp[q].weight * ((x - center_).cross(linear) + angular);
     });
-    for_each_point(mesh().elements,
-                   [&](int, const MeshElement& e, int q, const InterpolatedRotation<P>& rot) {
-                       const int nn = static_cast<int>(e.nodes.size());
-                       Vec3 up = Vec3::Zero();
-                       for (int j = 0; j < nn; ++j)
-                           up += e.dN(j, q) * statics_.node_displacement(e.nodes[j]);
-                       const Vec6 strain = calculate_strain(e.qp[q].x0_prime, up, rot.R, rot.kappa);
-                       const Mat6 C = rotate_section(e.qp[q].C_star, rot.R * e.qp[q].Rr);
-                       E.strain += 0.5 * e.qp[q].weight * strain.dot(C * strain);
-                   });
+    for_each_point(mesh().elements, [&](int, const MeshElement& e, int q,
+                                        const InterpolatedRotation<P>& rot) {
+        const int nn = static_cast<int>(e.nodes.size());
+        Vec3 up = Vec3::Zero();
+        for (int j = 0; j < nn; ++j) up += e.dN(j, q) * statics_.node_displacement(e.nodes[j]);
+        const Mat3 Q = rot.R * e.qp[q].Rr;
+        const Vec6 strain = material(Q, calculate_strain(e.qp[q].x0_prime, up, rot.R, rot.kappa));
+        E.strain += 0.5 * e.qp[q].weight * strain.dot(e.qp[q].C_star * strain);
+    });
     return E;
 }
 
