@@ -1,6 +1,8 @@
 // The elastica and linear Timoshenko oracles against published tables and their limits.
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "core/oracles/elastica.hpp"
@@ -127,6 +129,79 @@ BOOST_AUTO_TEST_CASE(shear_and_rotary_inertia_lower_the_frequencies_of_a_deep_be
     const double eb1 = beta[0] * beta[0] / (L * L) * std::sqrt(E * I / (rho * A));
     BOOST_TEST(w_full[0] / eb1 > 0.95);
     BOOST_TEST(w_full[0] / eb1 < 0.995);
+}
+
+// The tip's modal series (timoshenko_tip_modes). In the Euler–Bernoulli limit the
+// modal amplitudes of the tip deflection are known in closed form: with the normalised clamped–free
+// modes (W_k(L)² = 4 for ∫W² = L, m_k = ρAL, ω_k² = β_k⁴ EI/(ρA L⁴)) they are 4PL³/(β_k⁴ EI), whose
+// sum is PL³/(3EI). Checks the mode shapes and modal masses independently of their construction.
+BOOST_AUTO_TEST_CASE(release_amplitudes_reduce_to_euler_bernoulli) {
+    const double beta[] = {1.875104069, 4.694091133, 7.854757438, 10.99554073};
+    const double L = 2.0, EI = 3.0, P = 7.0;
+    const TimoshenkoBeam beam{L, EI, 3.0e12 / 4.0, 5.0, 0.0};
+    const TimoshenkoTipModes r = timoshenko_tip_modes(beam, P, 4);
+    for (int k = 0; k < 4; ++k) {
+        const double b4 = std::pow(beta[k], 4);
+        // β to 10 digits: 4e-10 relative in β⁴; the shear correction 1e-12.
+        BOOST_TEST(std::abs(r.deflection[k] / (4.0 * P * L * L * L / (b4 * EI)) - 1.0) < 1e-8);
+    }
+}
+
+// The tip rotation's series at t = 0 is the static rotation under the tip force, PL²/(2EI) (shear
+// adds none): a sum the construction does not contain (the deflection's tail is defined by δ, the
+// rotation's is only bounded through Cauchy–Schwarz), checked within that bound, on the deep beam
+// and on cases/free-vibration.yaml's slender one; the bounds fall with the modes kept.
+BOOST_AUTO_TEST_CASE(release_starts_from_the_static_state_within_its_truncation_bound) {
+    const double E = 2.1e11, G = E / 2.6, rho = 7850.0, L = 1.0;
+    // L/h = 20 (its cut-off leaves 16 modes) and the free vibration's L/h = 100 (82 modes).
+    for (const double h : {0.05, 0.01}) {
+        const double A = h * h, I = h * h * h * h / 12.0;
+        const TimoshenkoBeam beam{L, E * I, 5.0 / 6.0 * G * A, rho * A, rho * I};
+        const double P = 1.0;
+        double last_tail = std::numeric_limits<double>::infinity();
+        for (const int modes : h > 0.02 ? std::vector<int>{4, 14} : std::vector<int>{10, 40}) {
+            const TimoshenkoTipModes r = timoshenko_tip_modes(beam, P, modes);
+            const double psi_static = P * L * L / (2.0 * E * I);
+            BOOST_TEST_MESSAGE("h = " << h << ", " << modes << " modes: tails "
+                                      << r.deflection_tail / timoshenko_tip_deflection(beam, P)
+                                      << " (deflection), " << r.rotation_tail / psi_static
+                                      << " (rotation), relative");
+            BOOST_TEST(std::abs(release_tip_rotation(r, 0.0) - psi_static) <=
+                       r.rotation_tail + 1e-12 * psi_static);
+            BOOST_TEST(r.rotation_tail < last_tail);
+            last_tail = r.rotation_tail;
+            // 40 modes: the release's deflection to 1e-6 of δ, its rotation (a slower series,
+            // Σ 1/β³) to 2e-4.
+            if (modes == 40) {
+                BOOST_TEST(r.deflection_tail < 1e-6 * timoshenko_tip_deflection(beam, P));
+                BOOST_TEST(r.rotation_tail < 2e-4 * psi_static);
+            }
+        }
+    }
+}
+
+// Driven by P sin Ωt from rest: the series starts at rest (every mode's response is O(t³), so
+// w(0) = 0 and w(1 µs) is far below δ) and, for a slow Ω, is quasi-static, P sin Ωt · δ/P: the
+// kept modes' dynamic part is at most Ω/(ω₁ − Ω) ≈ 2e-5 of it, the truncated modes' bounded by
+// the tail.
+BOOST_AUTO_TEST_CASE(sine_response_starts_at_rest_and_is_quasi_static_when_slow) {
+    const double E = 2.1e11, G = E / 2.6, h = 0.01, rho = 7850.0, L = 1.0;
+    const double A = h * h, I = h * h * h * h / 12.0;
+    const TimoshenkoBeam beam{L, E * I, 5.0 / 6.0 * G * A, rho * A, rho * I};
+    const TimoshenkoTipModes r = timoshenko_tip_modes(beam, 1.0, 40);
+    const double delta = timoshenko_tip_deflection(beam, 1.0);
+    BOOST_TEST(std::abs(sine_tip_deflection(r, 20.0, 0.0)) < 1e-15 * delta);
+    // w(t) ≈ w‴(0) t³/6 near 0: at t = 1e-6 s, |w| ≤ 1e-12 δ for any ω_k (Ω ω_k² t³/6 · δ).
+    BOOST_TEST(std::abs(sine_tip_deflection(r, 20.0, 1e-6)) < 1e-9 * delta);
+    // Ω = 1e-3 rad/s, t = π/(2Ω): the load at its peak; the dynamic part is Ω/ω₁ ≈ 2e-5 of it.
+    const double slow = 1e-3, t = 0.5 * std::acos(-1.0) / slow;
+    BOOST_TEST(std::abs(sine_tip_deflection(r, slow, t) / delta - 1.0) <
+               slow / (r.omegas.front() - slow) +
+                   r.deflection_tail * sine_tail_factor(r, slow) / delta);
+    const double psi_static = 1.0 / (2.0 * E * I);
+    BOOST_TEST(std::abs(sine_tip_rotation(r, slow, t) / psi_static - 1.0) <
+               slow / (r.omegas.front() - slow) +
+                   r.rotation_tail * sine_tail_factor(r, slow) / psi_static);
 }
 
 BOOST_AUTO_TEST_CASE(asking_past_the_cutoff_is_refused) {
