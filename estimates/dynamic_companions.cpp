@@ -36,6 +36,14 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
         c.relative_tolerance = d.relative_tolerance / plan.time_ratio;
         c.absolute_tolerance = d.absolute_tolerance / plan.time_ratio;
         c.time_tolerance = d.time_tolerance / plan.time_ratio;
+        // Adaptive steps land on the output times (core/time_stepping.cpp), so no step is longer
+        // than the output interval. Where a loose tolerance leaves the run's steps at that cap, a
+        // companion capped alike would take the very same steps, and the difference, hence the
+        // time estimate, would be zero whatever the true time error. The companion's outputs
+        // come twice as often (the run's output times among them): its cap is half the run's, so
+        // it refines every step, capped or not. At a capped step its error falls by 2^p instead
+        // of 4, so the factor above overstates the error there by at most 4/3 (safe side).
+        if (!uses_ida(model)) c.output_interval *= 0.5;
         plan.time.push_back({"tolerance/4", std::move(companion)});
         return plan;
     }

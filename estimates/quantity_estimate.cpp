@@ -50,19 +50,21 @@ QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, do
     if (at_round_off(e1, e2, floor, e)) return e;
     std::ostringstream why;
     why.precision(3);
-    if (!(e2 < e1) || e2 <= floor) {
-        // e₂ ≥ e₁: not converging monotonically; e₂ at the floor while e₁ is not: the order is
-        // undefined (the h/2 and h/4 values agree to round-off, the h value does not).
+    if (e2 <= floor) {
+        // The h/2 and h/4 values agree to round-off and the h value does not: the companions have
+        // converged, so the run's error is its difference from them, e₁, measured rather than
+        // extrapolated (no order is needed, none is defined). A linear problem whose nodal values
+        // the mixed formulation reproduces at h/2 already does this.
+        e.error = e1;
+        e.reason = "the h/2 and h/4 companions agree to round-off: the run's difference from them";
+        return e;
+    }
+    if (!(e2 < e1)) {
+        // e₂ ≥ e₁: not converging monotonically.
         e.error = richardson(e1, theoretical_order);
         e.reliable = false;
-        if (e2 > floor) {
-            e.observed_order = std::log2(e1 / e2);
-            why << "not monotone: |q_h/2 - q_h/4| = " << e2 << " >= |q_h - q_h/2| = " << e1;
-        } else {
-            why << "order undefined: the h/2 and h/4 companions agree to round-off, the run "
-                   "differs by "
-                << e1;
-        }
+        e.observed_order = std::log2(e1 / e2);
+        why << "not monotone: |q_h/2 - q_h/4| = " << e2 << " >= |q_h - q_h/2| = " << e1;
         e.reason = why.str();
         return e;
     }

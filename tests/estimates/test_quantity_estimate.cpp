@@ -82,11 +82,13 @@ BOOST_AUTO_TEST_CASE(a_non_monotone_sequence_is_not_reliable) {
     BOOST_TEST(e.error > 0.0);
 }
 
-BOOST_AUTO_TEST_CASE(companions_agreeing_to_round_off_make_the_order_undefined) {
+// Converged companions: the run's error is its difference from them, reliable, with no order.
+BOOST_AUTO_TEST_CASE(companions_agreeing_to_round_off_give_the_runs_difference) {
     const QuantityEstimate e = h_refinement(1e-5, 0.0, 2.0, 1e-12);
-    BOOST_TEST(!e.reliable);
+    BOOST_TEST(e.reliable);
+    BOOST_TEST(e.error == 1e-5);
     BOOST_TEST(!e.observed_order.has_value());
-    BOOST_TEST(e.reason.find("order undefined") != std::string::npos);
+    BOOST_TEST(e.reason.find("agree to round-off") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_quantity_unchanged_by_refinement_is_estimated_at_the_floor) {
