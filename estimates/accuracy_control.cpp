@@ -52,6 +52,8 @@ struct Attempt {
     std::size_t steps = 0;  // reported (converged) load steps
 };
 
+bool dynamic(const Model& model) { return model.analysis.kind == AnalysisKind::dynamic; }
+
 int total(const std::vector<int>& elements) {
     int n = 0;
     for (const int e : elements) n += e;
@@ -226,6 +228,7 @@ json attempt_json(const Model& model, const Attempt& a, const json& result, doub
               {"wall_seconds", seconds},
               {"run_seconds", result.value("wall_seconds", 0.0)}};
     if (uses_trapezoidal_rule(model)) j["refine"] = a.refine;
+    if (dynamic(model)) j["time_tolerance"] = model.analysis.dynamics.time_tolerance;
     if (result.contains("estimate")) {
         j["estimate_status"] = result["estimate"].value("status", std::string());
         j["estimate_seconds"] = result["estimate"].value("wall_seconds", 0.0);
@@ -233,10 +236,66 @@ json attempt_json(const Model& model, const Attempt& a, const json& result, doub
     if (m) {
         j["worst_relative"] = m->worst;
         j["worst_quantity"] = m->worst_what;
+        if (dynamic(model)) {
+            j["worst_space"] = m->worst_space;
+            j["worst_time"] = m->worst_time;
+        }
         j["unreliable"] = m->unreliable;
         j["missing"] = m->missing;
     }
     return j;
+}
+
+// Dynamics: each half of the target goes to one of the two errors, the mesh's and the time
+// step's (their estimates add up to the history's, docs/error-estimates.md, Dynamics).
+constexpr double kDynamicShare = 0.5;
+
+// The adaptive steps' global error is proportional to their tolerance (order 1 in it,
+// estimates/dynamic_companions.cpp): the tolerance that brings the time part to its share, with
+// the margin of the element counts, between 1/2 and 1/16 of the current. A factor up to 4 takes
+// 4: the estimate's time companion ran at tolerance/4 on this mesh, so that run is at hand
+// (runs/accuracy_run.cpp reuses it). A time part that is not reliable (the phase criterion) has
+// no usable size: 4 as well.
+Step tighten_time(const Model& model, const AccuracyMeasure& m, double share,
+                  const AccuracyBudget& budget, double case_tolerance) {
+    Step s;
+    double f = m.time_unreliable > 0 ? 4.0 : kCountMargin * m.worst_time / share;
+    f = std::clamp(f, 4.0, kMaxSplit);
+    const double now = model.analysis.dynamics.time_tolerance;
+    const double next = now / f;
+    if (next < case_tolerance / budget.time_tolerance_factor || next < kMinAccuracy) {
+        s.stop = "budget: the time tolerance " + number(next) + " would pass the smallest, " +
+                 number(std::max(case_tolerance / budget.time_tolerance_factor, kMinAccuracy));
+        return s;
+    }
+    s.model = model;
+    s.model->analysis.dynamics.time_tolerance = next;
+    s.decision = "time tolerance " + number(now) + " -> " + number(next) + " (time part " +
+                 number(m.worst_time) + (m.time_unreliable > 0 ? ", not reliable" : "") +
+                 " of its history, share " + number(share) + ")";
+    return s;
+}
+
+// The budget's attempts or time spent after `attempts` attempts since `start`: why to stop, or "".
+std::string budget_spent(std::size_t attempts, Clock::time_point start,
+                         const AccuracyBudget& budget, const std::string& problem) {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    if (static_cast<int>(attempts) >= budget.attempts) {
+        return "budget: " + std::to_string(budget.attempts) + " attempts; " + problem;
+    }
+    if (elapsed >= budget.seconds) {
+        return "budget: " + number(elapsed) + " s spent of " + number(budget.seconds) + " s; " +
+               problem;
+    }
+    return "";
+}
+
+std::string strategy(const Model& model) {
+    if (model.discretization.formulation == Formulation::mixed) {
+        return "h (element count from the observed order)";
+    }
+    return uses_trapezoidal_rule(model) ? "p while spectral, else h; refine doubled per step"
+                                        : "p while spectral, else h";
 }
 
 }  // namespace
@@ -352,17 +411,8 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
             break;
         }
         attempts.back()["next"] = next.decision;
-        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-        if (static_cast<int>(history.size()) >= budget.attempts) {
-            stop = "budget: " + std::to_string(budget.attempts) + " attempts; " +
-                   (m ? m->first_problem : std::string());
-            break;
-        }
-        if (elapsed >= budget.seconds) {
-            stop = "budget: " + number(elapsed) + " s spent of " + number(budget.seconds) + " s; " +
-                   (m ? m->first_problem : std::string());
-            break;
-        }
+        stop = budget_spent(history.size(), start, budget, m ? m->first_problem : std::string());
+        if (!stop.empty()) break;
         current = std::move(*next.model);
     }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
@@ -371,10 +421,7 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         {"tolerance", tolerance},
         {"target", target},
         {"status", reached ? "reached" : "not-reached"},
-        {"strategy", mixed ? "h (element count from the observed order)"
-                     : uses_trapezoidal_rule(model)
-                         ? "p while spectral, else h; refine doubled per step"
-                         : "p while spectral, else h"},
+        {"strategy", strategy(model)},
         {"scales",
          {{"displacement", reference_length(model)},
           {"rotation", 1.0},
@@ -390,6 +437,126 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
         acc["reason"] = stop;
         result["status"] = "accuracy-not-reached";
         result["message"] = "accuracy " + number(tolerance) + " not reached: " + stop;
+    }
+    result["accuracy"] = acc;
+    return result;
+}
+
+nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
+                                        const AccuracyBudget& budget, const EstimatedRun& run) {
+    const double target = tolerance / 2.0;
+    const double share = kDynamicShare * target;
+    const Clock::time_point start = Clock::now();
+    const bool mixed = model.discretization.formulation == Formulation::mixed;
+    const double case_tolerance = model.analysis.dynamics.time_tolerance;
+    Model current = model;
+    std::vector<Attempt> history;  // `worst`: the space part, which the mesh refinement follows
+    json attempts = json::array();
+    json result;
+    std::optional<AccuracyMeasure> m;
+    std::string stop;
+    bool reached = false;
+    bool refined = false;
+    while (true) {
+        const Clock::time_point t0 = Clock::now();
+        result = run(current);
+        const bool reused = result.value("reused", false);
+        result.erase("reused");
+        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        Attempt a{current.discretization.order, elements_of(current), 1,
+                  current.discretization.refine, result.value("status", std::string("error"))};
+        a.refined = refined;
+        m.reset();
+        if (has_solution(a.status)) {
+            m = measure_accuracy(current, result, target);
+            a.measured = m->quantities > 0 && m->missing == 0;
+            a.worst = m->worst_space;
+        }
+        history.push_back(a);
+        attempts.push_back(attempt_json(current, a, result, seconds, m ? &*m : nullptr));
+        attempts.back()["reused"] = reused;
+        if (m && meets(*m, target)) {
+            reached = true;
+            break;
+        }
+        if (!m) {
+            stop =
+                "the run's status is " + a.status + ": " + result.value("message", std::string());
+            break;
+        }
+        if (m->missing > 0 || m->quantities == 0) {
+            stop = "no complete estimate: " + m->first_problem;
+            break;
+        }
+        const bool space = m->worst_space > share || m->space_unreliable > 0;
+        // The combined estimate is at most the sum of its parts: with both parts within their
+        // shares only reliability can fail it, and an unreliable space part refines the mesh.
+        const bool time = m->worst_time > share || m->time_unreliable > 0 || !space;
+        Model next = current;
+        std::vector<std::string> decisions;
+        refined = false;
+        if (space) {
+            if (stagnated(history)) {
+                stop = "round-off floor: the space estimates stagnate near " +
+                       number(m->worst_space) + " of their amplitude over the last refinements";
+                break;
+            }
+            Step s = mixed ? refine_mixed(current, a, m->worst_order, share, budget)
+                           : refine_displacement(current, history, share, budget);
+            if (!s.model) {
+                stop = s.stop + "; " + m->first_problem;
+                break;
+            }
+            next = std::move(*s.model);
+            decisions.push_back(s.decision);
+            refined = true;
+        }
+        if (time) {
+            Step s = tighten_time(next, *m, share, budget, case_tolerance);
+            if (!s.model) {
+                stop = s.stop + "; " + m->first_problem;
+                break;
+            }
+            next = std::move(*s.model);
+            decisions.push_back(s.decision);
+        }
+        std::string decision;
+        for (const std::string& d : decisions) decision += (decision.empty() ? "" : "; ") + d;
+        attempts.back()["next"] = decision;
+        stop = budget_spent(history.size(), start, budget, m->first_problem);
+        if (!stop.empty()) break;
+        current = std::move(next);
+    }
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const Attempt& last = history.back();
+    json acc = {{"tolerance", tolerance},
+                {"target", target},
+                {"share", share},
+                {"status", reached ? "reached" : "not-reached"},
+                {"strategy", "the mesh (" + strategy(model) +
+                                 ") and the adaptive steps' time tolerance, each to half the "
+                                 "target"},
+                {"scales", {{"history", "its amplitude (largest |u(t)| or |angle(t)|)"}}},
+                {"chosen",
+                 {{"elements", total(last.elements)},
+                  {"order", last.order},
+                  {"time_tolerance", current.analysis.dynamics.time_tolerance}}},
+                {"attempts", attempts},
+                {"wall_seconds", elapsed},
+                {"solver_status", last.status}};
+    if (uses_trapezoidal_rule(model)) acc["chosen"]["refine"] = last.refine;
+    if (m) {
+        acc["worst_relative"] = m->worst;
+        acc["worst_quantity"] = m->worst_what;
+        acc["space_estimate"] = m->worst_space;
+        acc["time_estimate"] = m->worst_time;
+    }
+    if (!reached) {
+        acc["reason"] = stop;
+        if (has_solution(last.status)) {
+            result["status"] = "accuracy-not-reached";
+            result["message"] = "accuracy " + number(tolerance) + " not reached: " + stop;
+        }
     }
     result["accuracy"] = acc;
     return result;

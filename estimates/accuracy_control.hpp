@@ -41,7 +41,9 @@ struct AccuracyBudget {
     // format's 1000.
     int refine = 500;
     int substeps_factor = 64;  // the case's sub-steps doubled at most 6 times
-    double seconds = 600.0;    // total wall time; `run --time-limit` replaces it
+    // Dynamics: the adaptive steps' time tolerance divided by at most this in all.
+    double time_tolerance_factor = 4096.0;
+    double seconds = 600.0;  // total wall time; `run --time-limit` replaces it
 };
 
 // Runs a model and adds its estimate (the program's run_case and add_run_estimate). A result
@@ -58,6 +60,17 @@ using EstimatedRun = std::function<nlohmann::json(const Model&)>;
 nlohmann::json control_accuracy(const Model& model, double tolerance, const AccuracyBudget& budget,
                                 const EstimatedRun& run,
                                 const std::optional<Model>& start = std::nullopt);
+
+// The accuracy control of a dynamic run (docs/accuracy-control.md, "Dynamics"): the target
+// tolerance / 2 split in halves between the mesh and the time step. Each attempt's estimate
+// (space and time parts of every history, over its amplitude) decides what to refine: the mesh as
+// for the statics (the displacement formulation's order while spectral, else its elements; the
+// mixed formulation's elements) when the space part exceeds its half or is not reliable, and the
+// adaptive steps' analysis.dynamics.time_tolerance (which the loader set to tolerance / 4) when the
+// time part does. Starts from the case's own discretization. Stops as control_accuracy does, and
+// also when the run itself stops (its status and message name the step and the time).
+nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
+                                        const AccuracyBudget& budget, const EstimatedRun& run);
 
 // The start of the displacement formulation's controlled run (docs/accuracy-control.md, "Cost"):
 // one element per member at order max(the case's, 6), whatever the case's mesh. Below order 6

@@ -72,17 +72,25 @@ AccuracyMeasure measure_histories(const json& result, double target) {
     for (const auto& [point, quantities] : result["estimate"]["history"].items()) {
         for (const auto& [quantity, h] : quantities.items()) {
             if (!h.contains("relative")) continue;
-            bool reliable = true;
+            bool reliable = true, space_reliable = true, time_reliable = true;
             std::string reason;
             for (const json& step : steps) {
                 if (!step.contains("estimate") || !step["estimate"].contains(point)) continue;
                 const json& q = step["estimate"][point][quantity];
                 if (!q.value("reliable", false)) {
+                    if (reliable) reason = q.value("reason", std::string());
                     reliable = false;
-                    reason = q.value("reason", std::string());
-                    break;
+                    // A part the entry does not state counts as not reliable.
+                    const json none = json::object();
+                    space_reliable =
+                        space_reliable && q.value("space", none).value("reliable", false);
+                    time_reliable = time_reliable && q.value("time", none).value("reliable", false);
                 }
             }
+            m.worst_space = std::max(m.worst_space, h.value("relative_space", 0.0));
+            m.worst_time = std::max(m.worst_time, h.value("relative_time", 0.0));
+            if (!space_reliable) ++m.space_unreliable;
+            if (!time_reliable) ++m.time_unreliable;
             json entry = {{"error", h["relative"]}, {"reliable", reliable}};
             if (!reliable) entry["reason"] = reason;
             add(m, entry, 1.0, target, point + " " + quantity + " history (of its amplitude)");

@@ -26,6 +26,12 @@ struct AccuracyMeasure {
     std::string worst_what;  // which quantity: "tip displacement at load factor 2", "mode 3"
     // The observed h-order of the worst quantity's estimate (h/2, h/4), 0 when it has none.
     double worst_order = 0.0;
+    // A dynamic run's histories: the largest space and time parts of the estimate (each over its
+    // history's amplitude) and how many histories have a space or a time part that is not
+    // reliable at some output time; the accuracy control refines the mesh or the time step by
+    // them (estimates/accuracy_control.hpp).
+    double worst_space = 0.0, worst_time = 0.0;
+    int space_unreliable = 0, time_unreliable = 0;
     int quantities = 0;  // estimated quantities
     int unreliable = 0;  // estimates not reliable: they never meet a target
     int missing = 0;     // quantities without an estimate

@@ -17,11 +17,14 @@ using json = nlohmann::json;
 // 2e-4 m, so 1e-4 of its amplitude); the root is clamped (no relative error). `reliable` is the
 // tip displacement's estimate at the second time.
 json dynamic_result(bool reliable) {
-    const json q = {{"error", 1e-4}, {"reliable", true}, {"relative", 5e-5}};
+    const json part = {{"error", 5e-5}, {"reliable", true}};
+    const json q = {
+        {"error", 1e-4}, {"reliable", true}, {"relative", 5e-5}, {"space", part}, {"time", part}};
     json late = q;
     late["error"] = 2e-4;
     late["relative"] = 1e-4;
     late["reliable"] = reliable;
+    late["time"]["reliable"] = reliable;
     if (!reliable) late["reason"] = "time: phase 0.2 rad > 0.1 rad";
     const json rotation = {{"error", 1e-6}, {"reliable", true}, {"relative", 1e-5}};
     return {
@@ -33,7 +36,12 @@ json dynamic_result(bool reliable) {
          {{"status", "estimated"},
           {"history",
            {{"tip",
-             {{"displacement", {{"amplitude", 2.0}, {"max_error", 2e-4}, {"relative", 1e-4}}},
+             {{"displacement",
+               {{"amplitude", 2.0},
+                {"max_error", 2e-4},
+                {"relative", 1e-4},
+                {"relative_space", 4e-5},
+                {"relative_time", 6e-5}}},
               {"rotation", {{"amplitude", 0.1}, {"max_error", 1e-6}, {"relative", 1e-5}}}}},
             {"root", {{"displacement", {{"amplitude", 0.0}, {"max_error", 0.0}}}}}}}}}};
 }
@@ -61,6 +69,12 @@ BOOST_AUTO_TEST_CASE(a_dynamic_run_is_measured_by_its_histories_relative_to_thei
 BOOST_AUTO_TEST_CASE(a_history_not_reliable_at_one_time_meets_no_target) {
     const AccuracyMeasure m = measure_accuracy(far_points(), dynamic_result(false), 1.0);
     BOOST_TEST(m.unreliable == 1);
+    // The time part is the one not reliable (what the dynamic control tightens), the largest
+    // parts those of the tip displacement's history.
+    BOOST_TEST(m.time_unreliable == 1);
+    BOOST_TEST(m.space_unreliable == 0);
+    BOOST_TEST(m.worst_space == 4e-5);
+    BOOST_TEST(m.worst_time == 6e-5);
     BOOST_TEST(!meets(m, 1.0));
     BOOST_TEST(m.first_problem.find("phase 0.2 rad") != std::string::npos, m.first_problem);
 }
