@@ -276,6 +276,33 @@ Step tighten_time(const Model& model, const AccuracyMeasure& m, double share,
     return s;
 }
 
+// One attempt: runs `model` with its estimate, measures the estimates against `target` (when the
+// run has a solution) and records the attempt in `history` and `attempts`. The attempt's `worst`
+// is the measure's worst, or in dynamics its worst space part, which the mesh refinement follows.
+std::optional<AccuracyMeasure> run_attempt(const EstimatedRun& run, const Model& model,
+                                           double target, bool refined, json& result,
+                                           std::vector<Attempt>& history, json& attempts) {
+    const Clock::time_point t0 = Clock::now();
+    result = run(model);
+    const bool reused = result.value("reused", false);
+    result.erase("reused");
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    Attempt a{model.discretization.order, elements_of(model), model.analysis.statics.substeps,
+              model.discretization.refine, result.value("status", std::string("error"))};
+    a.refined = refined;
+    a.steps = result.value("steps", json::array()).size();
+    std::optional<AccuracyMeasure> m;
+    if (has_solution(a.status)) {
+        m = measure_accuracy(model, result, target);
+        a.measured = m->quantities > 0 && m->missing == 0;
+        a.worst = dynamic(model) ? m->worst_space : m->worst;
+    }
+    history.push_back(a);
+    attempts.push_back(attempt_json(model, a, result, seconds, m ? &*m : nullptr));
+    attempts.back()["reused"] = reused;
+    return m;
+}
+
 // The budget's attempts or time spent after `attempts` attempts since `start`: why to stop, or "".
 std::string budget_spent(std::size_t attempts, Clock::time_point start,
                          const AccuracyBudget& budget, const std::string& problem) {
@@ -331,25 +358,9 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
     bool reached = false;
     bool refined = false;  // the current model refines the discretization of the previous one
     while (true) {
-        const Clock::time_point t0 = Clock::now();
-        result = run(current);
-        const bool reused = result.value("reused", false);
-        result.erase("reused");
-        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        Attempt a{current.discretization.order, elements_of(current),
-                  current.analysis.statics.substeps, current.discretization.refine,
-                  result.value("status", std::string("error"))};
-        a.refined = refined;
-        a.steps = result.value("steps", json::array()).size();
-        std::optional<AccuracyMeasure> m;
-        if (has_solution(a.status)) {
-            m = measure_accuracy(current, result, target);
-            a.measured = m->quantities > 0 && m->missing == 0;
-            a.worst = m->worst;
-        }
-        history.push_back(a);
-        attempts.push_back(attempt_json(current, a, result, seconds, m ? &*m : nullptr));
-        attempts.back()["reused"] = reused;
+        const std::optional<AccuracyMeasure> m =
+            run_attempt(run, current, target, refined, result, history, attempts);
+        const Attempt& a = history.back();
         Step next;
         if (m && meets(*m, target)) {
             reached = true;
@@ -458,23 +469,8 @@ nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
     bool reached = false;
     bool refined = false;
     while (true) {
-        const Clock::time_point t0 = Clock::now();
-        result = run(current);
-        const bool reused = result.value("reused", false);
-        result.erase("reused");
-        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        Attempt a{current.discretization.order, elements_of(current), 1,
-                  current.discretization.refine, result.value("status", std::string("error"))};
-        a.refined = refined;
-        m.reset();
-        if (has_solution(a.status)) {
-            m = measure_accuracy(current, result, target);
-            a.measured = m->quantities > 0 && m->missing == 0;
-            a.worst = m->worst_space;
-        }
-        history.push_back(a);
-        attempts.push_back(attempt_json(current, a, result, seconds, m ? &*m : nullptr));
-        attempts.back()["reused"] = reused;
+        m = run_attempt(run, current, target, refined, result, history, attempts);
+        const Attempt& a = history.back();
         if (m && meets(*m, target)) {
             reached = true;
             break;
