@@ -18,8 +18,9 @@ namespace {
 
 // What tells two runs of one controlled case apart: the refinement and the companions change only
 // these (elements per member, order, sub-steps, the trapezoidal rule's refine; in a dynamic
-// analysis the adaptive steps' tolerance and IDA's tolerances).
-using Key = std::tuple<std::vector<int>, int, int, int, double, double, double>;
+// analysis the adaptive steps' tolerance, IDA's tolerances and the output interval, which the
+// time companion of adaptive steps halves: estimates/dynamic_companions.cpp).
+using Key = std::tuple<std::vector<int>, int, int, int, double, double, double, double>;
 
 Key key_of(const Model& model) {
     std::vector<int> elements;
@@ -31,7 +32,8 @@ Key key_of(const Model& model) {
             model.discretization.refine,
             d.time_tolerance,
             d.relative_tolerance,
-            d.absolute_tolerance};
+            d.absolute_tolerance,
+            d.output_interval};
 }
 
 std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
@@ -83,8 +85,8 @@ nlohmann::json run_to_accuracy(const RunRequest& request) {
     RunCache cache(request);
     if (request.model.analysis.kind == AnalysisKind::dynamic) {
         // The estimate as add_run_estimate makes it, its companions through the cache: the p+1
-        // (or h/2) companion is the next attempt when the mesh is refined by one step, the
-        // tolerance/4 companion when the time tolerance is divided by 4.
+        // (or h/2) companion is the next attempt when only the mesh is refined, by one step. The
+        // time companion is never an attempt: its outputs come twice as often.
         return estimate::control_dynamic_accuracy(
             request.model, request.model.analysis.accuracy, budget, [&](const Model& model) {
                 bool reused = false;
