@@ -42,7 +42,7 @@ oracle::TimoshenkoBeam case_beam() {
     return {1.0, E * I, 5.0 / 6.0 * G * A, rho * A, rho * I};
 }
 
-struct Row {
+struct DrivenRun {
     const char* formulation;
     const char* integrator;
     double tolerance;
@@ -90,12 +90,12 @@ BOOST_AUTO_TEST_CASE(
     // The amplitudes are ≈ δ and ≈ 1.5 δ/L rad (the static tip rotation PL²/2EI is 1.5 δ/L).
     BOOST_TEST(factor * modes.deflection_tail < 1e-5 * delta);
     BOOST_TEST(factor * modes.rotation_tail < 1e-5 * modes.static_rotation);
-    const Row rows[] = {{"displacement", "gauss-legendre-3", 1e-3},
+    const DrivenRun rows[] = {{"displacement", "gauss-legendre-3", 1e-3},
                         {"displacement", "generalized-alpha", 1e-2},
                         {"mixed", "radau-iia-3", 1e-2}};
     const std::string path =
         std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/cantilever-sine-tip-force.yaml";
-    for (const Row& row : rows) {
+    for (const DrivenRun& row : rows) {
         std::ostringstream tol;
         tol << std::setprecision(17) << row.tolerance;
         const std::vector<std::string> o = {
