@@ -2,6 +2,8 @@
 
 #include <klu.h>
 
+#include "core/klu_settings.hpp"
+
 namespace rotbeam {
 
 struct ComplexKlu::Impl {
@@ -12,7 +14,7 @@ struct ComplexKlu::Impl {
     Eigen::Index rows = -1, nonzeros = -1;
     int pivoted = 0;
 
-    Impl() { klu_defaults(&common); }
+    Impl() { set_klu_settings(common); }
     ~Impl() { release(); }
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;

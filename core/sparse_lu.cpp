@@ -6,6 +6,8 @@
 #include <Eigen/SparseLU>
 #include <optional>
 
+#include "core/klu_settings.hpp"
+
 namespace rotbeam {
 
 struct SparseLUSolver::Impl {
@@ -43,7 +45,7 @@ struct SparseLUSolver::Impl {
 
 SparseLUSolver::SparseLUSolver(bool refactor_in_place) : impl_(std::make_unique<Impl>()) {
     impl_->klu = refactor_in_place;
-    if (impl_->klu) klu_defaults(&impl_->common);
+    if (impl_->klu) set_klu_settings(impl_->common);
 }
 SparseLUSolver::SparseLUSolver(Kind kind) : SparseLUSolver(kind == Kind::klu_refactor) {
     impl_->dense = kind == Kind::dense;
