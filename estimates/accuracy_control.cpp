@@ -303,6 +303,28 @@ std::optional<AccuracyMeasure> run_attempt(const EstimatedRun& run, const Model&
     return m;
 }
 
+// Whether the budget's time stopped the attempt: its run, or a companion of its estimate, ran out
+// of the wall time the budget had left, which the caller gives every run as its limit
+// (runs/accuracy_run.cpp); such a run keeps no numbers (status `time-limit`).
+bool stopped_by_time(const json& result) {
+    if (result.value("status", std::string()) == "time-limit") return true;
+    const json none = json::array();
+    const json& estimate = result.contains("estimate") ? result["estimate"] : json::object();
+    for (const json& c : estimate.contains("companions") ? estimate["companions"] : none) {
+        if (c.value("status", std::string()) == "time-limit") return true;
+    }
+    return false;
+}
+
+// Why the control stops when the budget's time stopped an attempt; `previous`: an earlier attempt
+// with a solution is returned in its place (its estimates did not meet the target either).
+std::string time_budget_stop(Clock::time_point start, const AccuracyBudget& budget, bool previous) {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    return "budget: " + number(elapsed) + " s spent of " + number(budget.seconds) +
+           " s; the last attempt's runs stopped at the budget's time" +
+           (previous ? ", the result is the attempt before it" : "");
+}
+
 // The budget's attempts or time spent after `attempts` attempts since `start`: why to stop, or "".
 std::string budget_spent(std::size_t attempts, Clock::time_point start,
                          const AccuracyBudget& budget, const std::string& problem) {
@@ -357,6 +379,7 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
     std::string stop;  // non-empty: not reached, why
     bool reached = false;
     bool refined = false;  // the current model refines the discretization of the previous one
+    json solved;           // the last attempt's result with a solution (for a budget stop)
     while (true) {
         const std::optional<AccuracyMeasure> m =
             run_attempt(run, current, target, refined, result, history, attempts);
@@ -366,6 +389,16 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
             reached = true;
             break;
         }
+        if (stopped_by_time(result)) {
+            // Its attempt stays in `attempts` (the record); the answer is the one before it.
+            stop = time_budget_stop(start, budget, !solved.is_null());
+            if (!solved.is_null()) {
+                result = std::move(solved);
+                history.pop_back();
+            }
+            break;
+        }
+        if (has_solution(a.status)) solved = result;
         if (a.status == "diverged") {
             // A Newton failure at a load step: more, smaller load steps (the discretization error
             // of a static state does not depend on the path, only Newton's convergence does).
@@ -468,6 +501,13 @@ nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
     std::string stop;
     bool reached = false;
     bool refined = false;
+    // The last attempt with a solution: its result, measure and model (for a budget stop).
+    struct Solved {
+        json result;
+        std::optional<AccuracyMeasure> m;
+        Model model;
+    };
+    std::optional<Solved> solved;
     while (true) {
         m = run_attempt(run, current, target, refined, result, history, attempts);
         const Attempt& a = history.back();
@@ -475,6 +515,18 @@ nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
             reached = true;
             break;
         }
+        if (stopped_by_time(result)) {
+            // Its attempt stays in `attempts` (the record); the answer is the one before it.
+            stop = time_budget_stop(start, budget, solved.has_value());
+            if (solved) {
+                result = std::move(solved->result);
+                m = solved->m;
+                current = std::move(solved->model);
+                history.pop_back();
+            }
+            break;
+        }
+        if (has_solution(a.status)) solved = Solved{result, m, current};
         if (!m) {
             stop =
                 "the run's status is " + a.status + ": " + result.value("message", std::string());

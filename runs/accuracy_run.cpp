@@ -1,5 +1,7 @@
 #include "runs/accuracy_run.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -49,9 +51,17 @@ std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {
 // Warm start (docs/accuracy-control.md, "Warm start"): each new static run starts every load step
 // from the state of the last run that solved all of its steps, at the same load factor, evaluated
 // on the new discretization (RunRequest::start). The first run starts from the undeformed beam.
+//
+// The budget's time is a limit on the whole control, not on each run: every run, companions
+// included, gets the wall time the budget has left as its own limit (core/time_limit.hpp), so an
+// attempt that would outlast the budget stops at it with the status `time-limit` (never cached:
+// it has no numbers), and the control says so (estimates/accuracy_control.cpp).
 class RunCache {
   public:
-    explicit RunCache(const RunRequest& request) : request_(request) {}
+    RunCache(const RunRequest& request, double budget_seconds)
+        : request_(request),
+          deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(budget_seconds))) {}
 
     nlohmann::json run(const Model& model, bool& reused) {
         const Key key = key_of(model);
@@ -60,19 +70,30 @@ class RunCache {
             return it->second;
         }
         reused = false;
-        RunRequest request{request_.case_path, model, request_.trace_newton,
-                           request_.time_limit_seconds};
+        RunRequest request{request_.case_path, model, request_.trace_newton, time_left()};
         auto path = std::make_unique<SolvedPath>();
         request.start = warm_.get();
         request.path = path.get();
         nlohmann::json r = run_case(request);
+        if (r.value("status", std::string()) == "time-limit") return r;
         if (solved_every_step(r, *path, model)) warm_ = std::move(path);
         runs_[key] = r;
         return r;
     }
 
   private:
+    using Clock = std::chrono::steady_clock;
+    // A run started with the budget spent still gets a limit (a limit ≤ 0 would mean none): it
+    // stops at its first check.
+    static constexpr double kSpentLimitSeconds = 1e-6;
+
+    double time_left() const {
+        const double left = std::chrono::duration<double>(deadline_ - Clock::now()).count();
+        return std::max(left, kSpentLimitSeconds);
+    }
+
     const RunRequest& request_;
+    Clock::time_point deadline_;
     std::map<Key, nlohmann::json> runs_;
     std::unique_ptr<SolvedPath> warm_;  // the last run that solved every load step
 };
@@ -82,7 +103,7 @@ class RunCache {
 nlohmann::json run_to_accuracy(const RunRequest& request) {
     estimate::AccuracyBudget budget;
     if (request.time_limit_seconds > 0.0) budget.seconds = request.time_limit_seconds;
-    RunCache cache(request);
+    RunCache cache(request, budget.seconds);
     if (request.model.analysis.kind == AnalysisKind::dynamic) {
         // The estimate as add_run_estimate makes it, its companions through the cache: the p+1
         // (or h/2) companion is the next attempt when only the mesh is refined, by one step. The

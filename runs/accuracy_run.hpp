@@ -9,8 +9,9 @@
 namespace rotbeam {
 
 // Refines request.model until its estimates meet request.model.analysis.accuracy / 2 (> 0), or
-// says why not. The budget's time is request.time_limit_seconds when set (each attempt also runs
-// under it), else the default of estimates::AccuracyBudget.
+// says why not. The budget's time is request.time_limit_seconds when set, else the default of
+// estimates::AccuracyBudget: a limit on the whole control, which every run (companions included)
+// gets as the time the budget has left.
 nlohmann::json run_to_accuracy(const RunRequest& request);
 
 }  // namespace rotbeam

@@ -91,8 +91,8 @@ BOOST_AUTO_TEST_CASE(
     BOOST_TEST(factor * modes.deflection_tail < 1e-5 * delta);
     BOOST_TEST(factor * modes.rotation_tail < 1e-5 * modes.static_rotation);
     const DrivenRun rows[] = {{"displacement", "gauss-legendre-3", 1e-3},
-                        {"displacement", "generalized-alpha", 1e-2},
-                        {"mixed", "radau-iia-3", 1e-2}};
+                              {"displacement", "generalized-alpha", 1e-2},
+                              {"mixed", "radau-iia-3", 1e-2}};
     const std::string path =
         std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/cantilever-sine-tip-force.yaml";
     for (const DrivenRun& row : rows) {
@@ -117,6 +117,40 @@ BOOST_AUTO_TEST_CASE(
         BOOST_TEST(e.deflection <= row.tolerance, label.str());
         BOOST_TEST(e.rotation <= row.tolerance, label.str());
     }
+}
+
+// The budget's time bounds the whole control, not each run: asked for 1e-4, the mixed formulation
+// moves from 8 to 128 elements after its first attempt (0.44 s measured) and that attempt alone
+// would take minutes, so a 2 s budget must stop inside it, name the budget as the reason and
+// answer with the first attempt (8 elements, its histories and estimates), status
+// accuracy-not-reached. The whole control within the budget plus half the first attempt's time:
+// the runs check their limit between time steps (one step of the 128-element run is a few ms, the
+// first attempt hundreds of them) and what follows the stop is the result's bookkeeping. A run
+// given the whole budget as its own limit (as before the budget was passed to the runs) would end
+// at the first attempt's time + 2 s and fail it (checked).
+BOOST_AUTO_TEST_CASE(the_time_budget_stops_an_attempt_that_would_outlast_it) {
+    const std::string path =
+        std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/cantilever-sine-tip-force.yaml";
+    const std::vector<std::string> o = {"discretization.formulation=mixed",
+                                        "analysis.integrator=radau-iia-3",
+                                        "analysis.accuracy=1e-4"};
+    constexpr double kBudget = 2.0;
+    RunRequest request{path, load_case(path, o, CaseParts::case_file)};
+    request.time_limit_seconds = kBudget;
+    const json r = run_to_accuracy(request);
+    const json& a = r["accuracy"];
+    const std::string reason = a.value("reason", std::string());
+    BOOST_TEST_MESSAGE("budget " << kBudget << " s: " << a["attempts"].size() << " attempts, "
+                                 << a["wall_seconds"].get<double>() << " s; " << reason);
+    BOOST_TEST(r["status"] == "accuracy-not-reached");
+    BOOST_TEST(reason.rfind("budget: ", 0) == 0, reason);
+    BOOST_TEST(reason.find("the result is the attempt before it") != std::string::npos, reason);
+    const double first = a["attempts"][0]["wall_seconds"].get<double>();
+    BOOST_TEST(a["wall_seconds"].get<double>() < kBudget + 0.5 * first);
+    BOOST_TEST(a["chosen"]["elements"] == 8);
+    BOOST_TEST(r["steps"].size() > 1);
+    BOOST_TEST(r["estimate"]["status"] == "estimated");
+    BOOST_TEST(a["attempts"].size() == 2);  // the stopped attempt stays in the record
 }
 
 BOOST_AUTO_TEST_SUITE_END()
