@@ -95,9 +95,9 @@ json dynamic_effectivity(bool quick, const StudyResults& results, std::ostringst
           "levels). Sequences: "
        << (quick ? "the displacement formulation with the quaternion and the generalized-α "
                    "(ρ∞ = 0.5), in time"
-                 : "every combination in time with the generalized-α (ρ∞ = 0.5) or the "
-                   "trapezoidal rule, the quaternion also in space and in time with Gauss–Legendre "
-                   "2 and 3, Radau IIA and IDA")
+                 : "every combination in space and in time with the generalized-α (ρ∞ = 0.5) "
+                   "or the trapezoidal rule, the quaternion also in time with Gauss–Legendre 2 "
+                   "and 3, Radau IIA and IDA")
        << ".\n\nAsymptotic rows: " << t.asymptotic << "; outside [0.5, 2] there: " << t.violations
        << "; estimator failures: " << t.failures << " (other state: " << t.other_state
        << "; of a reliable estimate otherwise, unexplained: " << t.unexplained << ").\n\n";

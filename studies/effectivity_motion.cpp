@@ -201,10 +201,10 @@ std::vector<MotionSequence> motion_sequences(bool quick) {
         const bool quaternion = c.rotation == param::id_of<param::Quaternion>();
         const bool mixed = c.formulation == Formulation::mixed;
         // Quick (the CI suite's): the displacement formulation's generalized-α in time only.
+        // Full: every combination's default scheme in time and in space.
         if (quick && (!quaternion || mixed)) continue;
-        add_motion_sequences(out, c,
-                             mixed ? Integrator::trapezoidal : Integrator::generalized_alpha,
-                             quaternion && !quick, quick);
+        add_motion_sequences(
+            out, c, mixed ? Integrator::trapezoidal : Integrator::generalized_alpha, !quick, quick);
         if (quick || !quaternion) continue;
         const std::vector<Integrator> others =
             mixed ? std::vector<Integrator>{Integrator::radau_iia_3, Integrator::ida}

@@ -60,8 +60,9 @@ struct MotionSequence {
     std::string combination_label() const;  // as the static rows': "mixed/quaternion"
 };
 
-// The dynamic sequences: quick, the quaternion with each formulation's default scheme in space and
-// in time; full, every combination so, and with the quaternion every other scheme the estimate
+// The dynamic sequences: quick, the displacement formulation's quaternion with generalized-α in
+// time; full, every combination with its formulation's default scheme (generalized-α, the
+// trapezoidal rule) in space and in time, and with the quaternion every other scheme the estimate
 // supports (Gauss–Legendre 2 and 3, Radau IIA, IDA) in time.
 std::vector<MotionSequence> motion_sequences(bool quick);
 
