@@ -120,21 +120,26 @@ BOOST_AUTO_TEST_CASE(
 }
 
 // The budget's time bounds the whole control, not each run: asked for 1e-4, the mixed formulation
-// moves from 8 to 128 elements after its first attempt (0.44 s measured) and that attempt alone
-// would take minutes, so a 2 s budget must stop inside it, name the budget as the reason and
+// moves from 8 to 128 elements after its first attempt (0.2–0.6 s measured), and that attempt
+// (its run 4.3 s, then h/2 and h/4 companions on 256 and 512 elements) takes far longer than
+// 5 s, so a 5 s budget must stop inside it, name the budget as the reason and
 // answer with the first attempt (8 elements, its histories and estimates), status
-// accuracy-not-reached. The whole control within the budget plus half the first attempt's time:
-// the runs check their limit between time steps (one step of the 128-element run is a few ms, the
-// first attempt hundreds of them) and what follows the stop is the result's bookkeeping. A run
-// given the whole budget as its own limit (as before the budget was passed to the runs) would end
-// at the first attempt's time + 2 s and fail it (checked).
+// accuracy-not-reached. The whole control within the budget + 1 s: a run checks its limit between
+// time steps (a few ms here), but a companion started just before the deadline first builds its
+// model and initial state, which is not interrupted (the h/2 companion on 256 elements: 0.16 s
+// measured), and the result's bookkeeping follows. Measured: 0.56 s first attempt, the 128-element
+// run 4.3 s, 5.16 s in all. A run given the whole budget as its own limit (as before the budget
+// was passed to the runs) would let that run converge and each companion run up to 5 s more
+// (measured: 18.9 s in all, the check fails). 5 s, not less: the first attempt must finish
+// inside the budget also on a slow build (the sanitized tree runs this test
+// several times slower).
 BOOST_AUTO_TEST_CASE(the_time_budget_stops_an_attempt_that_would_outlast_it) {
     const std::string path =
         std::string(ROTBEAM_SOURCE_DIR) + "/tests/data/cantilever-sine-tip-force.yaml";
     const std::vector<std::string> o = {"discretization.formulation=mixed",
                                         "analysis.integrator=radau-iia-3",
                                         "analysis.accuracy=1e-4"};
-    constexpr double kBudget = 2.0;
+    constexpr double kBudget = 5.0;
     RunRequest request{path, load_case(path, o, CaseParts::case_file)};
     request.time_limit_seconds = kBudget;
     const json r = run_to_accuracy(request);
@@ -145,8 +150,7 @@ BOOST_AUTO_TEST_CASE(the_time_budget_stops_an_attempt_that_would_outlast_it) {
     BOOST_TEST(r["status"] == "accuracy-not-reached");
     BOOST_TEST(reason.rfind("budget: ", 0) == 0, reason);
     BOOST_TEST(reason.find("the result is the attempt before it") != std::string::npos, reason);
-    const double first = a["attempts"][0]["wall_seconds"].get<double>();
-    BOOST_TEST(a["wall_seconds"].get<double>() < kBudget + 0.5 * first);
+    BOOST_TEST(a["wall_seconds"].get<double>() < kBudget + 1.0);
     BOOST_TEST(a["chosen"]["elements"] == 8);
     BOOST_TEST(r["steps"].size() > 1);
     BOOST_TEST(r["estimate"]["status"] == "estimated");
