@@ -193,15 +193,16 @@ void print_accuracy_summary(const nlohmann::json& a, std::ostream& os) {
             os << t["substeps"] << " sub-steps";
         }
         os << ": " << t["status"].get<std::string>();
-        if (t.value("missing", 0) > 0) {
-            // Its worst is over the quantities that have an estimate only: not a measure.
+        // With quantities missing, the worst is over those that have an estimate: not a measure.
+        const bool complete = t.value("missing", 0) == 0;
+        if (!complete) {
             os << ", estimate incomplete (" << t["missing"].get<int>() << " without, status "
                << t.value("estimate_status", std::string("none")) << ")";
         } else if (t.contains("worst_relative")) {
             os << ", worst estimate " << t["worst_relative"].get<double>() << " ("
                << t["worst_quantity"].get<std::string>() << ")";
         }
-        if (t.contains("worst_space") && t.value("missing", 0) == 0) {
+        if (complete && t.contains("worst_space")) {
             os << ", space " << t["worst_space"].get<double>() << ", time "
                << t["worst_time"].get<double>();
         }
