@@ -26,10 +26,11 @@ using Complex = std::complex<double>;
 constexpr int kStages = 3;
 
 // Fresh stage matrices (∂F/∂X and ∂F/∂Ẋ, the real and the complex KLU factorization) cost about
-// nine stage iterations (three residuals, the two solves, the transformations) on the joined beam
-// (callgrind, docs/performance.md "Cost of one step of the high-order schemes": 11.6 M against
-// 1.2 M per iteration). KeptMatrices' budget.
-constexpr double kRadauFreshMatrixCost = 9.0;
+// eight stage iterations (three residuals, the two solves, the transformations) on the joined beam
+// (callgrind, mixed/WM at 2/3 ms, KLU with COLAMD: 8.2 M against 1.05 M per iteration;
+// docs/performance.md "Cost of one step of the high-order schemes"). KeptMatrices' budget and the
+// renewal rule's cost of fresh matrices.
+constexpr double kRadauFreshMatrixCost = 8.0;
 
 // Radau IIA, s = 3 (HW II, Table IV.5.6), and W = A⁻¹ = S Λ S⁻¹ with the real eigenvalue first
 // and the pair's representative (imaginary part > 0) second; the third column of S is the
@@ -38,6 +39,9 @@ struct RadauTableau {
     Eigen::Matrix3d A, W;
     Eigen::Vector3d c;
     Eigen::Matrix3cd S, S_inv;
+    // S⁻¹'s rows as used on real stage residuals: the real eigenvalue's row, then the real and the
+    // imaginary part of the pair's row.
+    Eigen::Matrix3d S_inv_real;
     double gamma = 0.0;  // the real eigenvalue of W
     Complex mu;          // the pair's representative α + iβ
     Eigen::Vector3d d;   // the embedded error estimate's weights on Z_i (radau_error_weights)
@@ -85,6 +89,9 @@ RadauTableau radau_tableau() {
     t.S.col(1) = es.eigenvectors().col(pair);
     t.S.col(2) = es.eigenvectors().col(pair).conjugate();
     t.S_inv = t.S.inverse();
+    t.S_inv_real.row(0) = t.S_inv.row(0).real();
+    t.S_inv_real.row(1) = t.S_inv.row(1).real();
+    t.S_inv_real.row(2) = t.S_inv.row(1).imag();
     const Eigen::Vector3cd lambda(t.gamma, t.mu, std::conj(t.mu));
     const double defect =
         (t.S * lambda.asDiagonal() * t.S_inv - t.W.cast<Complex>()).cwiseAbs().maxCoeff();
@@ -103,7 +110,6 @@ class RadauStepper {
             for (VecX& z : *v) z.setZero(n_);
         }
         for (auto* v : {&y_, &r_, &gr_, &xr_, &x1_, &xd1_}) v->setZero(n_);
-        gc_.setZero(n_);
         xc_.setZero(n_);
     }
 
@@ -144,13 +150,13 @@ class RadauStepper {
     VecX y_, r_, gr_, xr_, x1_, xd1_, work_, scale_;
     SparseMatrix Jx_, Jxd_, E_real_, E_floor_;
     ComplexSparse E_complex_;
-    Eigen::VectorXcd gc_, xc_;
+    Eigen::VectorXcd xc_;
     SparseLUSolver real_lu_{true};
     ComplexKlu complex_lu_;
     bool analysed_ = false;
     double floor_ = 0.0;
     double h_old_ = 0.0;  // 0: no previous step to extrapolate from
-    KeptMatrices kept_{kRadauFreshMatrixCost};
+    KeptMatrices kept_{kRadauFreshMatrixCost, KeptMatrixRule::renewal};
     double rate_ = 1.0;  // the last converged iteration's worst contraction (iterate_stages)
     long factorizations_ = 0;
 };
@@ -211,9 +217,8 @@ void RadauStepper::predict(double h, const VecX& xdn) {
 
 // Ẏ_i = (1/h) Σ_j w_ij Z_j on the differential unknowns, zero on the algebraic ones.
 void RadauStepper::stage_rate(int i, double h, VecX& out) const {
-    out.setZero();
-    for (int j = 0; j < kStages; ++j) out += (T_.W(i, j) / h) * Z_[j];
-    out.array() *= dae_.differential().array();
+    out = ((T_.W(i, 0) / h) * Z_[0] + (T_.W(i, 1) / h) * Z_[1] + (T_.W(i, 2) / h) * Z_[2])
+              .cwiseProduct(dae_.differential());
 }
 
 // The stage residuals R_i; returns their largest scaled max norm.
@@ -229,20 +234,20 @@ double RadauStepper::stage_residuals(double t, double h, const VecX& xn) {
 }
 
 // δZ = −(S ⊗ I) diag(E_γ, E_μ, conj E_μ)⁻¹ (S⁻¹ ⊗ I) R; the pair contributes 2 Re(S_i1 x_μ).
-// Returns the largest scaled max norm of the stage corrections.
+// Returns the largest scaled max norm of the stage corrections. The complex coefficients times
+// real vectors are written by parts: a complex-times-complex product of std::complex is a libgcc
+// call with its NaN recovery (__muldc3), 2.6 % of a mixed run's instructions.
 double RadauStepper::correction() {
-    gr_.setZero();
-    gc_.setZero();
-    for (int i = 0; i < kStages; ++i) {
-        gr_ += T_.S_inv(0, i).real() * R_[i];
-        gc_ += T_.S_inv(1, i) * R_[i].cast<Complex>();
-    }
+    const Eigen::Matrix3d& Si = T_.S_inv_real;
+    gr_ = Si(0, 0) * R_[0] + Si(0, 1) * R_[1] + Si(0, 2) * R_[2];
+    xc_.real() = Si(1, 0) * R_[0] + Si(1, 1) * R_[1] + Si(1, 2) * R_[2];
+    xc_.imag() = Si(2, 0) * R_[0] + Si(2, 1) * R_[1] + Si(2, 2) * R_[2];
     real_lu_.solve(gr_, xr_);
-    xc_ = gc_;
     complex_lu_.solve_in_place(xc_);
     double eta = 0.0;
     for (int i = 0; i < kStages; ++i) {
-        dZ_[i] = -T_.S(i, 0).real() * xr_ - 2.0 * (T_.S(i, 1) * xc_).real();
+        const double a = 2.0 * T_.S(i, 1).real(), b = 2.0 * T_.S(i, 1).imag();
+        dZ_[i] = -T_.S(i, 0).real() * xr_ - a * xc_.real() + b * xc_.imag();
         eta = std::max(eta, scaled_max_norm(dZ_[i], scale_));
     }
     return eta;

@@ -170,7 +170,7 @@ GaussStepper::GaussStepper(CollocationProblem& problem, int stages, const Newton
       newton_(newton),
       use_previous_(options.stage_predictor),
       n_(problem.size()),
-      kept_(options.keep_matrices ? kGaussFreshMatrixCost : 0.0) {
+      kept_(options.keep_matrices ? kGaussFreshMatrixCost : 0.0, KeptMatrixRule::contraction) {
     const int s = tableau_.stages;
     extrapolate_.resize(s);
     for (int j = 0; j < s; ++j) {

@@ -49,7 +49,7 @@ namespace rotbeam {
 // alone, as in the production stiff integrators (Hairer & Wanner II §IV.8: RADAU5 keeps the
 // Jacobian while the contraction θ stays small, and the LU while h is unchanged; CVODE while γ
 // changes little), and the convergence rate is monitored on every step:
-//  - the contraction: the last converged iteration's worst ratio η_k/η_{k−1} ≤ kKeptMatrixRate;
+//  - the scheme's KeptMatrixRule (below) says the kept matrices are still worth their iterations;
 //  - the step size: within kKeptStepChange (relative) of the one the matrices were made for. The
 //    matrices are K₀ + (λ/h) C₀ + (λ/h)² M₀ (Gauss) or ∂F/∂X + (λ/h) ∂F/∂Ẋ (Radau): a relative
 //    change δ of h changes their (λ/h)-terms by at most 2δ, and the contraction by as much,
@@ -62,21 +62,38 @@ namespace rotbeam {
 //    evaluations and factorizations, in stage iterations, from the scheme's measured kernels:
 //    docs/performance.md "Cost of one step of the high-order schemes") has cost what a fresh step
 //    would; it is abandoned and the step restarts with fresh matrices, as after a failure.
-// Dropping the contraction test for the budget alone (keep while a kept step takes at most
-// `fresh_cost` iterations more than the last fresh one) was measured a net loss on the joined
-// beam: Gauss 3 at 1.25 ms doubled its iterations (11 860 → 22 793) to save 649 of 1 446 fresh
-// matrices, Radau at 0.75 ms 12 990 → 24 743 iterations to save 850 of 891 Jacobians
-// (docs/performance.md, "Kept stage matrices").
+// Dropping the rule for the budget alone (keep while a kept step takes at most `fresh_cost`
+// iterations more than the last fresh one) was measured a net loss on the joined beam: Gauss 3 at
+// 1.25 ms doubled its iterations (11 860 → 22 793) to save 649 of 1 446 fresh matrices, Radau at
+// 0.75 ms 12 990 → 24 743 iterations to save 850 of 891 Jacobians (docs/performance.md, "Kept
+// stage matrices").
 constexpr double kKeptMatrixRate = 0.05;
 constexpr double kKeptStepChange = 1e-6;
+
+// Whether kept matrices are still worth their iterations:
+//  - contraction: while the last converged iteration's worst ratio η_k/η_{k−1} ≤ kKeptMatrixRate;
+//  - renewal: while the last step's iterations are below the average cost per step since the
+//    last fresh matrices, their cost `fresh_cost` included. This is the replacement rule of
+//    renewal theory (keep an asset while its marginal cost is below the cycle's average cost per
+//    period; with a marginal cost that grows with age, that minimizes the long-run cost per
+//    period), with the last step's iterations as the forecast of the next one's. It adapts to the
+//    Newton tolerance by itself: a tight one needs more iterations per step, which makes a slow
+//    contraction dearer, and the cycles shorten.
+// Measured per scheme on the joined beam (callgrind, whole process, 0–2 s; docs/performance.md
+// "Kept stage matrices"): Radau IIA renews (2/3 ms, Newton 1e-7: −20 % instructions against
+// contraction, 932 → 232 Jacobians; 0.25 ms at its default 1e-10: −2 %); Gauss–Legendre keeps
+// the contraction test (GL3 at 1 ms and 1e-7: renewal +6.8 %, 788 → 563 fresh matrices for 6 935
+// → 8 562 iterations: a kept Gauss step's count rises only after its contraction has, which the
+// ratio sees one step earlier).
+enum class KeptMatrixRule { contraction, renewal };
 
 class KeptMatrices {
   public:
     // `fresh_cost` ≤ 0: fresh matrices at every step (a reference for the tests).
-    explicit KeptMatrices(double fresh_cost) : fresh_cost_(fresh_cost) {}
+    KeptMatrices(double fresh_cost, KeptMatrixRule rule) : fresh_cost_(fresh_cost), rule_(rule) {}
     // Whether the factored matrices may serve a step of size h.
     bool usable(double h) const {
-        return fresh_cost_ > 0.0 && factored_h_ > 0.0 && rate_ <= kKeptMatrixRate &&
+        return fresh_cost_ > 0.0 && factored_h_ > 0.0 && worth_keeping() &&
                std::abs(h - factored_h_) <= kKeptStepChange * factored_h_;
     }
     // The iteration budget of a step with kept matrices (iterate_stages): what a fresh step
@@ -89,15 +106,31 @@ class KeptMatrices {
     // A step converged in `iterations` (its own iteration, not counting an abandoned kept one),
     // its worst contraction `rate`, on fresh matrices or kept ones.
     void converged(int iterations, double rate, bool fresh) {
-        if (fresh) reference_ = iterations;
+        if (fresh) {
+            reference_ = iterations;
+            cycle_cost_ = fresh_cost_;
+            cycle_steps_ = 0;
+        }
+        cycle_cost_ += iterations;
+        ++cycle_steps_;
+        last_ = iterations;
         rate_ = rate;
     }
 
   private:
+    bool worth_keeping() const {
+        if (rule_ == KeptMatrixRule::contraction) return rate_ <= kKeptMatrixRate;
+        return static_cast<double>(last_) * cycle_steps_ < cycle_cost_;
+    }
+
     double fresh_cost_;
+    KeptMatrixRule rule_;
     double factored_h_ = 0.0;  // the step the matrices were made for (0: none valid)
     double rate_ = 1.0;        // the last converged iteration's worst η_k/η_{k−1}
     int reference_ = 0;        // the iterations of the last step on fresh matrices
+    int last_ = 0;             // the iterations of the last converged step
+    double cycle_cost_ = 0.0;  // since the last fresh matrices: their cost and every iteration
+    int cycle_steps_ = 0;      // the steps converged since the last fresh matrices
 };
 
 // `budget` > 0 (an iteration with kept matrices: KeptMatrices::iteration_limit): after that many
