@@ -85,16 +85,26 @@ void displacement_forcing(form::DisplacementDynamics<P>& shadow,
 
 // Errors against y_h accumulated over the outputs (semi-discrete runs): u over the length, the
 // rotation angle, and the velocity-level and force unknowns as max differences and magnitudes
-// (their ratio at the end, as relative_history_difference).
+// (their ratio at the end, as relative_history_difference); the velocity-level unknowns come in
+// blocks of six, [translational; rotational], whose halves are also measured apart.
 struct TrajectoryError {
-    double u = 0.0, R = 0.0, v_diff = 0.0, v_size = 0.0, f_diff = 0.0, f_size = 0.0;
-    void add_rates(const Eigen::Ref<const VecX>& x, const Eigen::Ref<const VecX>& y, bool forces) {
-        (forces ? f_diff : v_diff) =
-            std::max(forces ? f_diff : v_diff, (x - y).cwiseAbs().maxCoeff());
-        (forces ? f_size : v_size) = std::max(forces ? f_size : v_size, y.cwiseAbs().maxCoeff());
+    struct Ratio {
+        double diff = 0.0, size = 0.0;
+        void add(const Eigen::Ref<const VecX>& x, const Eigen::Ref<const VecX>& y) {
+            diff = std::max(diff, (x - y).cwiseAbs().maxCoeff());
+            size = std::max(size, y.cwiseAbs().maxCoeff());
+        }
+        double value() const { return size > 0.0 ? diff / size : 0.0; }
+    };
+    double u = 0.0, R = 0.0;
+    Ratio velocity, forces, translational, rotational;
+    void add_velocity(const Vec6& x, const Vec6& y) {
+        velocity.add(x, y);
+        translational.add(x.head<3>(), y.head<3>());
+        rotational.add(x.tail<3>(), y.tail<3>());
     }
     ComponentDifferences result() const {
-        return {u, R, v_size > 0.0 ? v_diff / v_size : 0.0, f_size > 0.0 ? f_diff / f_size : 0.0};
+        return {u, R, velocity.value(), forces.value(), translational.value(), rotational.value()};
     }
 };
 
@@ -129,7 +139,7 @@ void displacement_run(const Model& model, const MotionRunSpec& spec, MotionRunRe
             exact.u = std::max(exact.u, (d.node_displacement(n) - x.u).norm() / spec.motion.length);
             exact.R = std::max(
                 exact.R, so3::log_map(P::matrix(d.node_rotation(n)).transpose() * x.R).norm());
-            exact.add_rates(d.node_velocity(n), (Vec6() << x.u_dot, x.omega).finished(), false);
+            exact.add_velocity(d.node_velocity(n), (Vec6() << x.u_dot, x.omega).finished());
         }
         result.velocity.push_back(v.head(6 * k));
     };
@@ -245,8 +255,8 @@ void add_mixed_error(const Dyn& dyn, const VecX& x, const VecX& y, double length
     for (int e = 0; e < nb.element_count; ++e) {
         const int o = nb.element_column(e);
         position(o + nb.u());
-        error.add_rates(x.segment<6>(o + nb.P()), y.segment<6>(o + nb.P()), false);
-        error.add_rates(x.segment<6>(o + nb.F()), y.segment<6>(o + nb.F()), true);
+        error.add_velocity(x.segment<6>(o + nb.P()), y.segment<6>(o + nb.P()));
+        error.forces.add(x.segment<6>(o + nb.F()), y.segment<6>(o + nb.F()));
     }
 }
 
@@ -392,25 +402,58 @@ void run_difference(const MotionRunResult& a, const MotionRunResult& b, double l
 
 namespace {
 
-// Max over the common outputs of ‖a_k − b_k‖∞ over the max over the outputs of ‖b_k‖∞.
-double relative_history_difference(const std::vector<VecX>& a, const std::vector<VecX>& b) {
+// The rows of a history's vectors that relative_history_difference compares: all, or in blocks
+// of six [translational; rotational] one half.
+enum class Rows { all, translational, rotational };
+
+// Max over the common outputs of ‖a_k − b_k‖∞ over the max over the outputs of ‖b_k‖∞, on `rows`.
+double relative_history_difference(const std::vector<VecX>& a, const std::vector<VecX>& b,
+                                   Rows rows = Rows::all) {
     const size_t n = std::min(a.size(), b.size());
     double diff = 0.0, size = 0.0;
     for (size_t k = 0; k < n; ++k) {
         if (a[k].size() != b[k].size() || b[k].size() == 0) return 0.0;
-        diff = std::max(diff, (a[k] - b[k]).cwiseAbs().maxCoeff());
-        size = std::max(size, b[k].cwiseAbs().maxCoeff());
+        for (Eigen::Index i = 0; i < b[k].size(); ++i) {
+            const bool rotational = i % 6 >= 3;
+            if (rows != Rows::all && rotational != (rows == Rows::rotational)) continue;
+            diff = std::max(diff, std::abs(a[k](i) - b[k](i)));
+            size = std::max(size, std::abs(b[k](i)));
+        }
     }
     return size > 0.0 ? diff / size : 0.0;
 }
 
 }  // namespace
 
+namespace {
+
+// ComponentDifferences' members in table order.
+constexpr double ComponentDifferences::*kComponentMembers[kMotionComponents] = {
+    &ComponentDifferences::u,
+    &ComponentDifferences::R,
+    &ComponentDifferences::velocity,
+    &ComponentDifferences::forces,
+    &ComponentDifferences::translational,
+    &ComponentDifferences::rotational};
+
+}  // namespace
+
+double& component(ComponentDifferences& d, int k) { return d.*kComponentMembers[k]; }
+
+double component(const ComponentDifferences& d, int k) { return d.*kComponentMembers[k]; }
+
+const char* component_name(int k) {
+    static const char* const names[kMotionComponents] = {"u", "R", "v", "F", "vt", "vr"};
+    return names[k];
+}
+
 ComponentDifferences component_differences(const MotionRunResult& a, const MotionRunResult& b,
                                            double length) {
     ComponentDifferences d;
     run_difference(a, b, length, d.u, d.R);
     d.velocity = relative_history_difference(a.velocity, b.velocity);
+    d.translational = relative_history_difference(a.velocity, b.velocity, Rows::translational);
+    d.rotational = relative_history_difference(a.velocity, b.velocity, Rows::rotational);
     d.forces = relative_history_difference(a.forces, b.forces);
     return d;
 }

@@ -58,10 +58,21 @@ struct MotionRunSpec {
     std::string label() const;  // e.g. "displacement/quaternion/p3/ga0.5", ".../p3/gl2"
 };
 
-// Per component: positions, rotations, velocity-level unknowns, internal forces.
+// Per component: positions, rotations, velocity-level unknowns, internal forces, and the
+// velocity-level unknowns' translational and rotational halves, each relative to its own
+// magnitude (displacement: u̇ and ω at the nodes; mixed: the element momenta P and H). The halves
+// tell which one sets the velocity's order where it departs from the scheme's.
 struct ComponentDifferences {
     double u = 0.0, R = 0.0, velocity = 0.0, forces = 0.0;
+    double translational = 0.0, rotational = 0.0;
 };
+
+// The components in table order (u, R, v, F, then v's halves) and their short names ("u", "R",
+// "v", "F", "vt", "vr").
+constexpr int kMotionComponents = 6;
+double& component(ComponentDifferences& d, int k);
+double component(const ComponentDifferences& d, int k);
+const char* component_name(int k);
 
 struct MotionRunResult {
     std::string status;  // converged | diverged | singular | unavailable

@@ -9,17 +9,6 @@
 
 namespace rotbeam::cli {
 
-namespace {
-
-constexpr int kComponents = 4;
-
-double& component_of(ComponentDifferences& d, int k) {
-    double* const v[kComponents] = {&d.u, &d.R, &d.velocity, &d.forces};
-    return *v[k];
-}
-
-}  // namespace
-
 SemiDiscreteSeries semi_discrete_series(const MotionRunSpec& spec) {
     SemiDiscreteSeries s;
     if (spec.formulation == Formulation::mixed) {
@@ -69,16 +58,16 @@ SemiDiscreteResult run_semi_discrete_series(MotionRunSpec spec) {
     // fit_order takes sizes n with error ∝ n^−q; a step is 1/n.
     std::vector<double> inv;
     for (double dt : out.dt) inv.push_back(1.0 / dt);
-    for (int k = 0; k < kComponents; ++k) {
+    for (int k = 0; k < kMotionComponents; ++k) {
         std::vector<double> e;
-        for (ComponentDifferences& d : out.error) e.push_back(component_of(d, k));
-        component_of(out.order, k) = fit_order(inv, e);
+        for (ComponentDifferences& d : out.error) e.push_back(component(d, k));
+        component(out.order, k) = fit_order(inv, e);
     }
     for (size_t i = 1; i < out.error.size(); ++i) {
         ComponentDifferences p;
-        for (int k = 0; k < kComponents; ++k) {
-            component_of(p, k) =
-                std::log2(component_of(out.error[i - 1], k) / component_of(out.error[i], k)) /
+        for (int k = 0; k < kMotionComponents; ++k) {
+            component(p, k) =
+                std::log2(component(out.error[i - 1], k) / component(out.error[i], k)) /
                 std::log2(out.dt[i - 1] / out.dt[i]);
         }
         out.pair.push_back(p);

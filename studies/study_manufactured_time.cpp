@@ -111,13 +111,9 @@ std::string file_label(std::string s) {
     return s;
 }
 
-// The components whose time error is measured (ComponentDifferences), in table order.
+// The components of the study's tables: the first four of ComponentDifferences' table order (u,
+// R, v, F; the velocity's halves are the test's, tests/agreement/test_semi_discrete_motion.cpp).
 constexpr int kTimeComponents = 4;
-
-double component(const ComponentDifferences& d, int k) {
-    const double v[kTimeComponents] = {d.u, d.R, d.velocity, d.forces};
-    return v[k];
-}
 
 // "q₁ / q₂ / …" over the components a formulation has (the displacement one has no forces).
 std::string order_cell(const std::vector<double>& q, int count) {
