@@ -166,10 +166,12 @@ nlohmann::json best_per_budget(const std::vector<Candidate>& tried) {
 
 }  // namespace
 
-const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows) {
+const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows,
+                                           const std::string& formulation) {
     const nlohmann::json* fastest = nullptr;
     for (const auto& r : rows) {
         if (r["status"] != "reached") continue;
+        if (!formulation.empty() && r.value("formulation", "") != formulation) continue;
         if (fastest == nullptr || r["whole_process_seconds"].get<double>() <
                                       (*fastest)["whole_process_seconds"].get<double>()) {
             fastest = &r;

@@ -42,8 +42,9 @@ nlohmann::json bench_combination(const BenchTarget& target, const Combination& c
                                  const nlohmann::json& reference, bool quick, int repeats);
 
 // The row of `rows` (bench_combination's, or the joined-beam bench's) with the smallest
-// whole-process time among those whose status is "reached", the first of equal ones; nullptr
-// when none reached.
-const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows);
+// whole-process time among those whose status is "reached" (and, when `formulation` is given,
+// whose formulation it is), the first of equal ones; nullptr when none reached.
+const nlohmann::json* fastest_reaching_run(const nlohmann::json& rows,
+                                           const std::string& formulation = "");
 
 }  // namespace rotbeam::cli

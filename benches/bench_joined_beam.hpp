@@ -20,7 +20,8 @@
 namespace rotbeam::cli {
 
 // Both targets' JSON (the same layout as the static targets: name, accuracy, target_seconds,
-// results[]), printed as tables on stdout. `reference_dir`: where the dynamic references are
+// results[]; the dynamic one's target_seconds is the displacement formulation's, and
+// mixed_target_seconds the mixed one's), printed as tables on stdout. `reference_dir`: where the dynamic references are
 // cached; `load`: "dead" | "follower".
 nlohmann::json bench_joined_beam_modal(bool quick, int repeats);
 nlohmann::json bench_joined_beam_dynamic(bool quick, int repeats, const std::string& reference_dir,
