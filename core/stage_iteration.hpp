@@ -80,11 +80,10 @@ constexpr double kKeptStepChange = 1e-6;
 //    Newton tolerance by itself: a tight one needs more iterations per step, which makes a slow
 //    contraction dearer, and the cycles shorten.
 // Measured per scheme on the joined beam (callgrind, whole process, 0–2 s; docs/performance.md
-// "Kept stage matrices"): Radau IIA renews (2/3 ms, Newton 1e-7: −20 % instructions against
-// contraction, 932 → 232 Jacobians; 0.25 ms at its default 1e-10: −2 %); Gauss–Legendre keeps
-// the contraction test (GL3 at 1 ms and 1e-7: renewal +6.8 %, 788 → 563 fresh matrices for 6 935
-// → 8 562 iterations: a kept Gauss step's count rises only after its contraction has, which the
-// ratio sees one step earlier).
+// "Kept stage matrices by renewal; the mixed target met"): Radau IIA renews (2/3 ms, Newton 1e-7:
+// −20 % instructions against contraction, 933 → 254 Jacobians; 0.25 ms at its default 1e-10:
+// −3 % by the kernel costs); Gauss–Legendre keeps the contraction test (GL3 at 1 ms and 1e-7:
+// renewal +6.8 %, 796 → 566 fresh matrices for 6 925 → 8 563 iterations; why was not measured).
 enum class KeptMatrixRule { contraction, renewal };
 
 class KeptMatrices {
