@@ -2,12 +2,14 @@
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
+#include <gsl/gsl_poly.h>
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_spline.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -48,25 +50,29 @@ std::string format_vec(const Vec3& v) {
 struct KeypointSpline {
     std::vector<double> t;
     std::vector<double> arc;  // S(t_i)
-    std::array<gsl_spline*, 3> xyz{nullptr, nullptr, nullptr};
+    struct SplineFree {
+        void operator()(gsl_spline* s) const { gsl_spline_free(s); }
+    };
+    // Owned, so that a constructor which refuses the curve frees what it allocated.
+    std::array<std::unique_ptr<gsl_spline, SplineFree>, 3> xyz;
 
     explicit KeypointSpline(const std::vector<Vec3>& points);
-    ~KeypointSpline() {
-        for (gsl_spline* s : xyz) gsl_spline_free(s);
-    }
-    KeypointSpline(const KeypointSpline&) = delete;
-    KeypointSpline& operator=(const KeypointSpline&) = delete;
 
     Vec3 x(double u) const { return eval(u, gsl_spline_eval); }
     Vec3 x_t(double u) const { return eval(u, gsl_spline_eval_deriv); }
     Vec3 x_tt(double u) const { return eval(u, gsl_spline_eval_deriv2); }
-    double length_between(double a, double b) const;  // ∫_a^b |x_t| dt
+    // ∫_a^b |x_t| dt, to 1e-13 of itself or of `scale` (the knot interval's length), whichever
+    // is larger: pieces of an interval need only the interval's absolute accuracy.
+    double length_between(double a, double b, double scale) const;
+    // The points of (a, b) where |x_t| is stationary, ascending: where the curve turns fastest.
+    std::vector<double> turning_points(double a, double b) const;
     double parameter_at(double s) const;              // t(s), the inverse of S(t)
 
   private:
     template <class F>
     Vec3 eval(double u, F f) const {
-        return Vec3(f(xyz[0], u, nullptr), f(xyz[1], u, nullptr), f(xyz[2], u, nullptr));
+        return Vec3(f(xyz[0].get(), u, nullptr), f(xyz[1].get(), u, nullptr),
+                    f(xyz[2].get(), u, nullptr));
     }
 };
 
@@ -85,32 +91,79 @@ KeypointSpline::KeypointSpline(const std::vector<Vec3>& points) {
     for (int c = 0; c < 3; ++c) {
         std::vector<double> v(n);
         for (size_t i = 0; i < n; ++i) v[i] = points[i][c];
-        xyz[c] = gsl_spline_alloc(gsl_interp_cspline, n);
+        xyz[c].reset(gsl_spline_alloc(gsl_interp_cspline, n));
         ROTBEAM_VERIFY(xyz[c] != nullptr, "gsl_spline_alloc failed");
-        ROTBEAM_VERIFY(gsl_spline_init(xyz[c], t.data(), v.data(), n) == GSL_SUCCESS,
+        ROTBEAM_VERIFY(gsl_spline_init(xyz[c].get(), t.data(), v.data(), n) == GSL_SUCCESS,
                        "gsl_spline_init failed");
     }
     arc.assign(n, 0.0);
-    for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + length_between(t[i - 1], t[i]);
+    for (size_t i = 1; i < n; ++i) {
+        try {
+            arc[i] = arc[i - 1] + length_between(t[i - 1], t[i], t[i] - t[i - 1]);
+        } catch (const InputError& e) {
+            throw InputError("between key points " + std::to_string(i - 1) + " and " +
+                             std::to_string(i) + " of the curve (start, keypoints..., end): " +
+                             e.what());
+        }
+    }
 }
 
-double KeypointSpline::length_between(double a, double b) const {
+std::vector<double> KeypointSpline::turning_points(double a, double b) const {
+    // In the knot interval [t_i, t_i+1] holding (a, b), x_t(t_i + w) = A + B w + C w² exactly
+    // (cubic splines), so d|x_t|²/dw / 2 = x_t · x_tt is the cubic
+    // 2 C·C w³ + 3 B·C w² + (2 A·C + B·B) w + A·B.
+    const size_t i = std::min(
+        static_cast<size_t>(std::upper_bound(t.begin(), t.end(), 0.5 * (a + b)) - t.begin()) - 1,
+        t.size() - 2);
+    const double h = t[i + 1] - t[i];
+    const Vec3 A = x_t(t[i]);
+    const Vec3 B = x_tt(t[i]);
+    const Vec3 C = (x_tt(t[i + 1]) - B) / (2.0 * h);
+    std::array<double, 3> w{};
+    int count = 0;
+    if (C.dot(C) > 0.0) {
+        const double lead = 2.0 * C.dot(C);
+        count = gsl_poly_solve_cubic(3.0 * B.dot(C) / lead, (2.0 * A.dot(C) + B.dot(B)) / lead,
+                                     A.dot(B) / lead, &w[0], &w[1], &w[2]);
+    } else {
+        count = gsl_poly_solve_quadratic(3.0 * B.dot(C), 2.0 * A.dot(C) + B.dot(B), A.dot(B),
+                                         &w[0], &w[1]);
+    }
+    std::vector<double> points;
+    for (int k = 0; k < count; ++k) {
+        const double u = t[i] + w[static_cast<size_t>(k)];
+        if (u > a && u < b && (points.empty() || u > points.back())) points.push_back(u);
+    }
+    return points;
+}
+
+double KeypointSpline::length_between(double a, double b, double scale) const {
     if (b <= a) return 0.0;
     gsl_function f;
     f.function = [](double u, void* p) -> double {
         return static_cast<const KeypointSpline*>(p)->x_t(u).norm();
     };
     f.params = const_cast<KeypointSpline*>(this);
+    // Within one knot interval |x_t| is the root of a quartic: smooth, except that where the
+    // curve nearly folds back (x_t almost vanishes) it has a near-kink. Splitting there puts the
+    // kink at the end of a piece, which adaptive bisection resolves.
+    std::vector<double> pieces{a};
+    for (const double u : turning_points(a, b)) pieces.push_back(u);
+    pieces.push_back(b);
     gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
     double result = 0.0, error = 0.0;
-    // Within one knot interval |x_t| is the root of a quartic: smooth, so Gauss–Kronrod 21
-    // converges in a few subdivisions.
-    const int status = gsl_integration_qag(&f, a, b, 0.0, kArcLengthTolerance, 200,
-                                           GSL_INTEG_GAUSS21, w, &result, &error);
+    const int status = gsl_integration_qagp(&f, pieces.data(), pieces.size(),
+                                            kArcLengthTolerance * scale, kArcLengthTolerance, 200,
+                                            w, &result, &error);
     gsl_integration_workspace_free(w);
-    if (status != GSL_SUCCESS && error > 1e-10 * result) {
-        throw SolverError("key-point curve: arc-length quadrature failed: " +
-                          std::string(gsl_strerror(status)));
+    // A geometry whose length is uncertain beyond 1e-10 would put that uncertainty into every
+    // node position: a property of the key points given, so it is refused as input.
+    if (status != GSL_SUCCESS && !(error <= 1e-10 * std::max(result, scale))) {
+        std::ostringstream m;
+        m << "the spline's arc length cannot be computed to 1e-10 (" << gsl_strerror(status)
+          << ", length " << result << " +- " << error
+          << "); check the key points";
+        throw InputError(m.str());
     }
     return result;
 }
@@ -124,12 +177,12 @@ double KeypointSpline::parameter_at(double s) const {
     if (i + 1 >= n) return t.back();
     struct Params {
         const KeypointSpline* spline;
-        double t0, target;
-    } params{this, t[i], s - arc[i]};
+        double t0, target, scale;
+    } params{this, t[i], s - arc[i], t[i + 1] - t[i]};
     gsl_function f;
     f.function = [](double u, void* p) -> double {
         const Params& q = *static_cast<const Params*>(p);
-        return q.spline->length_between(q.t0, u) - q.target;
+        return q.spline->length_between(q.t0, u, q.scale) - q.target;
     };
     f.params = &params;
     gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
