@@ -166,7 +166,7 @@ NewtonOutcome iterate_stages(Stages& stages, const NewtonSettings& newton, doubl
         double bound = m.correction;
         bool contracted = false;
         const double theta = std::max(ratio, previous_ratio);
-        if (c == Convergence::none && k >= 3 && theta < 1.0 &&
+        if (newton.contraction_stop && c == Convergence::none && k >= 3 && theta < 1.0 &&
             theta / (1.0 - theta) * m.correction <= tol.increment) {
             c = Convergence::residual_and_correction;
             bound = theta / (1.0 - theta) * m.correction;

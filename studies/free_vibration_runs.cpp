@@ -37,7 +37,8 @@ template <class P>
 void free_vibration_displacement(const Model& model, const FreeVibrationSpec& spec,
                                  FreeVibrationRun& run) {
     form::DisplacementDynamics<P> d(model);
-    const NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
+    NewtonSettings newton = newton_settings_from(model.solver, model.analysis.statics);
+    newton.contraction_stop = spec.contraction_stop;
     d.statics().set_time(0.0);
     const StaticOutcome start = run_static(d.statics(), {1.0}, newton, {});
     if (!has_solution(start.status)) {
@@ -93,6 +94,7 @@ void free_vibration_mixed(const Model& model, const FreeVibrationSpec& spec,
     s.time_step = spec.dt;
     s.output_interval = spec.output_interval;
     s.newton.residual_tolerance = s.newton.increment_tolerance = spec.newton_tolerance;
+    s.newton.contraction_stop = spec.contraction_stop;
     const int tip = model.point_index("tip");
     const form::MixedNumbering& nb = dyn.numbering();
     const int last = nb.element_column(nb.element_count - 1);

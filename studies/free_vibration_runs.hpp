@@ -39,6 +39,8 @@ struct FreeVibrationSpec {
     double output_interval = 0.05;
     // Newton (stage iteration) tolerance on the scaled residual and increment of every step.
     double newton_tolerance = 1e-12;
+    // NewtonSettings::contraction_stop: false for the energy over many periods.
+    bool contraction_stop = true;
     std::string label() const;  // e.g. "displacement/quaternion/gl3", "mixed/wiener-milenkovic/ta"
 };
 
