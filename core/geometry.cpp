@@ -66,7 +66,7 @@ struct KeypointSpline {
     double length_between(double a, double b, double scale) const;
     // The points of (a, b) where |x_t| is stationary, ascending: where the curve turns fastest.
     std::vector<double> turning_points(double a, double b) const;
-    double parameter_at(double s) const;              // t(s), the inverse of S(t)
+    double parameter_at(double s) const;  // t(s), the inverse of S(t)
 
   private:
     template <class F>
@@ -102,8 +102,8 @@ KeypointSpline::KeypointSpline(const std::vector<Vec3>& points) {
             arc[i] = arc[i - 1] + length_between(t[i - 1], t[i], t[i] - t[i - 1]);
         } catch (const InputError& e) {
             throw InputError("between key points " + std::to_string(i - 1) + " and " +
-                             std::to_string(i) + " of the curve (start, keypoints..., end): " +
-                             e.what());
+                             std::to_string(i) +
+                             " of the curve (start, keypoints..., end): " + e.what());
         }
     }
 }
@@ -126,8 +126,8 @@ std::vector<double> KeypointSpline::turning_points(double a, double b) const {
         count = gsl_poly_solve_cubic(3.0 * B.dot(C) / lead, (2.0 * A.dot(C) + B.dot(B)) / lead,
                                      A.dot(B) / lead, &w[0], &w[1], &w[2]);
     } else {
-        count = gsl_poly_solve_quadratic(3.0 * B.dot(C), 2.0 * A.dot(C) + B.dot(B), A.dot(B),
-                                         &w[0], &w[1]);
+        count = gsl_poly_solve_quadratic(3.0 * B.dot(C), 2.0 * A.dot(C) + B.dot(B), A.dot(B), &w[0],
+                                         &w[1]);
     }
     std::vector<double> points;
     for (int k = 0; k < count; ++k) {
@@ -152,17 +152,16 @@ double KeypointSpline::length_between(double a, double b, double scale) const {
     pieces.push_back(b);
     gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
     double result = 0.0, error = 0.0;
-    const int status = gsl_integration_qagp(&f, pieces.data(), pieces.size(),
-                                            kArcLengthTolerance * scale, kArcLengthTolerance, 200,
-                                            w, &result, &error);
+    const int status =
+        gsl_integration_qagp(&f, pieces.data(), pieces.size(), kArcLengthTolerance * scale,
+                             kArcLengthTolerance, 200, w, &result, &error);
     gsl_integration_workspace_free(w);
     // A geometry whose length is uncertain beyond 1e-10 would put that uncertainty into every
     // node position: a property of the key points given, so it is refused as input.
     if (status != GSL_SUCCESS && !(error <= 1e-10 * std::max(result, scale))) {
         std::ostringstream m;
         m << "the spline's arc length cannot be computed to 1e-10 (" << gsl_strerror(status)
-          << ", length " << result << " +- " << error
-          << "); check the key points";
+          << ", length " << result << " +- " << error << "); check the key points";
         throw InputError(m.str());
     }
     return result;

@@ -15,7 +15,7 @@ using namespace rotbeam;
 namespace {
 
 cli::FreeVibrationSpec long_release(Integrator integrator, double rho = 1.0,
-                                   bool contraction_stop = false) {
+                                    bool contraction_stop = false) {
     cli::FreeVibrationSpec s;
     s.rotation = param::id_of<param::Quaternion>();
     s.integrator = integrator;
@@ -82,10 +82,11 @@ BOOST_AUTO_TEST_CASE(the_contraction_stop_drifts_within_the_same_sign_bound) {
         const cli::FreeVibrationRun r = cli::run_free_vibration(long_release(g, 1.0, true));
         BOOST_TEST_REQUIRE(r.ok(), r.message);
         const cli::EnergyDrift d = cli::energy_drift(r);
-        std::printf("%s, contraction stop: window drift %.3e, random-walk bound %.3e, same-sign "
-                    "bound %.3e\n",
-                    long_release(g).label().c_str(), window_drift(d), random_walk_bound(r),
-                    same_sign_bound(r));
+        std::printf(
+            "%s, contraction stop: window drift %.3e, random-walk bound %.3e, same-sign "
+            "bound %.3e\n",
+            long_release(g).label().c_str(), window_drift(d), random_walk_bound(r),
+            same_sign_bound(r));
         BOOST_TEST(std::abs(window_drift(d)) <= same_sign_bound(r));
     }
 }
