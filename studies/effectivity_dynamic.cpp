@@ -81,14 +81,16 @@ json dynamic_effectivity(bool quick, const StudyResults& results, std::ostringst
     out["other_state_failures"] = t.other_state;
     md << "### Dynamics: the manufactured motion\n\nThe dynamic estimate (space: p+1 for the "
           "displacement formulation, h/2, h/4 with the observed order for the mixed one, over the "
-          "run's own time grid; time: the Δt/2 companion, or tolerance/4 for IDA; "
+          "run's own time grid; time: the Δt/2 companion, or tolerance/4 for IDA and adaptive "
+          "steps; "
           "docs/error-estimates.md, Dynamics) against the exact manufactured motion "
           "(docs/reference-solutions.md §7: a free rod spun past 2π about an axis varying in "
           "space and time, four members, exact initial state, ten output times to t = 1). "
           "Quantities: the tip's displacement and rotation histories, the largest error over the "
           "output times: the estimate (space + time) against the true error max_t ‖u_h − u‖ "
           "(angle of R_hᵀR), and the part the sequence refines against that direction's true "
-          "error (time: the distance to the same mesh at the finest Δt / 8; space: the exact "
+          "error (time: the distance to the same mesh at the finest Δt / 8, or at the finest "
+          "tolerance / 64; space: the exact "
           "error of the same mesh at Δt / 8; the other part is in the JSON as `other_part`). "
           "Asymptotic as above, with the rate the estimate states (space: the mixed formulation's "
           "order 2; time: its time order × log2 of the companion's ratio, the ratio between "
@@ -97,7 +99,8 @@ json dynamic_effectivity(bool quick, const StudyResults& results, std::ostringst
                    "(ρ∞ = 0.5), in time"
                  : "every combination in space and in time with the generalized-α (ρ∞ = 0.5) "
                    "or the trapezoidal rule, the quaternion also in time with Gauss–Legendre 2 "
-                   "and 3, Radau IIA and IDA")
+                   "and 3, Radau IIA and IDA, and with adaptive steps over their tolerance "
+                   "(generalized-α, Gauss–Legendre 2 and 3; Radau IIA on 4 elements per member)")
        << ".\n\nAsymptotic rows: " << t.asymptotic << "; outside [0.5, 2] there: " << t.violations
        << "; estimator failures: " << t.failures << " (other state: " << t.other_state
        << "; of a reliable estimate otherwise, unexplained: " << t.unexplained << ").\n\n";

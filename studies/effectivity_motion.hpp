@@ -63,12 +63,13 @@ struct MotionSequence {
 // The dynamic sequences: quick, the displacement formulation's quaternion with generalized-α in
 // time; full, every combination with its formulation's default scheme (generalized-α, the
 // trapezoidal rule) in space and in time, and with the quaternion every other scheme the estimate
-// supports (Gauss–Legendre 2 and 3, Radau IIA, IDA) in time.
+// supports (Gauss–Legendre 2 and 3, Radau IIA, IDA) in time, and with adaptive steps over their
+// tolerance the generalized-α, Gauss–Legendre 2 and 3 and Radau IIA.
 std::vector<MotionSequence> motion_sequences(bool quick);
 
 // A motion run as the result JSON of a dynamic `rotbeam run` (status, steps with their time and
 // the named points' displacement, rotation matrix and angle): what the estimate reads.
-nlohmann::json motion_result_json(const MotionRunResult& r, const MotionRunSpec& spec);
+nlohmann::json motion_result_json(const MotionRunResult& r);
 
 // The run of `spec` with its dynamic estimate (estimates/history_estimate.hpp), its companions
 // being runs of the same function.

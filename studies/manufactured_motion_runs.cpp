@@ -32,6 +32,7 @@ struct Recorder {
     MotionRunResult& result;
     template <class PointStateOf>
     void operator()(double t, PointStateOf&& point_state) {
+        result.times.push_back(t);
         for (const char* name : kPoints) {
             const int p = model.point_index(name);
             const PointState h = point_state(p);
@@ -271,6 +272,7 @@ void mixed_run(const Model& model, const MotionRunSpec& spec, MotionRunResult& r
     s.time_step = spec.dt;
     s.output_interval = model.analysis.dynamics.output_interval;
     s.relative_tolerance = s.absolute_tolerance = spec.tolerance;
+    s.time_tolerance = spec.time_tolerance;
     if (spec.newton_tolerance > 0.0) {
         s.newton.residual_tolerance = s.newton.increment_tolerance = spec.newton_tolerance;
     }
@@ -351,6 +353,7 @@ std::string MotionRunSpec::label() const {
     } else {
         s << "/" << choice_name(comb::integrator_for(formulation, integrator));
     }
+    if (time_tolerance > 0.0) s << "/adaptive";
     return s.str();
 }
 
@@ -364,7 +367,9 @@ Model motion_run_model(const MotionRunSpec& spec) {
     m.analysis.dynamics.rho_infinity = spec.rho_infinity;
     m.analysis.dynamics.relative_tolerance = m.analysis.dynamics.absolute_tolerance =
         spec.tolerance;
-    m.analysis.dynamics.output_interval = spec.end_time / kMotionOutputs;
+    m.analysis.dynamics.time_tolerance = spec.time_tolerance;
+    m.analysis.dynamics.output_interval =
+        spec.output_interval > 0.0 ? spec.output_interval : spec.end_time / kMotionOutputs;
     if (spec.newton_tolerance > 0.0) {
         m.solver.residual_tolerance = m.solver.increment_tolerance = spec.newton_tolerance;
     }

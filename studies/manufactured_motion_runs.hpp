@@ -43,9 +43,13 @@ struct MotionRunSpec {
     double end_time = 1.0;
     double rho_infinity = 0.5;  // generalized-α
     double tolerance = 1e-6;    // IDA: rtol = atol (atol times the state scales)
-    // Displacement: adaptive steps with this global tolerance (translations over the motion's
-    // length, rotations in rad) when > 0; dt is then the first step.
+    // Adaptive steps with this global tolerance when > 0, dt then being the first step:
+    // displacement, translations over the motion's length and rotations in rad
+    // (core/step_size_control.hpp); mixed, the Radau IIA method's configuration unknowns over
+    // their state scales (core/dae_driver.hpp).
     double time_tolerance = 0.0;
+    // Output times this far apart; 0: end_time / kMotionOutputs.
+    double output_interval = 0.0;
     // Newton (stage iteration) tolerance on the scaled residual and increment of every step when
     // > 0; 0 keeps the drivers' defaults (displacement: the model's 1e-12, mixed: 1e-10).
     double newton_tolerance = 0.0;
@@ -84,7 +88,8 @@ struct MotionRunResult {
     // Max over the output times and points of ‖u_h − u‖/L and of the angle of R_hᵀR.
     double error_u = 0.0;
     double error_R = 0.0;
-    // The point states at the output times (for differences between two runs).
+    // The output times, and the point states at them (for differences between two runs).
+    std::vector<double> times;
     std::vector<Vec3> u;
     std::vector<Mat3> R;
     // Per output time: the velocity-level unknowns (displacement: every free node's [u̇; ω];
@@ -98,7 +103,8 @@ struct MotionRunResult {
     bool ok() const { return has_solution(status); }
 };
 
-constexpr int kMotionOutputs = 10;  // output times per run: end_time / 10 apart, and t = 0
+constexpr int kMotionOutputs =
+    10;  // output times per run by default: end_time / 10 apart, and t = 0
 
 // The model of a run: the manufactured motion's with the spec's discretization and time scheme.
 Model motion_run_model(const MotionRunSpec& spec);

@@ -87,7 +87,7 @@ nlohmann::json run_spec(const RunSpec& spec, bool estimate) {
         if (spec.case_name == kManufacturedMotionCase) {
             const MotionRunSpec m = motion_spec_of(spec);
             return estimate ? estimated_motion_run(m)
-                            : motion_result_json(run_manufactured_motion(m), m);
+                            : motion_result_json(run_manufactured_motion(m));
         }
         const Model model = build_model(spec);
         if (estimate) {
