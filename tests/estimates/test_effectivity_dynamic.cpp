@@ -135,6 +135,57 @@ cli::MotionRunSpec mixed_quaternion(Integrator integrator) {
     return s;
 }
 
+// Adaptive steps: the effectivity study's sequences of tolerances (studies/effectivity_motion.hpp:
+// generalized-α, Gauss–Legendre 2 and 3 on the displacement mesh above, Radau IIA on 4 mixed
+// elements per member; each tolerance a quarter of the previous, the tolerance/4 companion's
+// ratio). The quantity is the part the sequence refines, the time part, against the distance to
+// the same mesh at the finest tolerance / 64 (order 1 in the tolerance: that run's time error is
+// 1/64 of the finest level's); the rows are the study's (studies/effectivity_rows.hpp), asymptotic
+// from the true errors alone. Asserted: the band [0.5, 2] where asymptotic (the window above), no
+// estimator failure (true > 3 × estimate) of a reliable estimate anywhere, and the asymptotic rows
+// measured on 2026-11-29 (3: adaptive steps follow their tolerance only roughly, the true errors
+// fall by 1.3 … 15 per level). Measured then: time-part effectivities 0.88 … 1.33 (generalized-α),
+// 0.94 … 1.39 (Gauss–Legendre 2), 1.06 … 1.40 (Gauss–Legendre 3), 0.48 … 1.30 (Radau IIA, whose
+// true time errors 1.0e-3, 2.1e-4, 1.6e-4, 4.6e-5 of the rotation do not fall by the tolerance's
+// ratio); 53 s of CPU.
+int check_adaptive_sequence(const cli::MotionSequence& seq) {
+    // In time every level's reference is the same run.
+    const json reference = cli::motion_result_json(cli::run_manufactured_motion(seq.reference(0)));
+    BOOST_TEST_REQUIRE(reference["status"].get<std::string>() == "converged",
+                       seq.label() << ": reference " << reference["message"]);
+    std::vector<cli::LevelQuantities> levels;
+    double rate = std::nan("");
+    for (size_t k = 0; k < seq.levels.size(); ++k) {
+        const json r = cli::estimated_motion_run(seq.spec(k));
+        BOOST_TEST_REQUIRE(r.contains("estimate"), seq.label()
+                                                       << " tolerance " << seq.levels[k] << ": "
+                                                       << r["status"] << " " << r["message"]);
+        levels.push_back(cli::motion_quantities(seq, k, r, reference));
+        if (std::isnan(rate)) rate = cli::motion_level_rate(seq, r);
+    }
+    int checked = 0;
+    std::cout << std::setprecision(3) << seq.label() << " (time part)\n";
+    for (const cli::EffectivityRow& row : cli::effectivity_rows(levels, seq.kind(), rate)) {
+        if (row.q.quantity.find("time part") == std::string::npos) continue;
+        const bool reliable = row.q.estimate.value("reliable", true);
+        std::cout << "  tolerance " << seq.levels[row.level] << " " << row.q.quantity
+                  << ": estimate " << row.q.estimate["error"].get<double>() << " true "
+                  << row.q.true_error << " effectivity " << row.effectivity
+                  << (row.asymptotic ? " (asymptotic)" : "") << (reliable ? "" : " (not reliable)")
+                  << "\n";
+        if (reliable) {
+            BOOST_TEST(!row.failure.has_value(),
+                       seq.label() << " " << seq.levels[row.level] << " " << row.q.quantity);
+        }
+        if (!row.asymptotic) continue;
+        ++checked;
+        BOOST_TEST((row.effectivity >= 0.5 && row.effectivity <= 2.0),
+                   seq.label() << " " << seq.levels[row.level] << " " << row.q.quantity << " "
+                               << row.effectivity);
+    }
+    return checked;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(dynamic_estimate)
@@ -172,57 +223,6 @@ BOOST_AUTO_TEST_CASE(effectivity_in_tolerance_mixed_ida_manufactured) {
     s.dt = 0.05;
     const int checked = check_sequence(s, {1.6e-3, 4e-4, 1e-4, 2.5e-5});
     BOOST_TEST_MESSAGE("IDA asymptotic points: " << checked);
-}
-
-// Adaptive steps: the effectivity study's sequences of tolerances (studies/effectivity_motion.hpp:
-// generalized-α, Gauss–Legendre 2 and 3 on the displacement mesh above, Radau IIA on 4 mixed
-// elements per member; each tolerance a quarter of the previous, the tolerance/4 companion's
-// ratio). The quantity is the part the sequence refines, the time part, against the distance to
-// the same mesh at the finest tolerance / 64 (order 1 in the tolerance: that run's time error is
-// 1/64 of the finest level's); the rows are the study's (studies/effectivity_rows.hpp), asymptotic
-// from the true errors alone. Asserted: the band [0.5, 2] where asymptotic (the window above), no
-// estimator failure (true > 3 × estimate) of a reliable estimate anywhere, and the asymptotic rows
-// measured on 2026-11-29 (3: adaptive steps follow their tolerance only roughly, the true errors
-// fall by 1.3 … 15 per level). Measured then: time-part effectivities 0.88 … 1.33 (generalized-α),
-// 0.94 … 1.39 (Gauss–Legendre 2), 1.06 … 1.40 (Gauss–Legendre 3), 0.48 … 1.30 (Radau IIA, whose
-// true time errors 1.0e-3, 2.1e-4, 1.6e-4, 4.6e-5 of the rotation are not monotone in the
-// tolerance's ratio); 53 s of CPU.
-int check_adaptive_sequence(const cli::MotionSequence& seq) {
-    // In time every level's reference is the same run.
-    const json reference = cli::motion_result_json(cli::run_manufactured_motion(seq.reference(0)));
-    BOOST_TEST_REQUIRE(reference["status"].get<std::string>() == "converged",
-                       seq.label() << ": reference " << reference["message"]);
-    std::vector<cli::LevelQuantities> levels;
-    double rate = std::nan("");
-    for (size_t k = 0; k < seq.levels.size(); ++k) {
-        const json r = cli::estimated_motion_run(seq.spec(k));
-        BOOST_TEST_REQUIRE(r.contains("estimate"), seq.label()
-                                                       << " tolerance " << seq.levels[k] << ": "
-                                                       << r["status"] << " " << r["message"]);
-        levels.push_back(cli::motion_quantities(seq, k, r, reference));
-        if (std::isnan(rate)) rate = cli::motion_level_rate(seq, r);
-    }
-    int checked = 0;
-    std::cout << std::setprecision(3) << seq.label() << " (time part)\n";
-    for (const cli::EffectivityRow& row : cli::effectivity_rows(levels, seq.kind(), rate)) {
-        if (row.q.quantity.find("time part") == std::string::npos) continue;
-        const bool reliable = row.q.estimate.value("reliable", true);
-        std::cout << "  tolerance " << seq.levels[row.level] << " " << row.q.quantity
-                  << ": estimate " << row.q.estimate["error"].get<double>() << " true "
-                  << row.q.true_error << " effectivity " << row.effectivity
-                  << (row.asymptotic ? " (asymptotic)" : "") << (reliable ? "" : " (not reliable)")
-                  << "\n";
-        if (reliable) {
-            BOOST_TEST(!row.failure.has_value(),
-                       seq.label() << " " << seq.levels[row.level] << " " << row.q.quantity);
-        }
-        if (!row.asymptotic) continue;
-        ++checked;
-        BOOST_TEST((row.effectivity >= 0.5 && row.effectivity <= 2.0),
-                   seq.label() << " " << seq.levels[row.level] << " " << row.q.quantity << " "
-                               << row.effectivity);
-    }
-    return checked;
 }
 
 BOOST_AUTO_TEST_CASE(effectivity_in_tolerance_adaptive_manufactured) {
