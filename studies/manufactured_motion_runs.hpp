@@ -45,8 +45,8 @@ struct MotionRunSpec {
     double tolerance = 1e-6;    // IDA: rtol = atol (atol times the state scales)
     // Adaptive steps with this global tolerance when > 0, dt then being the first step:
     // displacement, translations over the motion's length and rotations in rad
-    // (core/step_size_control.hpp); mixed, the Radau IIA method's configuration unknowns over
-    // their state scales (core/dae_driver.hpp).
+    // (core/step_size_control.hpp); mixed (the trapezoidal rule, Radau IIA), the configuration
+    // unknowns over their state scales (core/dae_driver.hpp).
     double time_tolerance = 0.0;
     // Output times this far apart; 0: end_time / kMotionOutputs.
     double output_interval = 0.0;
@@ -103,8 +103,8 @@ struct MotionRunResult {
     bool ok() const { return has_solution(status); }
 };
 
-constexpr int kMotionOutputs =
-    10;  // output times per run by default: end_time / 10 apart, and t = 0
+// Output times per run by default: end_time / 10 apart, and t = 0.
+constexpr int kMotionOutputs = 10;
 
 // The model of a run: the manufactured motion's with the spec's discretization and time scheme.
 Model motion_run_model(const MotionRunSpec& spec);
