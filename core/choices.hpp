@@ -63,6 +63,11 @@ enum class LinearSolver { sparse, dense };
 // The static nonlinear solver: the in-house Newton or KINSOL (additive systems only).
 enum class Driver { newton, kinsol };
 
+// Which side of the run the error estimate's companions lie on (docs/error-estimates.md): finer
+// meshes and time steps (h/2 and h/4, Δt/2), or coarser ones (2h and 4h, 2Δt), which cost a
+// fraction of the run instead of several runs.
+enum class CompanionSide { finer, coarser };
+
 // The names of each choice, in enum order (ChoiceNames<E>::kNames[static_cast<size_t>(e)]).
 template <class E>
 struct ChoiceNames;
@@ -106,6 +111,10 @@ struct ChoiceNames<LinearSolver> {
 template <>
 struct ChoiceNames<Driver> {
     static constexpr std::array<std::string_view, 2> kNames = {"newton", "kinsol"};
+};
+template <>
+struct ChoiceNames<CompanionSide> {
+    static constexpr std::array<std::string_view, 2> kNames = {"finer", "coarser"};
 };
 
 template <class E>

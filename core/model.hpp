@@ -211,6 +211,9 @@ struct Analysis {
     // `rotbeam run` estimates the discretization error (docs/error-estimates.md) unless false;
     // `run --estimate on|off` overrides it.
     bool estimate = true;
+    // The estimate's companions: finer (default) or coarser than the run (docs/error-estimates.md,
+    // "Coarser companions"); analysis.estimate_companions.
+    CompanionSide estimate_companions = CompanionSide::finer;
     // `rotbeam run` refines the discretization until every estimate is at most accuracy / 2
     // relative to its scale (docs/accuracy-control.md); 0 = run the discretization as given.
     // `run --accuracy TOL` sets it.

@@ -115,16 +115,34 @@ Step refine_budget_stop(const AccuracyBudget& budget, const Model& next) {
     return s;
 }
 
-// Every member's elements times `factor` (at least one more), within the budget.
+// The multiple every member's element count must be: 4 for the mixed formulation's coarser
+// companions, which halve and quarter it (estimates/companions.hpp), else 1.
+int element_multiple(const Model& model) {
+    return model.discretization.formulation == Formulation::mixed &&
+                   model.analysis.estimate_companions == CompanionSide::coarser
+               ? 4
+               : 1;
+}
+
+// `n` rounded up to the model's element multiple.
+int round_up_elements(const Model& model, double n) {
+    const double k = element_multiple(model);
+    return static_cast<int>(std::ceil(n / k) * k);
+}
+
+// Every member's elements times `factor` (at least one more, and a multiple of
+// element_multiple), within the budget.
 Step split(const Model& model, double factor, const AccuracyBudget& budget,
            const std::string& why) {
     Step s;
     Model next = model;
     bool at_budget = true;
+    const int k = element_multiple(model);
+    const int largest = budget.elements_per_member / k * k;
     for (Member& m : next.members) {
-        const double want = std::ceil(m.elements * factor);
-        const int n = static_cast<int>(std::min<double>(want, budget.elements_per_member));
-        if (m.elements < budget.elements_per_member) at_budget = false;
+        const int want = round_up_elements(model, std::ceil(m.elements * factor));
+        const int n = std::min(want, largest);
+        if (m.elements < largest) at_budget = false;
         m.elements = std::max(n, m.elements);
     }
     if (at_budget) {
@@ -198,9 +216,20 @@ Step refine_mixed(const Model& model, const Attempt& now, double observed, doubl
     double f = predicted_split(now.worst, target, r);
     // The h/2 and h/4 companions already solved 2× and 4× the elements: a prediction up to 4×
     // takes the next of those meshes, whose run is at hand (runs/accuracy_run.cpp reuses it).
-    if (f <= 4.0) f = f <= 2.0 ? 2.0 : 4.0;
+    // Coarser companions leave no finer run at hand.
+    if (model.analysis.estimate_companions == CompanionSide::finer && f <= 4.0) {
+        f = f <= 2.0 ? 2.0 : 4.0;
+    }
     return split(model, f, budget,
                  std::string(use_observed ? "observed" : "theoretical") + " order " + number(r));
+}
+
+// What keeps an estimate from being complete: its first missing or failing quantity, or, when it
+// has none, the estimate's own reason (a refused estimate has no quantities).
+std::string estimate_problem(const AccuracyMeasure& m, const json& result) {
+    if (!m.first_problem.empty()) return m.first_problem;
+    return result.contains("estimate") ? result["estimate"].value("reason", std::string())
+                                       : std::string();
 }
 
 // Stagnation: the last two refinements of the discretization each left more than half the worst
@@ -367,6 +396,9 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
     const Clock::time_point start = Clock::now();
     const bool mixed = model.discretization.formulation == Formulation::mixed;
     Model current = start_from.value_or(model);
+    // Coarser companions need element counts that divide by 4: the first attempt rounds the
+    // case's up (the attempts list its elements).
+    for (Member& m : current.members) m.elements = round_up_elements(current, m.elements);
     // From a coarse start, a run that does not solve or cannot be estimated moves to the case's
     // own discretization (once) instead of stopping: one element may not resolve the solution
     // or may put a node at a chart's singular angle where the case's mesh does not.
@@ -430,7 +462,7 @@ nlohmann::json control_accuracy(const Model& model, double tolerance, const Accu
                                            : "the run's status is " + a.status + ": ") +
                    result.value("message", std::string());
         } else if (m->missing > 0 || m->quantities == 0) {
-            stop = "no complete estimate: " + m->first_problem;
+            stop = "no complete estimate: " + estimate_problem(*m, result);
         } else if (stagnated(history)) {
             stop = "round-off floor: the estimates stagnate near " + number(m->worst) +
                    " of their scale over the last refinements, above TOL/10 = " +
@@ -533,7 +565,7 @@ nlohmann::json control_dynamic_accuracy(const Model& model, double tolerance,
             break;
         }
         if (m->missing > 0 || m->quantities == 0) {
-            stop = "no complete estimate: " + m->first_problem;
+            stop = "no complete estimate: " + estimate_problem(*m, result);
             break;
         }
         const bool space = m->worst_space > share || m->space_unreliable > 0;

@@ -64,26 +64,51 @@ void add_decay_companion(const Model& model, CompanionPlan& plan) {
     plan.companions.push_back({name, std::move(companion)});
 }
 
-CompanionPlan h_plan(const Model& model) {
-    CompanionPlan plan;
-    plan.method = "h/2,h/4";
-    // Second order for nodal values and frequencies (docs/mixed-formulation.md; measured 2.00
-    // for every parameterization, docs/studies.md).
-    plan.theoretical_order = {{"displacement", 2}, {"rotation", 2}, {"frequency", 2}};
+// The h/2 and h/4 companions: every member's elements doubled and quadrupled.
+std::string add_finer_meshes(const Model& model, CompanionPlan& plan) {
     for (const int factor : {2, 4}) {
         Model companion = model;
         for (Member& m : companion.members) {
             if (m.elements > cases::kMaxElementsPerMember / factor) {
-                plan.refusal = "the h/4 companion would exceed " +
-                               std::to_string(cases::kMaxElementsPerMember) +
-                               " elements on member '" + m.name + "'";
-                plan.companions.clear();
-                return plan;
+                return "the h/" + std::to_string(factor) + " companion would exceed " +
+                       std::to_string(cases::kMaxElementsPerMember) + " elements on member '" +
+                       m.name + "'";
             }
             m.elements *= factor;
         }
         plan.companions.push_back({std::to_string(factor) + "x elements", std::move(companion)});
     }
+    return "";
+}
+
+// The 2h and 4h companions: every member's elements halved and quartered, so both meshes nest in
+// the run's with the same member ends as nodes.
+std::string add_coarser_meshes(const Model& model, CompanionPlan& plan) {
+    for (const Member& m : model.members) {
+        if (m.elements % 4 != 0) {
+            return "the coarser companions need every member's elements divisible by 4; member '" +
+                   m.name + "' has " + std::to_string(m.elements);
+        }
+    }
+    for (const int divisor : {2, 4}) {
+        Model companion = model;
+        for (Member& m : companion.members) m.elements /= divisor;
+        plan.companions.push_back(
+            {"1/" + std::to_string(divisor) + " elements", std::move(companion)});
+    }
+    return "";
+}
+
+CompanionPlan h_plan(const Model& model) {
+    CompanionPlan plan;
+    const bool finer = model.analysis.estimate_companions == CompanionSide::finer;
+    plan.method = finer ? "h/2,h/4" : "2h,4h";
+    plan.h_sequence = finer ? HSequence::finer : HSequence::coarser;
+    // Second order for nodal values and frequencies (docs/mixed-formulation.md; measured 2.00
+    // for every parameterization, docs/studies.md).
+    plan.theoretical_order = {{"displacement", 2}, {"rotation", 2}, {"frequency", 2}};
+    plan.refusal = finer ? add_finer_meshes(model, plan) : add_coarser_meshes(model, plan);
+    if (!plan.refusal.empty()) plan.companions.clear();
     return plan;
 }
 

@@ -3,7 +3,10 @@
 //   displacement: "p+1", the same mesh at order p + 1; below kSpectralOrder, for statics and
 //                 modes, also order p + 2, which checks that the p-sequence decays
 //                 (quantity_estimate.hpp);
-//   mixed:        "h/2,h/4", every member's elements doubled and quadrupled.
+//   mixed:        "h/2,h/4", every member's elements doubled and quadrupled; with coarser
+//                 companions (analysis.estimate_companions) "2h,4h", halved and quartered.
+//                 The p-sequence has no coarser form (order p − 1 measures e_{p−1}, not e_p):
+//                 the displacement formulation keeps p+1 either way.
 // Everything else of the model (loads, load factors, solver settings, parameterization) is kept.
 #pragma once
 
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "core/model.hpp"
+#include "estimates/quantity_estimate.hpp"
 
 namespace rotbeam::estimate {
 
@@ -25,15 +29,16 @@ namespace rotbeam::estimate {
 inline constexpr int kSpectralOrder = 6;
 
 struct Companion {
-    std::string label;  // "order 5", "2x elements", "4x elements"
+    std::string label;  // "order 5", "2x elements", "4x elements", "1/2 elements", "1/4 elements"
     Model model;
 };
 
 // bugprone-exception-escape: the implicit special members may throw through Model's (its
 // containers' moves are not all noexcept); a plan is built and returned once, never moved inside a
 // noexcept context, so nothing relies on them not throwing.
-struct CompanionPlan {   // NOLINT(bugprone-exception-escape)
-    std::string method;  // "p+1" | "h/2,h/4"
+struct CompanionPlan {                        // NOLINT(bugprone-exception-escape)
+    std::string method;                       // "p+1" | "h/2,h/4" | "2h,4h"
+    HSequence h_sequence = HSequence::finer;  // the h-methods' side of the run
     std::vector<Companion> companions;
     // The theoretical order of each estimated quantity (docs/error-estimates.md): numbers of
     // the h-convergence rate; for p+1 also "in_p": "exponential".

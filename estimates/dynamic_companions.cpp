@@ -1,6 +1,7 @@
 #include "estimates/dynamic_companions.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "cases/loader/limits.hpp"
 
@@ -47,7 +48,8 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
         plan.time.push_back({"tolerance/4", std::move(companion)});
         return plan;
     }
-    plan.time_method = "dt/2";
+    const bool finer = model.analysis.estimate_companions == CompanionSide::finer;
+    plan.time_method = finer ? "dt/2" : "2dt";
     // Generalized-α and the mixed trapezoidal scheme are second order; Gauss–Legendre
     // collocation with s stages is of order 2s (core/gauss_collocation.hpp). Radau IIA with 3
     // stages is of order 5, but the histories' observed order falls to 1–3.5 at practical steps
@@ -69,14 +71,27 @@ DynamicPlan plan_dynamic_companions(const Model& model) {
             plan.time_order = 2.0;
             break;
     }
-    plan.time_ratio = 2.0;
+    plan.time_ratio = finer ? 2.0 : 0.5;
     c.time_step = d.time_step / plan.time_ratio;
     if (d.end_time / c.time_step > cases::kMaxTimeSteps) {
         plan.time_refusal = "the dt/2 companion would exceed the largest number of time steps, " +
                             std::to_string(static_cast<long>(cases::kMaxTimeSteps));
         return plan;
     }
-    plan.time.push_back({"dt/2", std::move(companion)});
+    if (!finer) {
+        // A fixed-step run writes an output at the first step that reaches its output time: the
+        // 2dt companion reaches the run's output times only when they are multiples of 2 dt.
+        const double every = c.output_interval / c.time_step;
+        if (std::abs(every - std::round(every)) > 1e-9 * every) {
+            std::ostringstream why;
+            why << "the 2dt companion (dt = " << c.time_step
+                << ") does not step onto the run's output times every " << c.output_interval
+                << " (analysis.output_interval must be a multiple of 2 dt)";
+            plan.time_refusal = why.str();
+            return plan;
+        }
+    }
+    plan.time.push_back({plan.time_method, std::move(companion)});
     return plan;
 }
 

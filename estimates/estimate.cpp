@@ -27,6 +27,7 @@ struct Comparison {
     double order_displacement = 2.0;  // theoretical h-orders (h/2,h/4 only)
     double order_rotation = 2.0;
     double order_frequency = 2.0;
+    HSequence h_sequence = HSequence::finer;
     double floor_displacement = kRoundOffFloor;
     std::vector<CompanionResult> companions;
 };
@@ -124,11 +125,12 @@ json step_estimate(const Comparison& cmp, std::size_t i, const json& step, Tally
         const json& half = (*at[0])["points"][name];
         const PointDifference d1 = difference(point, half);
         const PointDifference d2 = difference(half, (*at[1])["points"][name]);
-        out[name] = {{"displacement",
-                      tally.add(h_refinement(d1.displacement, d2.displacement,
-                                             cmp.order_displacement, cmp.floor_displacement))},
-                     {"rotation", tally.add(h_refinement(d1.rotation, d2.rotation,
-                                                         cmp.order_rotation, kRoundOffFloor))}};
+        out[name] = {
+            {"displacement",
+             tally.add(h_refinement(d1.displacement, d2.displacement, cmp.order_displacement,
+                                    cmp.floor_displacement, cmp.h_sequence))},
+            {"rotation", tally.add(h_refinement(d1.rotation, d2.rotation, cmp.order_rotation,
+                                                kRoundOffFloor, cmp.h_sequence))}};
     }
     return out;
 }
@@ -167,9 +169,9 @@ void mode_estimates(const Comparison& cmp, const ModePairing& pair_modes, json& 
         const double floor = kRoundOffFloor * std::abs(f0);
         const double d1 = std::abs(f0 - f[0]);
         const QuantityEstimate e =
-            cmp.method != "p+1"
-                ? h_refinement(d1, std::abs(f[0] - f[1]), cmp.order_frequency, floor)
-            : f.size() == 1 ? p_refinement(d1)
+            cmp.method != "p+1" ? h_refinement(d1, std::abs(f[0] - f[1]), cmp.order_frequency,
+                                               floor, cmp.h_sequence)
+            : f.size() == 1     ? p_refinement(d1)
                             : p_refinement(d1, std::abs(f[0] - f[1]), std::abs(f0 - f[1]), floor);
         mode["estimate"] = {{"frequency", tally.add(e)}};
     }
@@ -228,7 +230,8 @@ void add_estimate(const Model& model, nlohmann::json& result, const CompanionRun
     if (refuse_estimate(result, e, plan.refusal)) return;
     Comparison cmp;
     cmp.method = plan.method;
-    if (plan.method == "h/2,h/4") {
+    if (plan.method != "p+1") {
+        cmp.h_sequence = plan.h_sequence;
         cmp.order_displacement = plan.theoretical_order["displacement"].get<double>();
         cmp.order_rotation = plan.theoretical_order["rotation"].get<double>();
         cmp.order_frequency = plan.theoretical_order["frequency"].get<double>();

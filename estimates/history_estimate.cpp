@@ -63,10 +63,12 @@ const json& measured_points(const json& step) {
 
 struct Context {
     const DynamicPlan& plan;
-    std::vector<Ran> space;  // p+1: one; h/2, h/4: two
+    std::vector<Ran> space;  // p+1: one; h/2, h/4 (or 2h, 4h): two
     std::vector<Ran> time;   // one
     double floor_displacement = kRoundOffFloor;
-    double time_factor = 4.0 / 3.0;  // Richardson: 1 / (1 − k⁻ᵠ)
+    double time_factor = 4.0 / 3.0;  // Richardson: 1 / |1 − k⁻ᵠ|
+    // The coarser history's phase over the run's: 1, or k⁻ᵠ for a 2dt companion (k = 1/2).
+    double coarser_phase = 1.0;
 };
 
 const json* at(const Ran& c, std::size_t i, const std::string& name) {
@@ -88,7 +90,8 @@ std::optional<QuantityEstimate> space_estimate(const Context& cx, std::size_t i,
     if (cx.plan.space.method == "p+1") return p_refinement(d1);
     const double d2 = component(point_difference(*c[0], *c[1]), q);
     const double order = cx.plan.space.theoretical_order[kQuantities[q]].get<double>();
-    return h_refinement(d1, d2, order, q == 0 ? cx.floor_displacement : kRoundOffFloor);
+    return h_refinement(d1, d2, order, q == 0 ? cx.floor_displacement : kRoundOffFloor,
+                        cx.plan.space.h_sequence);
 }
 
 std::optional<double> time_difference(const Context& cx, std::size_t i, const std::string& name,
@@ -282,21 +285,30 @@ double length_scale(const Model& model) {
 }
 
 // The largest accumulated phase error among the responding histories, and whose.
-std::pair<double, std::string> worst_phase(const Histories& h) {
-    std::pair<double, std::string> worst{0.0, ""};
+struct WorstPhase {
+    double run = 0.0;      // the run's φ
+    double coarser = 0.0;  // the coarser history's (the run's, or a 2dt companion's 2^q φ)
+    std::string of;
+};
+
+WorstPhase worst_phase(const Histories& h, double coarser_phase) {
+    WorstPhase worst;
     for (const auto& [k, x] : h) {
-        if (x.responds && x.phase >= worst.first) worst = {x.phase, k};
+        if (x.responds && x.phase >= worst.run) worst = {x.phase, x.phase * coarser_phase, k};
     }
     return worst;
 }
 
-QuantityEstimate time_verdict(const std::pair<double, std::string>& phase) {
+// The criteria hold for the coarser of the two histories: the Richardson estimate is linear in
+// the phase of both, and a 2dt companion carries 2^q times the run's.
+QuantityEstimate time_verdict(const WorstPhase& phase) {
     QuantityEstimate t;
-    if (phase.first <= kPhaseReliable) return t;
+    if (phase.coarser <= kPhaseReliable) return t;
     std::ostringstream why;
     why.precision(3);
-    why << "accumulated phase error of the " << phase.second << " history " << phase.first
-        << " rad, not << 1 rad (criterion <= " << kPhaseReliable << " rad)";
+    why << "accumulated phase error of the " << phase.of << " history " << phase.run << " rad";
+    if (phase.coarser > phase.run) why << " (its 2dt companion's " << phase.coarser << " rad)";
+    why << ", not << 1 rad (criterion <= " << kPhaseReliable << " rad)";
     t.reliable = false;
     t.reason = why.str();
     return t;
@@ -304,15 +316,17 @@ QuantityEstimate time_verdict(const std::pair<double, std::string>& phase) {
 
 // `inaccurate` when the phase criterion fails far (φ > 1 rad) or a history's estimated error
 // reaches half its amplitude; the message names the quantity, the estimate and the criterion.
-void judge(const Histories& h, const std::pair<double, std::string>& phase,
-           const std::string& time_method, json& result) {
+void judge(const Histories& h, const WorstPhase& phase, const std::string& time_method,
+           json& result) {
     const std::string status = result["status"].get<std::string>();
     std::ostringstream why;
     why.precision(3);
-    if (phase.first > kPhaseInaccurate) {
-        why << "the time step is beyond what the estimate can vouch for: the " << phase.second
-            << " history's accumulated phase error is " << phase.first << " rad by the "
-            << time_method << " companion, criterion <= " << kPhaseInaccurate << " rad";
+    if (phase.coarser > kPhaseInaccurate) {
+        why << "the time step is beyond what the estimate can vouch for: the " << phase.of
+            << " history's accumulated phase error is " << phase.run << " rad by the "
+            << time_method << " companion";
+        if (phase.coarser > phase.run) why << " (the companion's own " << phase.coarser << " rad)";
+        why << ", criterion <= " << kPhaseInaccurate << " rad";
     } else {
         for (const auto& [k, x] : h) {
             if (!x.responds || x.max_error < kRelativeInaccurate * x.amplitude) continue;
@@ -332,7 +346,7 @@ void judge(const Histories& h, const std::pair<double, std::string>& phase,
 
 double accumulated_phase(double difference, double amplitude, double order, double ratio) {
     const double s = std::min(1.0, difference / (2.0 * amplitude));
-    return 2.0 * std::asin(s) / (1.0 - std::pow(ratio, -order));
+    return 2.0 * std::asin(s) / std::abs(1.0 - std::pow(ratio, -order));
 }
 
 void add_dynamic_estimate(const Model& model, nlohmann::json& result, const CompanionRun& run) {
@@ -345,7 +359,8 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
     const std::clock_t cpu = std::clock();
     Context cx{plan, {}, {}};
     cx.floor_displacement = kRoundOffFloor * length_scale(model);
-    cx.time_factor = 1.0 / (1.0 - std::pow(plan.time_ratio, -plan.time_order));
+    cx.time_factor = 1.0 / std::abs(1.0 - std::pow(plan.time_ratio, -plan.time_order));
+    cx.coarser_phase = std::max(1.0, std::pow(plan.time_ratio, -plan.time_order));
     const json& steps = result["steps"];
     const double dt = model.analysis.dynamics.time_step;
     double companion_work = 0.0;
@@ -354,7 +369,7 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
     }
     cx.time.push_back(run_companion(plan.time[0], run, steps, dt, e, companion_work));
     Histories h = survey(cx, steps);
-    const std::pair<double, std::string> phase = worst_phase(h);
+    const WorstPhase phase = worst_phase(h, cx.coarser_phase);
     const QuantityEstimate verdict = time_verdict(phase);
     Tally tally;
     for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -363,8 +378,8 @@ void add_dynamic_estimate(const Model& model, nlohmann::json& result, const Comp
     e["cost"] = cost_json(result, e["wall_seconds"].get<double>(),
                           static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC, companion_work);
     e["history"] = history_json(h);
-    e["phase_error_rad"] = phase.first;
-    e["phase_of"] = phase.second;
+    e["phase_error_rad"] = phase.run;
+    e["phase_of"] = phase.of;
     e["time_reliable"] = verdict.reliable;
     e["estimated"] = tally.estimated;
     e["unreliable"] = tally.unreliable;

@@ -35,8 +35,8 @@ inline constexpr double kRelativeInaccurate = 0.5;
 // The accumulated phase error φ of a history of amplitude A whose largest difference from its
 // time companion is D, for a scheme of order q whose companion's step (or tolerance) is the run's
 // / k: the companion's phase error is φ / kᵠ, the two histories A sin(ωt + φ) and A sin(ωt + φ/kᵠ)
-// differ by at most 2A sin(φ (1 − k⁻ᵠ) / 2), so φ = 2 asin(D / 2A) / (1 − k⁻ᵠ) (D ≥ 2A: the
-// value at D = 2A, a lower bound).
+// differ by at most 2A sin(φ |1 − k⁻ᵠ| / 2), so φ = 2 asin(D / 2A) / |1 − k⁻ᵠ| (D ≥ 2A: the
+// value at D = 2A, a lower bound). k = 1/2 for a 2dt companion, whose phase is 2ᵠ φ.
 double accumulated_phase(double difference, double amplitude, double order, double ratio);
 
 // Runs the space and time companions and adds the estimate (see above). A run whose status is

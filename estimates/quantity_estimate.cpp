@@ -8,8 +8,21 @@ namespace rotbeam::estimate {
 
 namespace {
 
-// Richardson's factor: e_h = e₁ / (1 − 2^−r).
-double richardson(double e1, double order) { return e1 / (1.0 - std::exp2(-order)); }
+// Richardson's extrapolation from e₁ = |q_h − q_{h/k}| at order r: e_h = e₁ / |1 − k^−r|, with
+// k = 2 (the h/2 companion: e₁ / (1 − 2^−r)) or k = 1/2 (the 2h companion: e₁ / (2^r − 1)).
+double richardson(double e1, double order, HSequence sequence) {
+    const double k_to_minus_r = sequence == HSequence::finer ? std::exp2(-order) : std::exp2(order);
+    return e1 / std::abs(1.0 - k_to_minus_r);
+}
+
+// The companions' names in the reasons, nearer the run first.
+struct Widths {
+    const char* near;
+    const char* far;
+};
+Widths widths(HSequence sequence) {
+    return sequence == HSequence::finer ? Widths{"h/2", "h/4"} : Widths{"2h", "4h"};
+}
 
 // Both successive differences at or below the round-off floor: the value is unchanged under
 // refinement, and the estimate is the larger difference (reliable).
@@ -45,36 +58,46 @@ QuantityEstimate p_refinement(double d1, double d2, double d02, double floor) {
     return e;
 }
 
-QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor) {
+QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor,
+                              HSequence sequence) {
     QuantityEstimate e;
     if (at_round_off(e1, e2, floor, e)) return e;
+    const Widths w = widths(sequence);
     std::ostringstream why;
     why.precision(3);
-    if (e2 <= floor) {
-        // The h/2 and h/4 values agree to round-off and the h value does not: the companions have
-        // converged, so the run's error is its difference from them, e₁, measured rather than
-        // extrapolated (no order is needed, none is defined). A linear problem whose nodal values
-        // the mixed formulation reproduces at h/2 already does this.
+    // The two finest of the three values (h/2 and h/4, or the run and 2h) agree to round-off and
+    // the third does not: the finest have converged, and the run's error is e₁, measured rather
+    // than extrapolated (no order is needed, none is defined). A linear problem whose nodal values
+    // the mixed formulation reproduces at h/2 (or already at 2h) does this.
+    const bool finest_agree = sequence == HSequence::finer ? e2 <= floor : e1 <= floor;
+    if (finest_agree) {
         e.error = e1;
-        e.reason = "the h/2 and h/4 companions agree to round-off: the run's difference from them";
+        e.reason = sequence == HSequence::finer
+                       ? "the h/2 and h/4 companions agree to round-off: the run's difference from "
+                         "them"
+                       : "the run and its 2h companion agree to round-off: their difference";
         return e;
     }
-    if (!(e2 < e1)) {
-        // e₂ ≥ e₁: not converging monotonically.
-        e.error = richardson(e1, theoretical_order);
+    // The width halves from the coarsest to the finest value, so a converging sequence has the
+    // larger difference on the coarse side: e₁ > e₂ for h/2, h/4, e₂ > e₁ for 2h, 4h.
+    const double coarse_side = sequence == HSequence::finer ? e1 : e2;
+    const double fine_side = sequence == HSequence::finer ? e2 : e1;
+    if (!(fine_side < coarse_side)) {
+        e.error = richardson(e1, theoretical_order, sequence);
         e.reliable = false;
-        e.observed_order = std::log2(e1 / e2);
-        why << "not monotone: |q_h/2 - q_h/4| = " << e2 << " >= |q_h - q_h/2| = " << e1;
+        e.observed_order = std::log2(coarse_side / fine_side);
+        why << "not monotone: |q_" << w.near << " - q_" << w.far << "| = " << e2 << ", |q_h - q_"
+            << w.near << "| = " << e1;
         e.reason = why.str();
         return e;
     }
-    const double r = std::log2(e1 / e2);
+    const double r = std::log2(coarse_side / fine_side);
     e.observed_order = r;
     if (std::abs(r - theoretical_order) <= kOrderWindow) {
-        e.error = richardson(e1, r);
+        e.error = richardson(e1, r, sequence);
         return e;
     }
-    e.error = richardson(e1, theoretical_order);
+    e.error = richardson(e1, theoretical_order, sequence);
     e.reliable = false;
     why << "observed order " << r << " outside " << theoretical_order << " +- " << kOrderWindow
         << ": not in the asymptotic range (extrapolated with the theoretical order)";

@@ -12,6 +12,10 @@
 //   r = log₂(e₁/e₂) and Richardson's estimate e_h = e₁ / (1 − 2^−r). It is `reliable` only when the
 //   sequence is monotone (e₂ < e₁) and r lies within kOrderWindow of the theoretical order;
 //   otherwise the estimate is still given (with the theoretical order) and says why it is not.
+// - 2h, 4h (mixed formulation, coarser companions): the elements halved and quartered. With
+//   e₁ = |q_h − q_{2h}| ≈ C h^r (2^r − 1) and e₂ = |q_{2h} − q_{4h}| = 2^r e₁, r = log₂(e₂/e₁) and
+//   e_h = e₁ / (2^r − 1); monotone means e₂ > e₁. Both are e₁ / |1 − k^−r| with k the run's mesh
+//   width over the first companion's (2 for h/2, 1/2 for 2h), r = log_k(e₁/e₂).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -50,10 +54,15 @@ QuantityEstimate p_refinement(double difference);
 // reliable.
 QuantityEstimate p_refinement(double d1, double d2, double d02, double floor);
 
-// From e₁ = |q_h − q_{h/2}|, e₂ = |q_{h/2} − q_{h/4}|. Both at or below `floor` (round-off of
-// the solves): the quantity does not change under refinement (a clamped point, a value fixed by
-// symmetry); the estimate is max(e₁, e₂), reliable.
-QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor);
+// The mesh sequence of an h-estimate: the companions' widths h/2, h/4 (finer) or 2h, 4h.
+enum class HSequence { finer, coarser };
+
+// From e₁ = |q_h − q_{h/2}|, e₂ = |q_{h/2} − q_{h/4}| (finer), or e₁ = |q_h − q_{2h}|, e₂ = |q_{2h}
+// − q_{4h}| (coarser). Both at or below `floor` (round-off of the solves): the quantity does not
+// change under refinement (a clamped point, a value fixed by symmetry); the estimate is max(e₁,
+// e₂), reliable.
+QuantityEstimate h_refinement(double e1, double e2, double theoretical_order, double floor,
+                              HSequence sequence = HSequence::finer);
 
 // {"error", "reliable", "observed_order" (when defined), "reason" (when not empty)}.
 nlohmann::json to_json(const QuantityEstimate& e);

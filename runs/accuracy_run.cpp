@@ -21,8 +21,9 @@ namespace {
 // What tells two runs of one controlled case apart: the refinement and the companions change only
 // these (elements per member, order, sub-steps, the trapezoidal rule's refine; in a dynamic
 // analysis the adaptive steps' tolerance, IDA's tolerances and the output interval, which the
-// time companion of adaptive steps halves: estimates/dynamic_companions.cpp).
-using Key = std::tuple<std::vector<int>, int, int, int, double, double, double, double>;
+// time companion of adaptive steps halves, and the fixed step, which a dt/2 or 2dt companion
+// changes alone: estimates/dynamic_companions.cpp).
+using Key = std::tuple<std::vector<int>, int, int, int, double, double, double, double, double>;
 
 Key key_of(const Model& model) {
     std::vector<int> elements;
@@ -35,7 +36,8 @@ Key key_of(const Model& model) {
             d.time_tolerance,
             d.relative_tolerance,
             d.absolute_tolerance,
-            d.output_interval};
+            d.output_interval,
+            d.time_step};
 }
 
 std::vector<std::vector<double>> mode_stations(const nlohmann::json& modes) {

@@ -16,9 +16,13 @@ bool asymptotic_errors(RefinementKind kind, double e0, double e1, double e2, dou
         // Halving per order; a p+2 error at the floor has fallen as far as can be seen.
         return e1 < 0.5 * e0 && (e2 <= floor || e2 < 0.5 * e1);
     }
-    if (!(e1 < e0 && e2 < e1) || e2 <= floor) return false;
-    return std::abs(std::log2(e0 / e1) - theoretical_order) <= estimate::kOrderWindow &&
-           std::abs(std::log2(e1 / e2) - theoretical_order) <= estimate::kOrderWindow;
+    // Order the three by mesh, coarsest first: monotone means falling from a to c, all above the
+    // floor, at observed orders within the window.
+    const bool coarser = kind == RefinementKind::h_coarser;
+    const double a = coarser ? e2 : e0, b = e1, c = coarser ? e0 : e2;
+    if (!(b < a && c < b) || c <= floor) return false;
+    return std::abs(std::log2(a / b) - theoretical_order) <= estimate::kOrderWindow &&
+           std::abs(std::log2(b / c) - theoretical_order) <= estimate::kOrderWindow;
 }
 
 namespace {
@@ -76,7 +80,12 @@ std::vector<EffectivityRow> effectivity_rows(const std::vector<LevelQuantities>&
         for (const QuantityAtLevel& q : levels[k]) {
             if (!q.estimate.contains("error")) continue;
             EffectivityRow row{k, q, kNoValue, {}, false, std::nullopt};
-            row.next_true = {true_error(k + 1, q.quantity), true_error(k + 2, q.quantity)};
+            // The companions' levels, nearer first: after k, or before it for h_coarser.
+            const auto companion_level = [&](size_t n) {
+                if (kind != RefinementKind::h_coarser) return true_error(k + n, q.quantity);
+                return k >= n ? true_error(k - n, q.quantity) : kNoValue;
+            };
+            row.next_true = {companion_level(1), companion_level(2)};
             if (q.true_error > q.floor) {
                 row.effectivity = q.estimate["error"].get<double>() / q.true_error;
             }

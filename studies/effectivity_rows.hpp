@@ -34,7 +34,8 @@ namespace rotbeam::cli {
 inline constexpr double kEffectivityLow = 0.5;
 inline constexpr double kEffectivityHigh = 2.0;
 
-// One quantity at one level: its estimate ({"error", "reliable", "reason"}) and true error.
+// One quantity at one level: its estimate ({"error", "reliable", "reason"}, or {} where it has
+// none: its true error still classifies the other levels' rows) and true error.
 struct QuantityAtLevel {
     std::string quantity;  // "tip displacement at load factor 2", "frequency of mode 3"
     nlohmann::json estimate;
@@ -42,15 +43,17 @@ struct QuantityAtLevel {
     double floor = 0.0;  // true errors at or below it are not the discretization's
 };
 
-// Every estimated quantity of one level's result with a reference; the same quantity must carry
+// Every quantity of one level's result with a reference; the same quantity must carry
 // the same `quantity` name at every level (the rows pair levels by it).
 using LevelQuantities = std::vector<QuantityAtLevel>;
 
 struct EffectivityRow {
     size_t level = 0;  // index in the sequence
     QuantityAtLevel q;
-    double effectivity = 0.0;       // estimate / true error (NaN at or below the floor)
-    std::vector<double> next_true;  // the same quantity's true error at the next two levels
+    double effectivity = 0.0;  // estimate / true error (NaN at or below the floor)
+    // The same quantity's true error on the companions' discretizations: the next two levels (p,
+    // h), or the two before, nearer first (h_coarser). JSON: next_true_errors.
+    std::vector<double> next_true;
     bool asymptotic = false;
     std::optional<std::string> failure;  // estimates/estimator_failure.hpp
     bool other_state = false;            // the true error does not fall under refinement (above)
@@ -63,13 +66,17 @@ inline constexpr size_t kOtherStateLevels = 3;
 // kOtherStateLevels finite values, the smallest above half the largest, the largest above floor.
 bool true_error_stalls(const std::vector<double>& true_errors, double floor);
 
-enum class RefinementKind { p, h };
+// p: orders on a fixed mesh, estimated by p+1; h: doubled elements, estimated by h/2, h/4 (the
+// next two levels' meshes); h_coarser: doubled elements, estimated by 2h, 4h (the two levels
+// before: a row needs the true errors of the levels below it).
+enum class RefinementKind { p, h, h_coarser };
 
 // The rows of a sequence; `theoretical_order` is the h-rate (unused for p).
 std::vector<EffectivityRow> effectivity_rows(const std::vector<LevelQuantities>& levels,
                                              RefinementKind kind, double theoretical_order);
 
-// Whether the true errors e0, e1, e2 of three successive levels are asymptotic (above).
+// Whether the true errors e0 (the level's), e1, e2 (its companions', nearer first) are asymptotic
+// (above).
 bool asymptotic_errors(RefinementKind kind, double e0, double e1, double e2, double floor,
                        double theoretical_order);
 

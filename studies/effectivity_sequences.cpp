@@ -42,6 +42,10 @@ Levels static_levels(const std::string& case_name, bool quick) {
 // inertia at a rate of its own) on two elements per member.
 Levels modal_levels() { return {{2, 3, 4, 5, 6}, {5, 10, 20, 40}, 2}; }
 
+// The coarser companions need every member's elements divisible by 4 and a row needs the true
+// errors of the two levels below it: the joined beam's coarser sequence doubles from 8.
+const std::vector<int> kModalCoarserLevels = {8, 16, 32, 64};
+
 // The catalog's joined beam at convergence: the reference modes (the first spec) and the order
 // below, whose distance to it bounds the reference's own error.
 constexpr int kModalReferenceOrder = 8;
@@ -111,19 +115,27 @@ LevelQuantities static_quantities(const EffectivitySequence& s, const json& resu
     LevelQuantities out;
     const Model model = build_model(s.spec(0));
     const double floor = estimate::kFailureFloor * estimate::reference_length(model);
+    // Every point with a reference, estimated or not: the rows of the other levels classify their
+    // regime by this level's true errors whether or not its own companions reached the step (the
+    // coarser companions of a coarse mesh stop earlier than the run).
     for (const json& step : result.value("steps", json::array())) {
-        if (!step.contains("estimate") || !step.contains("points")) continue;
+        if (!step.contains("points")) continue;
         const double lambda = step["load_factor"].get<double>();
-        for (const auto& [point, e] : step["estimate"].items()) {
-            if (!e.contains("displacement") || !step["points"].contains(point)) continue;
+        const json no_estimate = json::object();
+        for (const auto& [point, state] : step["points"].items()) {
             const json ref = reference_point(s, references, model, point, lambda);
             if (ref.is_null()) continue;
-            const estimate::PointDifference d =
-                estimate::point_difference(step["points"][point], ref);
+            const json* e = &no_estimate;
+            if (step.contains("estimate") && step["estimate"].contains(point) &&
+                step["estimate"][point].contains("displacement")) {
+                e = &step["estimate"][point];
+            }
+            const estimate::PointDifference d = estimate::point_difference(state, ref);
             const std::string at = " at load factor " + load_factor_text(lambda);
-            out.push_back({point + " displacement" + at, e["displacement"], d.displacement, floor});
-            out.push_back(
-                {point + " rotation" + at, e["rotation"], d.rotation, estimate::kFailureFloor});
+            out.push_back({point + " displacement" + at, e->value("displacement", json::object()),
+                           d.displacement, floor});
+            out.push_back({point + " rotation" + at, e->value("rotation", json::object()),
+                           d.rotation, estimate::kFailureFloor});
         }
     }
     return out;
@@ -201,6 +213,14 @@ std::vector<EffectivitySequence> effectivity_sequences(bool quick) {
             if (modal) s.overrides = {"discretization.mass_rule=consistent"};
             if (modal && s.kind == RefinementKind::h) s.overrides.clear();
             out.push_back(s);
+            // The mixed formulation's coarser companions on the same meshes: a level is
+            // estimated from the two before it (levels not divisible by 4 have no estimate).
+            if (s.kind == RefinementKind::h) {
+                s.kind = RefinementKind::h_coarser;
+                if (modal) s.levels = kModalCoarserLevels;
+                s.overrides.push_back("analysis.estimate_companions=coarser");
+                out.push_back(s);
+            }
         }
     }
     return out;

@@ -26,14 +26,16 @@ enum class ReferenceKind { rollup_exact, manufactured_exact, continuum, converge
 struct EffectivitySequence {
     std::string case_name;  // catalog name
     Combination combination;
-    RefinementKind kind;  // p: displacement formulation (p+1), h: mixed (h/2, h/4)
+    RefinementKind kind;  // p: displacement formulation (p+1), h: mixed (h/2, h/4 or 2h, 4h)
     ReferenceKind reference;
     std::vector<int> levels;             // orders (p) or elements per member (h)
     int p_elements = 0;                  // p: elements per member at every order
     std::vector<std::string> overrides;  // common to every level
 
     RunSpec spec(size_t level) const;
-    std::string strategy() const { return kind == RefinementKind::p ? "p+1" : "h/2,h/4"; }
+    std::string strategy() const {
+        return kind == RefinementKind::p ? "p+1" : kind == RefinementKind::h ? "h/2,h/4" : "2h,4h";
+    }
     std::string x_label() const {
         return kind == RefinementKind::p ? "order p" : "elements per member";
     }
@@ -48,8 +50,9 @@ std::vector<EffectivitySequence> effectivity_sequences(bool quick);
 // their RunSpecs, the first the reference itself. Empty for the exact roll-up and manufactured rod.
 std::vector<RunSpec> reference_specs(const EffectivitySequence& s);
 
-// Every estimated quantity of `result` with a reference value: points' displacements and rotations
-// at every load step, or frequencies paired with the reference modes by shape. `references` are
+// The quantities of `result` with a reference value: points' displacements and rotations at every
+// load step (estimated or not), or the estimated frequencies paired with the reference modes by
+// shape. `references` are
 // the results of reference_specs(s), in that order.
 LevelQuantities level_quantities(const EffectivitySequence& s, const nlohmann::json& result,
                                  const std::vector<nlohmann::json>& references);

@@ -1,8 +1,9 @@
 // The static manufactured rod (core/oracles/manufactured.hpp) as a case of the studies: a model
 // built in code (its load is a field no case file can state), named kManufacturedRodCase in a
 // RunSpec. build_model (study_common.hpp) builds it with the spec's combination, its `elements` on
-// each of the four members (default 2) and, of the overrides, discretization.order=N only (any
-// other is an InputError); run_spec and the cost model then take it as any case.
+// each of the four members (default 2) and, of the overrides, discretization.order=N and
+// analysis.estimate_companions=coarser only (any other is an InputError); run_spec and the cost
+// model then take it as any case.
 #pragma once
 
 #include "core/oracles/manufactured.hpp"

@@ -44,10 +44,15 @@ Model manufactured_rod_model(const RunSpec& spec) {
     if (c.interpolation) model.discretization.displacement.interpolation = *c.interpolation;
     if (c.wm_map) model.discretization.mixed.wm_map = *c.wm_map;
     const std::string order_key = "discretization.order=";
+    const std::string coarser = "analysis.estimate_companions=coarser";
     for (const std::string& o : spec.overrides) {
+        if (o == coarser) {
+            model.analysis.estimate_companions = CompanionSide::coarser;
+            continue;
+        }
         if (o.rfind(order_key, 0) != 0) {
-            throw InputError(std::string(kManufacturedRodCase) + ": " + o +
-                             ": only discretization.order=N applies to the built-in model");
+            throw InputError(std::string(kManufacturedRodCase) + ": " + o + ": only " + order_key +
+                             "N and " + coarser + " apply to the built-in model");
         }
         try {
             model.discretization.order = std::stoi(o.substr(order_key.size()));

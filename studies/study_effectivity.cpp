@@ -1,11 +1,12 @@
 // The effectivity study (docs/error-estimates.md, "Effectivity"; docs/studies.md): the run's error
 // estimate against the true error on every case with an independent reference, for every
-// combination, over a refinement sequence of the formulation's own strategy (p+1 with its p+2
-// decay check for the displacement formulation, h/2, h/4 with the observed order for the mixed
-// one). Each level is one `rotbeam run` with its estimate (add_run_estimate, the code path of the
-// program); the rows, asymptotic classification and failures are effectivity_rows.hpp's. Outputs:
-// study-effectivity.{json,md}, the table per level, and a figure of the effectivity against the
-// refinement, one panel per strategy, with the band [0.5, 2].
+// combination, over a refinement sequence of the formulation's own strategies (p+1 with its p+2
+// decay check for the displacement formulation; h/2, h/4 and the coarser 2h, 4h, each with the
+// observed order, for the mixed one). Each level is one `rotbeam run` with its estimate
+// (add_run_estimate, the code path of the program); the rows, asymptotic classification and
+// failures are effectivity_rows.hpp's. Outputs: study-effectivity.{json,md}, the table per level,
+// and a figure of the effectivity against the refinement, one panel per strategy, with the band
+// [0.5, 2].
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -112,12 +113,16 @@ std::string plot_effectivity(const StudyOptions& o,
                                     << " " << (row.asymptotic ? 1 : 0) << "\n";
         }
     }
-    const std::string p_file = "data/effectivity_p.dat", h_file = "data/effectivity_h.dat";
+    const std::string p_file = "data/effectivity_p.dat", h_file = "data/effectivity_h.dat",
+                      c_file = "data/effectivity_h_coarser.dat";
     write_text(o, p_file, "# order effectivity asymptotic\n" + data[RefinementKind::p].str());
     write_text(o, h_file, "# elements effectivity asymptotic\n" + data[RefinementKind::h].str());
+    write_text(o, c_file,
+               "# elements effectivity asymptotic\n" + data[RefinementKind::h_coarser].str());
     const std::string base = "effectivity";
     plot("study_effectivity.gp", {{"pfile", out_path(o, p_file)},
                                   {"hfile", out_path(o, h_file)},
+                                  {"cfile", out_path(o, c_file)},
                                   {"plottitle",
                                    "Effectivity (estimated / true error) against the "
                                    "refinement, every case and combination"},
@@ -154,11 +159,13 @@ json combine_effectivity(const StudyOptions& o, const StudyResults& results) {
           "formulation at order 8, 10 elements per member, consistent mass; its distance to "
           "order 7 × 100 is the floor). Each level is `rotbeam run` with its estimate: the "
           "displacement formulation on a fixed mesh with increasing order p (its p+1 estimate, "
-          "decay-checked by p+2 below order 6), the mixed one with doubled elements (its h/2, "
-          "h/4 estimate with the observed order). A row is **asymptotic** when the true errors "
+          "decay-checked by p+2 below order 6), the mixed one with doubled elements, twice: with "
+          "its h/2, h/4 estimate and with its coarser 2h, 4h one (`analysis.estimate_companions: "
+          "coarser`), both with the observed order. A row is **asymptotic** when the true errors "
           "alone show it (p: they fall by more than half at each of the next two orders; h: "
-          "monotone over N, 2N, 4N with both observed orders within 0.5 of "
-          "the theory); there the effectivity must lie within [0.5, 2]. True errors at or below "
+          "monotone over N, 2N, 4N, or N/4, N/2, N for 2h, 4h, with both observed orders within "
+          "0.5 of the theory); there the effectivity must lie within [0.5, 2]. True errors at or "
+          "below "
           "the floor (1e-9 of the reference length, 1e-9 rad) are not counted. A **failure** is "
           "a true error above 3 × its estimate, with the estimate's own verdict as its cause "
           "(estimates/estimator_failure.hpp, the rule of the estimator-failures section), or "

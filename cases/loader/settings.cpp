@@ -39,6 +39,7 @@ const std::vector<std::pair<const char*, std::vector<std::string>>> kAnalysisKey
     {"modes", {"modal"}},
     {"about_static_state", {"modal"}},
     {"estimate", {"static", "dynamic", "modal"}},
+    {"estimate_companions", {"static", "dynamic", "modal"}},
     {"accuracy", {"static", "modal", "dynamic"}}};
 
 void read_static(const YamlReader& r, const YAML::Node& n, StaticSettings& s, bool required) {
@@ -195,6 +196,10 @@ void read_analysis(const YamlReader& r, const YAML::Node& root, Model& model) {
     }
     Analysis& a = model.analysis;
     if (n["estimate"]) a.estimate = r.boolean(n["estimate"], "analysis.estimate");
+    if (n["estimate_companions"]) {
+        a.estimate_companions =
+            read_choice<CompanionSide>(r, n["estimate_companions"], "analysis.estimate_companions");
+    }
     if (n["accuracy"]) {
         // The target of accuracy control (docs/accuracy-control.md): refines until the estimates
         // meet it, so it needs them.

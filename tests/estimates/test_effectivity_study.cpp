@@ -2,7 +2,8 @@
 // roll-up and the static manufactured rod against their exact solutions and the 45° bend against
 // the continuum reference, the
 // displacement formulation's p+1 estimate over orders 3 … 6 on two elements and the mixed one's
-// h/2, h/4 estimate over 4, 8, 16 elements, each level a `rotbeam run` with its estimate.
+// h/2, h/4 and 2h, 4h estimates over 4, 8, 16 elements, each level a `rotbeam run` with its
+// estimate.
 //
 // What is asserted, and why:
 // - Every row's effectivity is its estimate over its true error, as stored.
@@ -11,7 +12,8 @@
 //   not from the study's flag, which must agree: p+1, each next order's error below half the one
 //   before (a p+2 error at the floor counts as below), so that |e_p − e_{p+1}| lies within
 //   [1/2, 3/2] e_p by the triangle inequality; h/2, h/4, monotone with both observed orders within
-//   0.5 of the mixed formulation's 2, where Richardson's factor is off by at most ~20 %.
+//   0.5 of the mixed formulation's 2, where Richardson's factor is off by at most ~20 % (2h, 4h:
+//   the same over the level and the two below it, whose meshes are its companions').
 // - No reliable estimate has a true error above 3 × its estimate (an estimator failure nothing
 //   explains); the study lists failures of estimates that say they are not reliable with that
 //   reason, and none are expected on these levels either.
@@ -48,9 +50,12 @@ bool regime_shown(const std::string& strategy, const json& row) {
     const double e1 = next[0].get<double>(), e2 = next[1].get<double>();
     if (strategy == "p+1") return e1 < 0.5 * e0 && (e2 <= floor || e2 < 0.5 * e1);
     // h/2, h/4 (mixed, order 2 per doubling) and dt/2 (the generalized-α and the trapezoidal
-    // rule, order 2 per halved step): the same rate 2 per level.
-    if (!(e2 < e1 && e1 < e0) || e2 <= floor) return false;
-    return std::abs(std::log2(e0 / e1) - 2.0) <= 0.5 && std::abs(std::log2(e1 / e2) - 2.0) <= 0.5;
+    // rule, order 2 per halved step): the same rate 2 per level. 2h, 4h: the companions' levels
+    // are the two below, so e2 is the coarsest and e0 the finest.
+    const bool coarser = strategy == "2h,4h";
+    const double a = coarser ? e2 : e0, c = coarser ? e0 : e2;
+    if (!(c < e1 && e1 < a) || c <= floor) return false;
+    return std::abs(std::log2(a / e1) - 2.0) <= 0.5 && std::abs(std::log2(e1 / c) - 2.0) <= 0.5;
 }
 
 // The Richardson factor of the Δt/2 companion for a second-order scheme: 1 / (1 − 2⁻²).
@@ -124,7 +129,8 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
     o.out_dir = (std::filesystem::temp_directory_path() / "rotbeam-test-effectivity").string();
     std::filesystem::remove_all(o.out_dir);
     const json out = cli::run_split_study(cli::effectivity_study(), o, 2);
-    BOOST_TEST_REQUIRE(out["sequences"].size() == 6u);  // 3 cases × 2 formulations
+    // 3 cases × (displacement p+1, mixed h/2, h/4, mixed 2h, 4h)
+    BOOST_TEST_REQUIRE(out["sequences"].size() == 9u);
     int band_checked = 0, manufactured = 0;
     for (const json& s : out["sequences"]) {
         // The manufactured rod's rows are its interior points against the exact state: the three
@@ -173,7 +179,7 @@ BOOST_AUTO_TEST_CASE(effectivity_study_quick_form_meets_the_band_without_estimat
         BOOST_TEST(asymptotic >= kMinAsymptoticRows, label << ": " << asymptotic);
         band_checked += asymptotic;
     }
-    BOOST_TEST(manufactured == 2);  // both formulations
+    BOOST_TEST(manufactured == 3);  // both formulations, the mixed one with both companions
     check_dynamic_rows(out["dynamic"]);
     BOOST_TEST_MESSAGE("effectivity study (quick): " << band_checked << " asymptotic rows");
     BOOST_TEST(out["unexplained_failures"] == 0);
@@ -267,6 +273,26 @@ BOOST_AUTO_TEST_CASE(effectivity_failures_of_a_falling_error_keep_the_estimates_
         BOOST_TEST(!row.other_state);
         BOOST_TEST(row.failure->find("(reliable)") != std::string::npos, *row.failure);
     }
+}
+
+// The coarser sequence's rows take their companions' true errors from the two levels below: only
+// the finest of three order-2 levels (4 per doubling) is classified, and its rows say which levels
+// they rest on (nearer first). Estimates exact: no failure.
+BOOST_AUTO_TEST_CASE(coarser_rows_are_classified_from_the_levels_below) {
+    std::vector<cli::LevelQuantities> levels;
+    for (const double e : {1e-2, 2.5e-3, 6.25e-4}) {
+        levels.push_back({{"tip displacement at load factor 1",
+                           json{{"error", e}, {"reliable", true}}, e, 1e-9}});
+    }
+    const auto rows = cli::effectivity_rows(levels, cli::RefinementKind::h_coarser, 2.0);
+    BOOST_TEST_REQUIRE(rows.size() == 3u);
+    BOOST_TEST(!rows[0].asymptotic);
+    BOOST_TEST(!rows[1].asymptotic);
+    BOOST_TEST(rows[2].asymptotic);
+    BOOST_TEST(rows[2].next_true[0] == 2.5e-3);
+    BOOST_TEST(rows[2].next_true[1] == 1e-2);
+    BOOST_TEST(std::isnan(rows[0].next_true[0]));
+    for (const cli::EffectivityRow& row : rows) BOOST_TEST(!row.failure.has_value());
 }
 
 }  // namespace rotbeam

@@ -6,7 +6,9 @@
 
 #include "core/errors.hpp"
 #include "estimates/companions.hpp"
+#include "estimates/dynamic_companions.hpp"
 #include "estimates/estimate.hpp"
+#include "estimates/history_estimate.hpp"
 #include "estimates/quantity_estimate.hpp"
 
 namespace rotbeam::estimate {
@@ -63,6 +65,35 @@ BOOST_AUTO_TEST_CASE(richardson_recovers_the_error_of_an_exact_power_law) {
         BOOST_TEST(*e.observed_order == r, boost::test_tools::tolerance(1e-12));
         BOOST_TEST(e.error == s.true_error, boost::test_tools::tolerance(1e-12));
     }
+}
+
+// The same power laws seen from the run at h with companions at 2h and 4h: e₁ = |q_h − q_2h|,
+// e₂ = |q_2h − q_4h|. Exact for q_h = q + C h^r: e₂ = 2^r e₁ and e_h = e₁ / (2^r − 1).
+BOOST_AUTO_TEST_CASE(richardson_from_coarser_meshes_recovers_the_error_of_an_exact_power_law) {
+    for (const double r : {1.6, 2.0, 2.4}) {
+        const Sequence s = power_law(0.3, 1.0, r);  // values at 1, 1/2, 1/4: the run is at 1/4
+        const double e_run = 0.3 * std::pow(0.25, r);
+        const QuantityEstimate e = h_refinement(s.e2, s.e1, 2.0, 1e-14, HSequence::coarser);
+        BOOST_TEST(e.reliable);
+        BOOST_TEST(*e.observed_order == r, boost::test_tools::tolerance(1e-12));
+        BOOST_TEST(e.error == e_run, boost::test_tools::tolerance(1e-12));
+    }
+    // Outside the window: extrapolated with the theoretical order, e₁ / 3, and not reliable.
+    const Sequence s = power_law(0.3, 1.0, 1.0);
+    const QuantityEstimate e = h_refinement(s.e2, s.e1, 2.0, 1e-14, HSequence::coarser);
+    BOOST_TEST(!e.reliable);
+    BOOST_TEST(*e.observed_order == 1.0, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(e.error == s.e2 / 3.0, boost::test_tools::tolerance(1e-12));
+    // Coarser meshes closer together than the finer ones: not converging.
+    const QuantityEstimate n = h_refinement(3e-4, 1e-4, 2.0, 1e-14, HSequence::coarser);
+    BOOST_TEST(!n.reliable);
+    BOOST_TEST(n.reason.find("not monotone") != std::string::npos);
+    BOOST_TEST(n.reason.find("q_2h - q_4h") != std::string::npos);
+    // The run and 2h agree to round-off, 4h does not: the quantity is resolved at 2h already.
+    const QuantityEstimate a = h_refinement(1e-13, 1e-5, 2.0, 1e-12, HSequence::coarser);
+    BOOST_TEST(a.reliable);
+    BOOST_TEST(a.error == 1e-13);
+    BOOST_TEST(a.reason.find("2h companion agree to round-off") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(an_order_outside_the_window_is_estimated_but_not_reliable) {
@@ -156,6 +187,70 @@ BOOST_AUTO_TEST_CASE(the_plan_chooses_the_method_per_formulation) {
     dynamic.analysis.kind = AnalysisKind::dynamic;
     BOOST_TEST(!plan_companions(dynamic).refusal.empty());
     BOOST_TEST(plan_companions(dynamic).companions.empty());
+}
+
+// Coarser companions halve and quarter the mixed formulation's elements, which must divide by 4;
+// the displacement formulation keeps its p+1 companion (no coarser p-estimate of e_p exists).
+BOOST_AUTO_TEST_CASE(coarser_companions_halve_and_quarter_the_elements) {
+    Model m = two_point_model(Formulation::mixed);
+    m.members[0].elements = 12;
+    m.analysis.estimate_companions = CompanionSide::coarser;
+    const CompanionPlan h = plan_companions(m);
+    BOOST_TEST(h.method == "2h,4h");
+    BOOST_TEST(h.refusal.empty());
+    BOOST_TEST_REQUIRE(h.companions.size() == 2u);
+    BOOST_TEST(h.companions[0].model.members[0].elements == 6);
+    BOOST_TEST(h.companions[1].model.members[0].elements == 3);
+    BOOST_TEST(h.companions[1].label == "1/4 elements");
+    m.members[0].elements = 10;
+    const CompanionPlan refused = plan_companions(m);
+    BOOST_TEST(refused.companions.empty());
+    BOOST_TEST(refused.refusal.find("divisible by 4; member 'beam' has 10") != std::string::npos);
+    Model d = two_point_model(Formulation::displacement);
+    d.analysis.estimate_companions = CompanionSide::coarser;
+    BOOST_TEST(plan_companions(d).method == "p+1");
+}
+
+// In time, coarser companions double a fixed step ("2dt", ratio 1/2), which must land on the run's
+// output times; adaptive steps keep tolerance/4 on both sides.
+BOOST_AUTO_TEST_CASE(coarser_time_companions_double_a_fixed_step_onto_the_output_times) {
+    Model m = two_point_model(Formulation::mixed);
+    m.analysis.kind = AnalysisKind::dynamic;
+    m.analysis.estimate_companions = CompanionSide::coarser;
+    DynamicSettings& d = m.analysis.dynamics;
+    d.integrator = Integrator::trapezoidal;
+    d.time_step = 1e-3;
+    d.end_time = 0.1;
+    d.output_interval = 4e-3;
+    const DynamicPlan p = plan_dynamic_companions(m);
+    BOOST_TEST(p.space.method == "2h,4h");
+    BOOST_TEST(p.time_method == "2dt");
+    BOOST_TEST(p.time_ratio == 0.5);
+    BOOST_TEST(p.time_refusal.empty());
+    BOOST_TEST_REQUIRE(p.time.size() == 1u);
+    BOOST_TEST(p.time[0].model.analysis.dynamics.time_step == 2e-3);
+    for (const double every : {5e-3, 0.0}) {  // off the 2 ms grid; every step
+        d.output_interval = every;
+        const DynamicPlan refused = plan_dynamic_companions(m);
+        BOOST_TEST(refused.time.empty());
+        BOOST_TEST(refused.time_refusal.find("multiple of 2 dt") != std::string::npos,
+                   refused.time_refusal);
+    }
+    d.output_interval = 4e-3;
+    d.time_tolerance = 1e-4;
+    BOOST_TEST(plan_dynamic_companions(m).time_method == "tolerance/4");
+}
+
+// The phase of a 2dt companion is 2^q that of the run: a largest difference D = 2A sin(φ (2^q −
+// 1)/2) gives back the run's φ.
+BOOST_AUTO_TEST_CASE(the_phase_from_a_coarser_companion_is_the_runs) {
+    const double phi = 0.02, A = 1.5;
+    for (const double q : {1.0, 2.0, 4.0}) {
+        const double D = 2.0 * A * std::sin(phi * (std::exp2(q) - 1.0) / 2.0);
+        BOOST_TEST(accumulated_phase(D, A, q, 0.5) == phi, boost::test_tools::tolerance(1e-12));
+        const double Df = 2.0 * A * std::sin(phi * (1.0 - std::exp2(-q)) / 2.0);
+        BOOST_TEST(accumulated_phase(Df, A, q, 2.0) == phi, boost::test_tools::tolerance(1e-12));
+    }
 }
 
 // With the trapezoidal rule each companion doubles refine, the p+2 one again beyond the p+1 one,
