@@ -115,29 +115,20 @@ Step refine_budget_stop(const AccuracyBudget& budget, const Model& next) {
     return s;
 }
 
-// The multiple every member's element count must be: 4 for the mixed formulation's coarser
-// companions, which halve and quarter it (estimates/companions.hpp), else 1.
-int element_multiple(const Model& model) {
-    return model.discretization.formulation == Formulation::mixed &&
-                   model.analysis.estimate_companions == CompanionSide::coarser
-               ? 4
-               : 1;
-}
-
-// `n` rounded up to the model's element multiple.
+// `n` rounded up to the multiple the model's companions need (element_count_multiple).
 int round_up_elements(const Model& model, double n) {
-    const double k = element_multiple(model);
+    const double k = element_count_multiple(model);
     return static_cast<int>(std::ceil(n / k) * k);
 }
 
 // Every member's elements times `factor` (at least one more, and a multiple of
-// element_multiple), within the budget.
+// element_count_multiple), within the budget.
 Step split(const Model& model, double factor, const AccuracyBudget& budget,
            const std::string& why) {
     Step s;
     Model next = model;
     bool at_budget = true;
-    const int k = element_multiple(model);
+    const int k = element_count_multiple(model);
     const int largest = budget.elements_per_member / k * k;
     for (Member& m : next.members) {
         const int want = round_up_elements(model, std::ceil(m.elements * factor));

@@ -84,10 +84,12 @@ std::string add_finer_meshes(const Model& model, CompanionPlan& plan) {
 // The 2h and 4h companions: every member's elements halved and quartered, so both meshes nest in
 // the run's with the same member ends as nodes.
 std::string add_coarser_meshes(const Model& model, CompanionPlan& plan) {
+    const int multiple = element_count_multiple(model);
     for (const Member& m : model.members) {
-        if (m.elements % 4 != 0) {
-            return "the coarser companions need every member's elements divisible by 4; member '" +
-                   m.name + "' has " + std::to_string(m.elements);
+        if (m.elements % multiple != 0) {
+            return "the coarser companions need every member's elements divisible by " +
+                   std::to_string(multiple) + "; member '" + m.name + "' has " +
+                   std::to_string(m.elements);
         }
     }
     for (const int divisor : {2, 4}) {
@@ -113,6 +115,13 @@ CompanionPlan h_plan(const Model& model) {
 }
 
 }  // namespace
+
+int element_count_multiple(const Model& model) {
+    return model.discretization.formulation == Formulation::mixed &&
+                   model.analysis.estimate_companions == CompanionSide::coarser
+               ? 4
+               : 1;
+}
 
 CompanionPlan plan_space_companions(const Model& model) {
     return model.discretization.formulation == Formulation::mixed ? h_plan(model) : p_plan(model);

@@ -47,6 +47,10 @@ struct CompanionPlan {                        // NOLINT(bugprone-exception-escap
     std::string refusal;
 };
 
+// The multiple every member's element count must be for the model's companions: 4 for the mixed
+// formulation's coarser ones, which halve and quarter it (both meshes nest in the run's), else 1.
+int element_count_multiple(const Model& model);
+
 // The companions in space alone, whatever the analysis (a dynamic one keeps its time grid).
 CompanionPlan plan_space_companions(const Model& model);
 // plan_space_companions with, for the displacement formulation below kSpectralOrder, the order
